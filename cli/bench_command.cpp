@@ -1,0 +1,95 @@
+#include "cli/bench_command.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/exit_codes.h"
+#include "cli/report.h"
+#include "core/render/renderer.h"
+#include "io/scene_loader.h"
+#include "tools/bench/generated_mesh.h"
+#include "tools/bench/ray_benchmark.h"
+
+namespace rt {
+namespace {
+
+constexpr size_t kGeneratedTriangles = 300'000;
+
+double render_seconds(const LoadedScene& loaded, unsigned threads) {
+  RenderSettings settings = loaded.description.render;
+  settings.threads = threads;
+  Image image;
+  return render(loaded.scene, settings, image).seconds;
+}
+
+}  // namespace
+
+int run_bench(const BenchCommand& cmd) {
+  PrimitiveSet prims;
+  std::string what;
+  if (cmd.model.empty()) {
+    const TriangleMesh mesh = make_benchmark_mesh(kGeneratedTriangles);
+    for (size_t i = 0; i < mesh.indices.size(); i += 3)
+      prims.triangles.push_back(PackedTriangle::from_vertices(mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
+                                                             mesh.positions[mesh.indices[i + 2]]));
+    what = "generated displaced sphere";
+  } else {
+    Diagnostics diags;
+    const auto loaded = load_scene(cmd.model, LoadOptions{}, diags);
+    print_diagnostics(stderr, diags);
+    if (!loaded) return kExitBadInput;
+    prims = loaded->scene.bvh.primitives();
+    what = cmd.model;
+  }
+  const unsigned all = resolve_thread_count(0);
+  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", what.c_str(), prims.triangles.size(),
+              prims.shapes.size(), all);
+  std::fflush(stdout);
+
+  std::vector<unsigned> thread_counts{1};
+  if (all > 1) thread_counts.push_back(all);
+  std::vector<RayBenchmarkResult> results;
+  for (const unsigned t : thread_counts) results.push_back(run_ray_benchmark(prims, t));
+
+  std::printf("\n%-34s", "");
+  for (const auto& r : results) std::printf("%10u thread%s", r.threads, r.threads == 1 ? " " : "s");
+  if (results.size() > 1) std::printf("   scaling");
+  std::printf("\n");
+  const auto row = [&](const char* label, double RayBenchmarkResult::*field, const char* unit, bool higher_is_better) {
+    std::printf("%-34s", label);
+    for (const auto& r : results) std::printf("%10.3f %-7s", r.*field, unit);
+    if (results.size() > 1) {
+      const double a = results.front().*field, b = results.back().*field;
+      std::printf("%8.2fx", higher_is_better ? b / a : a / b);
+    }
+    std::printf("\n");
+  };
+  row("BVH build", &RayBenchmarkResult::build_seconds, "s", false);
+  row("primary rays (1920x1080)", &RayBenchmarkResult::primary_mrays, "Mray/s", true);
+  row("incoherent rays (2M)", &RayBenchmarkResult::incoherent_mrays, "Mray/s", true);
+  row("shadow rays (any hit)", &RayBenchmarkResult::shadow_mrays, "Mray/s", true);
+  const RayBenchmarkResult& r0 = results.front();
+  std::printf("BVH: %zu nodes, SAH cost %.1f; hit fractions: primary %.2f, incoherent %.2f, shadow occluded %.2f\n",
+              r0.bvh_nodes, r0.sah_cost, r0.primary_hit_fraction, r0.incoherent_hit_fraction, r0.shadow_occluded_fraction);
+
+  if (cmd.scene.empty()) return kExitSuccess;
+  Diagnostics diags;
+  const auto scene = load_scene(cmd.scene, LoadOptions{}, diags);
+  if (!scene) {
+    print_diagnostics(stderr, diags);
+    std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
+    return kExitBadInput;
+  }
+  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(), scene->description.render.width,
+              scene->description.render.height);
+  std::vector<double> seconds;
+  for (const unsigned t : thread_counts) {
+    seconds.push_back(render_seconds(*scene, t));
+    std::printf("  %u thread%s %.3f s", t, t == 1 ? "" : "s", seconds.back());
+  }
+  if (seconds.size() > 1) std::printf("  (%.2fx)", seconds.front() / seconds.back());
+  std::printf("\n");
+  return kExitSuccess;
+}
+
+}  // namespace rt

@@ -1,0 +1,41 @@
+// rtcli: command-line parsing and dispatch only; each subcommand lives in its own file.
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/bench_command.h"
+#include "cli/exit_codes.h"
+#include "cli/render_command.h"
+
+int main(int argc, char** argv) {
+  using namespace rt;
+  CLI::App app{"rtcli - a data-driven ray tracer: JSON scenes and glTF models in, PNG images out."};
+  app.set_version_flag("--version", std::string("rtcli ") + RTCLI_VERSION);
+  app.require_subcommand(1);
+
+  RenderCommand render;
+  CLI::App* render_cmd = app.add_subcommand("render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image");
+  render_cmd->add_option("scene", render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
+  render_cmd->add_option("-o,--output", render.output, "Output PNG (default: <scene name>.png in the current folder)");
+  render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")->check(CLI::Range(1u, 1024u));
+  render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
+  render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
+
+  BenchCommand bench;
+  bench.scene = std::string(RTCLI_SOURCE_DIR) + "/scenes/primitives.json";
+  CLI::App* bench_cmd = app.add_subcommand("bench", "Measure BVH build time, ray throughput and render time");
+  bench_cmd->add_option("model", bench.model, "Mesh to trace (.glb/.gltf/.json; default: a generated 300k-triangle mesh)");
+  bench_cmd->add_option("--scene", bench.scene, "Scene whose render time is measured last ('' to skip)")->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help, version or the parse error
+    return code == 0 ? kExitSuccess : kExitBadInput;
+  }
+  if (render_cmd->parsed()) return run_render(render);
+  if (bench_cmd->parsed()) return run_bench(bench);
+  return kExitBadInput;
+}

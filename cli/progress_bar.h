@@ -1,0 +1,28 @@
+// A one-line progress display on a terminal: bar, percentage, ETA and ray throughput, redrawn
+// in place. pbrt-v4 and Mitsuba write their own too: Debian has no C++ progress-bar library.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "core/render/renderer.h"
+
+namespace rt {
+
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::FILE* out) : out_(out) {}
+  void update(const RenderProgress& p);
+  void clear();  // erase the line, ready for the summary
+
+ private:
+  std::FILE* out_;
+  std::string last_;
+};
+
+// "1:05" or "0:07" (minutes:seconds), "1:02:03" past an hour.
+std::string format_duration(double seconds);
+// "3.41 M", "512.0 k", "12": a count with an SI prefix.
+std::string format_count(double count);
+
+}  // namespace rt

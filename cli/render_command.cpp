@@ -1,0 +1,98 @@
+#include "cli/render_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/exit_codes.h"
+#include "cli/progress_bar.h"
+#include "cli/report.h"
+#include "core/render/renderer.h"
+#include "io/image_writer.h"
+#include "io/scene_loader.h"
+
+namespace rt {
+namespace {
+
+std::string default_output(const std::string& scene) {
+  return std::filesystem::path(scene).stem().string() + ".png";
+}
+
+// Refuses an output we could never write before spending minutes on the render.
+bool check_output(const std::string& path, std::string& error) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png") {
+    error = "expected an output file name ending in .png, found \"" + path + "\"";
+    return false;
+  }
+  const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) {
+    error = "cannot write \"" + path + "\": the folder \"" + folder.string() + "\" does not exist";
+    return false;
+  }
+  if (::access(folder.c_str(), W_OK) != 0) {
+    error = "cannot write \"" + path + "\": the folder \"" + folder.string() + "\" is not writable";
+    return false;
+  }
+  if (fs::is_directory(p, ec)) {
+    error = "cannot write \"" + path + "\": it is a folder";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& cmd) {
+  const std::string output = cmd.output.empty() ? default_output(cmd.scene) : cmd.output;
+  std::string error;
+  if (!check_output(output, error)) {
+    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+
+  const auto load_start = std::chrono::steady_clock::now();
+  Diagnostics diags;
+  std::optional<LoadedScene> loaded = load_scene(cmd.scene, LoadOptions{cmd.threads.value_or(0)}, diags);
+  print_diagnostics(stderr, diags);
+  if (!loaded) return kExitBadInput;
+  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+
+  RenderSettings settings = loaded->description.render;
+  if (cmd.width) settings.width = *cmd.width;
+  if (cmd.height) settings.height = *cmd.height;
+  if (cmd.seed) settings.seed = *cmd.seed;
+  if (cmd.threads) settings.threads = *cmd.threads;
+
+  ProgressBar bar(stderr);
+  const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
+  Image image;
+  const RenderStats stats = render(loaded->scene, settings, image, show_progress ? [&](const RenderProgress& p) { bar.update(p); }
+                                                                                 : ProgressCallback{});
+  bar.clear();
+
+  if (!write_png(output, image, error)) {
+    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  if (!cmd.quiet) {
+    const double rate = stats.seconds > 0 ? static_cast<double>(stats.rays.total()) / stats.seconds : 0.0;
+    std::fprintf(stderr,
+                 "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%scamera, %sshadow), %.2f Mrays/s, %u thread%s\n",
+                 cmd.scene.c_str(), settings.width, settings.height, stats.seconds, load_seconds,
+                 format_count(static_cast<double>(stats.rays.total())).c_str(),
+                 format_count(static_cast<double>(stats.rays.camera)).c_str(),
+                 format_count(static_cast<double>(stats.rays.shadow)).c_str(), rate / 1e6, stats.threads,
+                 stats.threads == 1 ? "" : "s");
+    std::printf("wrote %s\n", output.c_str());
+  }
+  return kExitSuccess;
+}
+
+}  // namespace rt

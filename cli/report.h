@@ -1,0 +1,13 @@
+// Printing load diagnostics for a person at a terminal.
+#pragma once
+
+#include <cstdio>
+
+#include "io/diagnostics.h"
+
+namespace rt {
+
+// Every diagnostic (its line, then the source excerpt), then "N errors" when there are several.
+void print_diagnostics(std::FILE* out, const Diagnostics& diags);
+
+}  // namespace rt

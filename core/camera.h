@@ -1,0 +1,53 @@
+// Pinhole camera. Image rows run top to bottom; (x, y) are continuous pixel coordinates, so the
+// centre of pixel (i, j) is (i + 0.5, j + 0.5).
+#pragma once
+
+#include "core/aabb.h"
+#include "core/ray.h"
+
+namespace rt {
+
+struct Camera {
+  Vec3 position{0.0f};
+  Vec3 forward{0.0f, 0.0f, -1.0f};  // unit, towards the look-at point
+  Vec3 right{1.0f, 0.0f, 0.0f};     // unit
+  Vec3 up{0.0f, 1.0f, 0.0f};        // unit, perpendicular to forward and right
+  float vertical_fov_degrees = 45.0f;
+
+  // Caller guarantees target != position and up not parallel to (target - position).
+  static Camera look_at(Vec3 position, Vec3 target, Vec3 up, float vertical_fov_degrees) {
+    Camera c;
+    c.position = position;
+    c.forward = glm::normalize(target - position);
+    c.right = glm::normalize(glm::cross(c.forward, up));
+    c.up = glm::cross(c.right, c.forward);
+    c.vertical_fov_degrees = vertical_fov_degrees;
+    return c;
+  }
+
+  // A camera in front of and a little above `bounds` (towards +Z, Y up), looking at its centre,
+  // far enough back that its bounding sphere fits both fields of view.
+  static Camera framing(const Aabb& bounds, float vertical_fov_degrees, float aspect) {
+    const Vec3 centre = bounds.centre();
+    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
+    const float half_v = radians(vertical_fov_degrees) * 0.5f;
+    const float half_h = std::atan(std::tan(half_v) * aspect);
+    const float distance = radius / std::sin(std::min(half_v, half_h));
+    const Vec3 direction = glm::normalize(Vec3(0.0f, 0.35f, 1.0f));
+    return look_at(centre + distance * direction, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
+  }
+
+  // Primary ray through continuous pixel position (x, y) of a width x height image.
+  Ray generate_ray(float x, float y, int width, int height) const {
+    const float tan_half = std::tan(radians(vertical_fov_degrees) * 0.5f);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const float sx = (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half * aspect;
+    const float sy = (1.0f - 2.0f * y / static_cast<float>(height)) * tan_half;
+    Ray r;
+    r.origin = position;
+    r.direction = glm::normalize(forward + sx * right + sy * up);
+    return r;
+  }
+};
+
+}  // namespace rt

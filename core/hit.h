@@ -1,0 +1,42 @@
+// Two-phase hits: traversal only produces this small record; the full SurfaceInteraction
+// (normals, UV, tangents) is built once, for the closest hit (see core/scene.h).
+#pragma once
+
+#include <cstdint>
+
+#include "core/math.h"
+
+namespace rt {
+
+inline constexpr uint32_t kNoPrimitive = 0xffffffffu;
+
+struct Hit {
+  float t = kInfinity;
+  uint32_t prim = kNoPrimitive;  // primitive id (see core/accel/primitives.h)
+  float b1 = 0.0f, b2 = 0.0f;    // triangle barycentrics of vertices 1 and 2
+  uint32_t part = 0;             // analytic shapes: which face / cap / side was hit
+};
+
+// Object-space local geometry of an analytic shape at a point: the outward unit normal, the
+// texture coordinates and the partial derivatives dP/du, dP/dv (the tangent frame used by
+// texture and bump mapping).
+struct SurfacePatch {
+  Vec3 normal{0.0f, 0.0f, 1.0f};
+  Vec2 uv{0.0f};
+  Vec3 dpdu{1.0f, 0.0f, 0.0f};
+  Vec3 dpdv{0.0f, 1.0f, 0.0f};
+};
+
+// Everything shading needs about the closest hit, in world space.
+struct SurfaceInteraction {
+  Vec3 position{0.0f};
+  Vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // unit, outward (from the winding for triangles)
+  Vec3 shading_normal{0.0f, 0.0f, 1.0f};    // unit, interpolated for smooth meshes
+  Vec2 uv{0.0f};
+  Vec3 dpdu{1.0f, 0.0f, 0.0f};
+  Vec3 dpdv{0.0f, 1.0f, 0.0f};
+  uint32_t material = 0;
+  bool front_face = true;  // the ray arrived from the outward side
+};
+
+}  // namespace rt

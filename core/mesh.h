@@ -1,0 +1,34 @@
+// An indexed triangle mesh in world space, as the scene builder produced it from glTF.
+// Normals and UVs are optional (empty when the file had none); without normals a mesh is
+// shaded flat with its geometric normals, as the glTF specification requires.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/hit.h"
+#include "core/math.h"
+#include "core/ray.h"
+#include "core/transform.h"
+
+namespace rt {
+
+struct TriangleMesh {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;   // per vertex, unit; empty = flat shading
+  std::vector<Vec2> uvs;       // per vertex (TEXCOORD_0, origin top-left); empty = none
+  std::vector<uint32_t> indices;  // three per triangle, each < positions.size()
+  uint32_t material = 0;
+
+  size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// The mesh moved by an affine transform: positions by it, normals by its inverse transpose. A
+// mirroring transform (negative determinant) also reverses the winding, so that the geometric
+// normal from the winding keeps pointing the same way relative to the surface.
+TriangleMesh transformed(const TriangleMesh& mesh, const Transform& t);
+
+// World-space surface of triangle `triangle` of the mesh at barycentrics (b1, b2).
+SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit);
+
+}  // namespace rt

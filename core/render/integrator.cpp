@@ -1,0 +1,37 @@
+#include "core/render/integrator.h"
+
+#include "core/render/normals_integrator.h"
+#include "core/render/whitted_integrator.h"
+
+namespace rt {
+namespace {
+
+struct Entry {
+  const char* name;
+  std::unique_ptr<Integrator> (*make)();
+};
+
+template <class T>
+std::unique_ptr<Integrator> make() { return std::make_unique<T>(); }
+
+// The name table. Adding an integrator = one file and one line here.
+constexpr Entry kIntegrators[] = {
+    {"whitted", &make<WhittedIntegrator>},
+    {"normals", &make<NormalsIntegrator>},
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_integrator(std::string_view name) {
+  for (const Entry& e : kIntegrators)
+    if (name == e.name) return e.make();
+  return nullptr;
+}
+
+std::vector<std::string> integrator_names() {
+  std::vector<std::string> names;
+  for (const Entry& e : kIntegrators) names.emplace_back(e.name);
+  return names;
+}
+
+}  // namespace rt

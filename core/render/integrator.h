@@ -1,0 +1,36 @@
+// Integrators turn a ray into radiance. They are an open, coarse-grained set (one virtual call
+// per camera sample, never per primitive), chosen by name from render settings.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/render/ray_counters.h"
+#include "core/render/render_settings.h"
+#include "core/rng.h"
+#include "core/scene.h"
+
+namespace rt {
+
+// Per-thread state handed down a ray tree: counters and the sample's random stream.
+struct TraceContext {
+  const Scene& scene;
+  const RenderSettings& settings;
+  RayCounters& counters;
+  Rng& rng;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  // Radiance arriving along `ray`; depth = number of bounces already taken.
+  virtual Vec3 radiance(const Ray& ray, int depth, TraceContext& ctx) const = 0;
+};
+
+// The integrator registered under `name`, or nullptr if there is none.
+std::unique_ptr<Integrator> make_integrator(std::string_view name);
+std::vector<std::string> integrator_names();
+
+}  // namespace rt

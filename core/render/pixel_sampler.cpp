@@ -1,0 +1,52 @@
+#include "core/render/pixel_sampler.h"
+
+namespace rt {
+namespace {
+
+// Radiance of one camera sample at continuous pixel position (px, py). Its random stream is
+// keyed by (seed, frame, pixel, sample), never by the thread that happens to trace it.
+Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContext& ctx) {
+  const RenderSettings& s = ctx.settings;
+  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
+  Rng rng = Rng::for_sample(s.seed, ctx.frame, pixel_index, sample);
+  TraceContext trace{ctx.scene, s, ctx.counters, rng};
+  ++ctx.counters.camera;
+  return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height), 0, trace);
+}
+
+// One ray through the pixel centre: the proposal's baseline, aliased edges and all.
+class CentreSampler final : public PixelSampler {
+ public:
+  Vec3 pixel(int x, int y, PixelContext& ctx) const override {
+    return trace_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, x, y, 0, ctx);
+  }
+};
+
+// n x n rays at the centres of a regular sub-pixel grid, averaged with equal weights.
+class UniformSampler final : public PixelSampler {
+ public:
+  explicit UniformSampler(int n) : n_(n) {}
+  Vec3 pixel(int x, int y, PixelContext& ctx) const override {
+    Vec3 sum(0.0f);
+    const float step = 1.0f / static_cast<float>(n_);
+    for (int j = 0; j < n_; ++j)
+      for (int i = 0; i < n_; ++i)
+        sum += trace_sample(static_cast<float>(x) + (static_cast<float>(i) + 0.5f) * step,
+                            static_cast<float>(y) + (static_cast<float>(j) + 0.5f) * step, x, y,
+                            static_cast<uint32_t>(j * n_ + i), ctx);
+    return sum * (step * step);
+  }
+
+ private:
+  int n_;
+};
+
+}  // namespace
+
+std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings) {
+  if (settings.sampler == PixelSamplerKind::kUniform && settings.samples_per_axis > 1)
+    return std::make_unique<UniformSampler>(settings.samples_per_axis);
+  return std::make_unique<CentreSampler>();
+}
+
+}  // namespace rt

@@ -1,0 +1,40 @@
+// The render entry point: reads a Scene and settings, writes one Image. Tiles are handed to
+// worker threads from a shared counter; every pixel is computed independently, so the image
+// is the same for any thread count and any tile order.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "core/image.h"
+#include "core/render/ray_counters.h"
+#include "core/render/render_settings.h"
+#include "core/scene.h"
+
+namespace rt {
+
+struct RenderProgress {
+  uint64_t pixels_done = 0;
+  uint64_t pixels_total = 0;
+  uint64_t rays = 0;  // traced so far, all kinds
+  double seconds = 0.0;
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  RayCounters rays;
+  unsigned threads = 1;
+};
+
+using ProgressCallback = std::function<void(const RenderProgress&)>;
+
+// Threads actually used for a requested count (0 = all hardware threads).
+unsigned resolve_thread_count(unsigned requested);
+
+// Renders frame `frame` into `image` (resized to settings.width x settings.height). The progress
+// callback, if any, is called from the calling thread about ten times a second and once at the
+// end. Throws std::invalid_argument for an unknown integrator name.
+RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image,
+                   const ProgressCallback& progress = {}, uint32_t frame = 0);
+
+}  // namespace rt

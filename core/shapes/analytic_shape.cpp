@@ -1,0 +1,64 @@
+#include "core/shapes/analytic_shape.h"
+
+#include "core/shapes/cone.h"
+#include "core/shapes/cube.h"
+#include "core/shapes/cylinder.h"
+#include "core/shapes/plane.h"
+#include "core/shapes/sphere.h"
+
+namespace rt {
+
+Aabb object_bounds(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::kSphere:
+    case ShapeKind::kCube: return {Vec3(-1.0f), Vec3(1.0f)};
+    case ShapeKind::kPlane: return {Vec3(-1.0f, 0.0f, -1.0f), Vec3(1.0f, 0.0f, 1.0f)};
+    case ShapeKind::kCylinder:
+    case ShapeKind::kCone: return {Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, 1.0f, 1.0f)};
+  }
+  return {};
+}
+
+Aabb world_bounds(const AnalyticShape& shape) {
+  return transform_bounds(shape.transform.to_world, object_bounds(shape.kind));
+}
+
+bool intersect_object_space(ShapeKind kind, const Ray& r, Hit& hit) {
+  switch (kind) {
+    case ShapeKind::kSphere: return intersect_sphere(r, hit);
+    case ShapeKind::kCube: return intersect_cube(r, hit);
+    case ShapeKind::kPlane: return intersect_plane(r, hit);
+    case ShapeKind::kCylinder: return intersect_cylinder(r, hit);
+    case ShapeKind::kCone: return intersect_cone(r, hit);
+  }
+  return false;
+}
+
+SurfacePatch object_space_patch(ShapeKind kind, Vec3 p, uint32_t part) {
+  switch (kind) {
+    case ShapeKind::kSphere: return sphere_patch(p, part);
+    case ShapeKind::kCube: return cube_patch(p, part);
+    case ShapeKind::kPlane: return plane_patch(p, part);
+    case ShapeKind::kCylinder: return cylinder_patch(p, part);
+    case ShapeKind::kCone: return cone_patch(p, part);
+  }
+  return {};
+}
+
+SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit) {
+  const Ray object_ray = to_object_ray(shape, ray);
+  const Vec3 p_object = object_ray.at(hit.t);
+  const SurfacePatch patch = object_space_patch(shape.kind, p_object, hit.part);
+  SurfaceInteraction si;
+  si.position = shape.transform.point_to_world(p_object);
+  si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
+  si.shading_normal = si.geometric_normal;
+  si.uv = patch.uv;
+  si.dpdu = shape.transform.vector_to_world(patch.dpdu);
+  si.dpdv = shape.transform.vector_to_world(patch.dpdv);
+  si.material = shape.material;
+  si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
+  return si;
+}
+
+}  // namespace rt

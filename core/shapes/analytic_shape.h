@@ -1,0 +1,45 @@
+// The closed set of analytic shapes, dispatched by a tag and a switch (no virtual call in the
+// hot path). Each is intersected in its canonical object space through the inverse transform;
+// the object-space direction is not renormalised, so t means the same thing in both spaces.
+#pragma once
+
+#include <cstdint>
+
+#include "core/aabb.h"
+#include "core/hit.h"
+#include "core/ray.h"
+#include "core/transform.h"
+
+namespace rt {
+
+enum class ShapeKind : uint8_t { kSphere, kCube, kPlane, kCylinder, kCone };
+
+struct AnalyticShape {
+  ShapeKind kind = ShapeKind::kSphere;
+  uint32_t material = 0;
+  Transform transform;
+};
+
+// Canonical object-space bounds of each kind.
+Aabb object_bounds(ShapeKind kind);
+Aabb world_bounds(const AnalyticShape& shape);
+
+// Object-space ray for the shape: origin and direction through to_object, interval unchanged.
+inline Ray to_object_ray(const AnalyticShape& shape, const Ray& ray) {
+  Ray r = ray;
+  r.origin = shape.transform.point_to_object(ray.origin);
+  r.direction = shape.transform.vector_to_object(ray.direction);
+  return r;
+}
+
+bool intersect_object_space(ShapeKind kind, const Ray& object_ray, Hit& hit);
+SurfacePatch object_space_patch(ShapeKind kind, Vec3 object_point, uint32_t part);
+
+inline bool intersect_shape(const AnalyticShape& shape, const Ray& ray, Hit& hit) {
+  return intersect_object_space(shape.kind, to_object_ray(shape, ray), hit);
+}
+
+// World-space surface at a hit (the hit's t and part from intersect_shape).
+SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit);
+
+}  // namespace rt

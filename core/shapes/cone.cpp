@@ -1,0 +1,50 @@
+#include "core/shapes/cone.h"
+
+#include "core/shapes/cylinder.h"
+#include "core/shapes/quadratic.h"
+
+namespace rt {
+
+bool intersect_cone(const Ray& ray, Hit& hit) {
+  const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+  const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+  double best = HUGE_VAL;
+  uint32_t part = 0;
+  double t0, t1;
+  // a == 0 when the ray runs parallel to a line of the cone; solve_quadratic then solves the
+  // remaining linear equation.
+  const double a = dx * dx + dy * dy - dz * dz;
+  if (solve_quadratic(a, 2.0 * (ox * dx + oy * dy - oz * dz), ox * ox + oy * oy - oz * oz, t0, t1)) {
+    for (const double t : {t0, t1}) {
+      const double z = oz + t * dz;
+      if (t > ray.tmin && t < ray.tmax && z >= 0.0 && z <= 1.0) {
+        best = t;
+        part = kConeSide;
+        break;
+      }
+    }
+  }
+  double tc;
+  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kConeBase; }
+  if (best == HUGE_VAL) return false;
+  hit.t = static_cast<float>(best);
+  hit.part = part;
+  return true;
+}
+
+SurfacePatch cone_patch(Vec3 p, uint32_t part) {
+  if (part == kConeBase) return cap_patch(p, true);
+  SurfacePatch s;
+  float phi = std::atan2(p.y, p.x);
+  if (phi < 0.0f) phi += 2.0f * kPi;
+  const Vec3 radial(std::cos(phi), std::sin(phi), 0.0f);
+  // Gradient of x^2 + y^2 - z^2 at radius z is (radial, -1) * z: the side leans at 45 degrees.
+  s.normal = glm::normalize(Vec3(radial.x, radial.y, -1.0f));
+  const float z = std::max(p.z, 0.0f);
+  s.uv = Vec2(phi / (2.0f * kPi), z);
+  s.dpdu = 2.0f * kPi * z * Vec3(-radial.y, radial.x, 0.0f);  // vanishes at the apex
+  s.dpdv = Vec3(radial.x, radial.y, 1.0f);
+  return s;
+}
+
+}  // namespace rt

@@ -1,0 +1,65 @@
+#include "core/shapes/cylinder.h"
+
+#include "core/shapes/quadratic.h"
+
+namespace rt {
+
+bool intersect_unit_disc(const Ray& ray, float z_cap, double& t) {
+  const double dz = ray.direction.z;
+  if (dz == 0.0) return false;
+  t = (z_cap - static_cast<double>(ray.origin.z)) / dz;
+  if (!(t > ray.tmin && t < ray.tmax)) return false;
+  const double x = ray.origin.x + t * ray.direction.x;
+  const double y = ray.origin.y + t * ray.direction.y;
+  return x * x + y * y <= 1.0;
+}
+
+bool intersect_cylinder(const Ray& ray, Hit& hit) {
+  const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+  const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+  double best = HUGE_VAL;
+  uint32_t part = 0;
+  double t0, t1;
+  const double a = dx * dx + dy * dy;  // 0 when the ray is parallel to the axis: no side hit
+  if (a > 0.0 && solve_quadratic(a, 2.0 * (ox * dx + oy * dy), ox * ox + oy * oy - 1.0, t0, t1)) {
+    for (const double t : {t0, t1}) {
+      const double z = oz + t * dz;
+      if (t > ray.tmin && t < ray.tmax && z >= 0.0 && z <= 1.0) {
+        best = t;
+        part = kCylinderSide;
+        break;
+      }
+    }
+  }
+  double tc;
+  if (intersect_unit_disc(ray, 0.0f, tc) && tc < best) { best = tc; part = kCylinderBase; }
+  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kCylinderTop; }
+  if (best == HUGE_VAL) return false;
+  hit.t = static_cast<float>(best);
+  hit.part = part;
+  return true;
+}
+
+SurfacePatch cap_patch(Vec3 p, bool top) {
+  SurfacePatch s;
+  s.normal = Vec3(0.0f, 0.0f, top ? 1.0f : -1.0f);
+  s.uv = Vec2(0.5f * (p.x + 1.0f), top ? 0.5f * (p.y + 1.0f) : 0.5f * (1.0f - p.y));
+  s.dpdu = Vec3(2.0f, 0.0f, 0.0f);
+  s.dpdv = Vec3(0.0f, top ? 2.0f : -2.0f, 0.0f);
+  return s;
+}
+
+SurfacePatch cylinder_patch(Vec3 p, uint32_t part) {
+  if (part != kCylinderSide) return cap_patch(p, part == kCylinderTop);
+  SurfacePatch s;
+  float phi = std::atan2(p.y, p.x);
+  if (phi < 0.0f) phi += 2.0f * kPi;
+  const Vec3 radial(std::cos(phi), std::sin(phi), 0.0f);
+  s.normal = radial;
+  s.uv = Vec2(phi / (2.0f * kPi), p.z);
+  s.dpdu = 2.0f * kPi * Vec3(-radial.y, radial.x, 0.0f);
+  s.dpdv = Vec3(0.0f, 0.0f, 1.0f);
+  return s;
+}
+
+}  // namespace rt

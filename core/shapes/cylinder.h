@@ -1,0 +1,22 @@
+// The proposal's cylinder: radius 1 around +Z, from z = 0 to z = 1, both caps closed.
+// part 0 = side, 1 = base cap (z = 0, normal -Z), 2 = top cap (z = 1, normal +Z).
+// UV on the side: u = angle around +Z from +X / 2 pi, v = z. On the caps: planar,
+// u = (x + 1) / 2 and v = (y + 1) / 2 on top, v = (1 - y) / 2 on the base (so dpdu x dpdv
+// points out of both caps).
+#pragma once
+
+#include "core/hit.h"
+#include "core/ray.h"
+
+namespace rt {
+
+enum CylinderPart : uint32_t { kCylinderSide = 0, kCylinderBase = 1, kCylinderTop = 2 };
+
+bool intersect_cylinder(const Ray& ray, Hit& hit);
+SurfacePatch cylinder_patch(Vec3 p, uint32_t part);
+
+// Shared with the cone: the disc x^2 + y^2 <= 1 in the plane z = z_cap.
+bool intersect_unit_disc(const Ray& ray, float z_cap, double& t);
+SurfacePatch cap_patch(Vec3 p, bool top);
+
+}  // namespace rt

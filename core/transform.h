@@ -1,0 +1,36 @@
+// An affine object-to-world transform with its inverse and normal matrix, computed once at
+// scene build time. Normals go through the inverse transpose so they stay perpendicular to the
+// surface under non-uniform scale.
+#pragma once
+
+#include <optional>
+
+#include "core/aabb.h"
+#include "core/math.h"
+
+namespace rt {
+
+struct Transform {
+  Mat4 to_world{1.0f};
+  Mat4 to_object{1.0f};
+  Mat3 normal_to_world{1.0f};  // inverse transpose of the linear part of to_world
+
+  Vec3 point_to_world(Vec3 p) const { return Vec3(to_world * Vec4(p, 1.0f)); }
+  Vec3 vector_to_world(Vec3 v) const { return Mat3(to_world) * v; }
+  Vec3 normal_to_world_unit(Vec3 n) const { return glm::normalize(normal_to_world * n); }
+  Vec3 point_to_object(Vec3 p) const { return Vec3(to_object * Vec4(p, 1.0f)); }
+  Vec3 vector_to_object(Vec3 v) const { return Mat3(to_object) * v; }
+};
+
+// The transform for an affine matrix, or nothing when the matrix is singular (a zero scale,
+// a degenerate 4x4) or not finite: such an object has no inside, no normals, no inverse.
+std::optional<Transform> make_transform(const Mat4& to_world);
+
+// Translate-rotate-scale as written in scene files: M = T * Rz * Ry * Rx * S, i.e. a point is
+// scaled first, then rotated about X, then Y, then Z (degrees), then translated.
+Mat4 compose_trs(Vec3 translate, Vec3 rotate_degrees, Vec3 scale);
+
+// Bounds of a box after an affine map (Arvo's method: exact for the transformed box's corners).
+Aabb transform_bounds(const Mat4& m, const Aabb& box);
+
+}  // namespace rt

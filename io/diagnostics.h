@@ -1,0 +1,42 @@
+// Load errors and warnings as values. Loaders record every problem they find and carry on
+// where they can; the caller decides what to do once loading is over (pbrt collects, then
+// stops). Each record says where (file, line:column, JSON pointer) and what (expected / found).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rt {
+
+enum class Severity { kError, kWarning };
+
+struct Diagnostic {
+  Severity severity = Severity::kError;
+  std::string file;     // as the user named it
+  size_t line = 0;      // 1-based; 0 when unknown
+  size_t column = 0;    // 1-based, in characters
+  std::string pointer;  // JSON pointer (RFC 6901) of the value concerned; empty when none
+  std::string message;  // what was expected and what was found
+  std::string excerpt;  // the source line and a caret under the column; may be empty
+};
+
+// "file:line:column: error: /pointer: message" — the one line a user reads first.
+std::string format_diagnostic(const Diagnostic& d);
+
+class Diagnostics {
+ public:
+  void add(Diagnostic d) { items_.push_back(std::move(d)); }
+  // For problems with no position inside a file (the file is missing, unreadable, ...).
+  void file_error(const std::string& file, std::string message) {
+    add(Diagnostic{Severity::kError, file, 0, 0, "", std::move(message), ""});
+  }
+
+  bool has_errors() const;
+  size_t error_count() const;
+  const std::vector<Diagnostic>& all() const { return items_; }
+
+ private:
+  std::vector<Diagnostic> items_;
+};
+
+}  // namespace rt

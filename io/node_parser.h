@@ -1,0 +1,27 @@
+// The "nodes" tree of a scene file: names, transforms, shapes, mesh references, materials.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/json_reader.h"
+#include "io/scene_description.h"
+
+namespace rt {
+
+struct NodeParseContext {
+  const JsonReader& reader;
+  std::string scene_folder;  // mesh files resolve against it
+  const std::vector<MaterialDescription>& materials;
+  std::map<std::string, std::string> names;  // node name -> pointer of its first use
+};
+
+// depth: how many node levels enclose this array (0 for the top-level "nodes").
+std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& value, const std::string& pointer,
+                                         int depth = 0);
+
+// A "transform" object: translate / rotate (degrees) / scale, or a 4x4 "matrix" (rows).
+std::optional<Mat4> parse_transform(const JsonReader& r, const Json& value, const std::string& pointer);
+
+}  // namespace rt

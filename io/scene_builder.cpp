@@ -1,0 +1,149 @@
+#include "io/scene_builder.h"
+
+#include <map>
+
+#include "core/render/renderer.h"
+#include "io/gltf_loader.h"
+#include "io/json_reader.h"
+
+namespace rt {
+namespace {
+
+class Builder {
+ public:
+  Builder(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags)
+      : desc_(desc), source_(source), diags_(diags) {}
+
+  void add_nodes(const std::vector<NodeDescription>& nodes, const Mat4& parent) {
+    for (const NodeDescription& node : nodes) {
+      const Mat4 world = parent * node.local;
+      if (node.shape || node.mesh) {
+        const auto transform = make_transform(world);
+        if (!transform) {
+          error(node.pointer, "expected an invertible world transform, found a singular one (the transforms above this "
+                              "node multiply to a flattening scale)");
+        } else if (node.shape) {
+          shapes_.push_back(AnalyticShape{*node.shape, node.material.value_or(0), *transform});
+        } else {
+          add_mesh(*node.mesh, world, node.material);
+        }
+      }
+      add_nodes(node.children, world);
+    }
+  }
+
+  Scene finish(const BuildOptions& options) {
+    Scene scene;
+    scene.camera = Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
+    scene.background = desc_.background;
+    scene.ambient = desc_.ambient;
+    scene.lights = desc_.lights;
+    scene.materials = std::move(materials_);
+    PrimitiveSet prims;
+    size_t triangles = 0;
+    for (const TriangleMesh& m : meshes_) triangles += m.triangle_count();
+    prims.triangles.reserve(triangles);
+    for (const TriangleMesh& m : meshes_) {
+      scene.mesh_first_triangle.push_back(static_cast<uint32_t>(prims.triangles.size()));
+      for (size_t i = 0; i < m.indices.size(); i += 3)
+        prims.triangles.push_back(
+            PackedTriangle::from_vertices(m.positions[m.indices[i]], m.positions[m.indices[i + 1]], m.positions[m.indices[i + 2]]));
+    }
+    prims.shapes = std::move(shapes_);
+    scene.meshes = std::move(meshes_);
+    scene.bvh = Bvh(std::move(prims), BvhBuildOptions{resolve_thread_count(options.threads)});
+    return scene;
+  }
+
+  void start() {
+    materials_.reserve(desc_.materials.size());
+    for (const MaterialDescription& m : desc_.materials) materials_.push_back(m.material);
+  }
+
+ private:
+  void add_mesh(const MeshReference& ref, const Mat4& world, std::optional<uint32_t> material_override) {
+    const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
+    auto it = models_.find(key);
+    if (it == models_.end()) {
+      ImportError why;
+      auto model = import_gltf(ref.resolved_path, ref.mesh_name, why);
+      if (!model && why.unknown_mesh) {
+        error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
+                                         "), found \"" + *ref.mesh_name + "\"");
+        return;
+      }
+      if (!model) {
+        error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\" (" +
+                                         ref.resolved_path + "): " + why.message);
+        return;
+      }
+      for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
+      LoadedModel loaded{std::move(*model), static_cast<uint32_t>(materials_.size())};
+      materials_.insert(materials_.end(), loaded.model.materials.begin(), loaded.model.materials.end());
+      it = models_.emplace(key, std::move(loaded)).first;
+    }
+    const LoadedModel& loaded = it->second;
+    size_t placed = 0;
+    for (const MeshInstance& inst : loaded.model.instances) {
+      const auto transform = make_transform(world * inst.to_file);
+      if (!transform) continue;  // a node of the file scaled to nothing: it has no visible surface
+      for (const ImportedPrimitive& p : loaded.model.meshes[inst.mesh]) {
+        TriangleMesh mesh = transformed(p.mesh, *transform);
+        mesh.material = material_override ? *material_override
+                        : p.material >= 0 ? loaded.first_material + static_cast<uint32_t>(p.material)
+                                          : default_material();
+        meshes_.push_back(std::move(mesh));
+        ++placed;
+      }
+    }
+    if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
+  }
+
+  // Our Material defaults stand in for glTF's default material (which a Phong model can't match).
+  uint32_t default_material() {
+    if (!default_material_) {
+      default_material_ = static_cast<uint32_t>(materials_.size());
+      materials_.push_back(Material{});
+    }
+    return *default_material_;
+  }
+
+  void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
+  void warning(const std::string& pointer, std::string message) { report(Severity::kWarning, pointer, std::move(message)); }
+  void report(Severity severity, const std::string& pointer, std::string message) {
+    if (source_) {
+      const JsonReader r(*source_, diags_);
+      severity == Severity::kError ? r.error(pointer, std::move(message)) : r.warning(pointer, std::move(message));
+    } else {
+      diags_.add(Diagnostic{severity, desc_.path, 0, 0, "", std::move(message), ""});
+    }
+  }
+
+  struct LoadedModel {
+    ImportedModel model;
+    uint32_t first_material = 0;  // where its materials start in the scene's material list
+  };
+
+  const SceneDescription& desc_;
+  const JsonDocument* source_;
+  Diagnostics& diags_;
+  std::vector<Material> materials_;
+  std::vector<AnalyticShape> shapes_;
+  std::vector<TriangleMesh> meshes_;
+  std::map<std::string, LoadedModel> models_;
+  std::optional<uint32_t> default_material_;
+};
+
+}  // namespace
+
+std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const BuildOptions& options,
+                                 Diagnostics& diags) {
+  const size_t errors_before = diags.error_count();
+  Builder builder(desc, source, diags);
+  builder.start();
+  builder.add_nodes(desc.nodes, Mat4(1.0f));
+  if (diags.error_count() > errors_before) return std::nullopt;
+  return builder.finish(options);
+}
+
+}  // namespace rt

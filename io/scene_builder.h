@@ -1,0 +1,24 @@
+// SceneDescription -> the immutable Scene: loads each glTF file once, composes node transforms
+// down the tree, turns shapes and meshes into world-space primitives and builds the BVH.
+// Problems (an unreadable glTF file, a world transform that became singular) are recorded
+// against the scene file at the node's JSON pointer.
+#pragma once
+
+#include <optional>
+
+#include "core/scene.h"
+#include "io/diagnostics.h"
+#include "io/json_document.h"
+#include "io/scene_description.h"
+
+namespace rt {
+
+struct BuildOptions {
+  unsigned threads = 0;  // for the BVH build; 0 = all hardware threads
+};
+
+// `source` is the scene file the description came from, for error positions (may be null).
+std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const BuildOptions& options,
+                                 Diagnostics& diags);
+
+}  // namespace rt

@@ -1,0 +1,30 @@
+// The one entry point from a file name to a render-ready Scene.
+//   .json        a scene file (schemas/scene.schema.json)
+//   .gltf/.glb   a model on its own: the whole file's default scene, framed by a default camera
+//                from the front and above, lit by a point light beside the camera
+// Every problem goes into `diags`; nothing comes back if any of them is an error.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/scene.h"
+#include "io/diagnostics.h"
+#include "io/scene_description.h"
+
+namespace rt {
+
+struct LoadOptions {
+  unsigned threads = 0;  // for the BVH build; 0 = all hardware threads
+};
+
+struct LoadedScene {
+  SceneDescription description;  // render settings and what the file said
+  Scene scene;
+};
+
+std::optional<LoadedScene> load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags);
+
+bool is_gltf_path(const std::string& path);
+
+}  // namespace rt

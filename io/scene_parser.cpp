@@ -1,0 +1,137 @@
+#include "io/scene_parser.h"
+
+#include <filesystem>
+
+#include "core/render/integrator.h"
+#include "io/json_locate.h"
+#include "io/node_parser.h"
+
+namespace rt {
+namespace {
+
+constexpr NumberRule kImageSize{1, 16384, false, false, true};
+constexpr NumberRule kMaxDepth{0, 64, false, false, true};
+constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53: exact in a double
+constexpr NumberRule kSamplesPerAxis{1, 16, false, false, true};
+constexpr NumberRule kFieldOfView{0, 180, true, true, false};
+
+void parse_render(const JsonReader& r, const Json& v, RenderSettings& s) {
+  ObjectReader o(r, v, "/render");
+  if (const auto w = o.number("width", kImageSize)) s.width = static_cast<int>(*w);
+  if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
+  if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
+  if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
+  if (const Json* i = o.get("integrator")) {
+    const std::vector<std::string> names = integrator_names();
+    if (const auto k = read_choice(r, *i, o.child("integrator"), names)) s.integrator = names[*k];
+  }
+  if (const Json* aa = o.get("antialias")) {
+    ObjectReader a(r, *aa, o.child("antialias"));
+    if (const Json* mode = a.get("mode", true, "\"none\" or \"uniform\"")) {
+      if (const auto k = read_choice(r, *mode, a.child("mode"), {"none", "uniform"}))
+        s.sampler = *k == 0 ? PixelSamplerKind::kCentre : PixelSamplerKind::kUniform;
+    }
+    if (const auto n = a.number("samples", kSamplesPerAxis)) s.samples_per_axis = static_cast<int>(*n);
+    a.finish();
+  }
+  o.finish();
+}
+
+void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
+  ObjectReader o(r, v, "/camera");
+  const auto position = o.vec3("position", true);
+  const auto look_at = o.vec3("look_at", true);
+  const auto up = o.vec3("up");
+  const auto fov = o.number("fov", kFieldOfView);
+  o.finish();
+  if (position) c.position = *position;
+  if (look_at) c.look_at = *look_at;
+  if (up) c.up = *up;
+  if (fov) c.fov_degrees = static_cast<float>(*fov);
+  if (!position || !look_at) return;
+  const Vec3 forward = c.look_at - c.position;
+  if (glm::length(forward) < 1e-6f * std::max(1.0f, max_abs_component(c.position))) {
+    r.error(o.child("look_at"), "expected a point away from the camera position, found the position itself");
+  } else if (!(glm::length(c.up) > 0.0f) ||
+             glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
+    r.error(up ? o.child("up") : o.child("look_at"),
+            "expected an up direction not parallel to the viewing direction, found one parallel to it");
+  }
+}
+
+std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json& v) {
+  std::vector<MaterialDescription> out;
+  if (!v.is_object()) {
+    r.expected("/materials", "an object mapping material names to materials", v);
+    return out;
+  }
+  for (const auto& item : v.items()) {
+    MaterialDescription m;
+    m.name = item.key();
+    ObjectReader o(r, item.value(), pointer_child("/materials", item.key()));
+    if (const auto kd = o.colour("kd")) m.material.kd = *kd;
+    if (const auto ks = o.colour("ks")) m.material.ks = *ks;
+    if (const auto n = o.number("shininess", kPositive)) m.material.shininess = static_cast<float>(*n);
+    o.finish();
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
+  std::vector<Light> out;
+  if (!v.is_array()) {
+    r.expected("/lights", "an array of lights", v);
+    return out;
+  }
+  for (size_t i = 0; i < v.size(); ++i) {
+    ObjectReader o(r, v[i], pointer_child("/lights", i));
+    if (const Json* type = o.get("type", true, "\"point\"")) read_choice(r, *type, o.child("type"), {"point"});
+    PointLight light;
+    if (const auto p = o.vec3("position", true)) light.position = *p;
+    const Vec3 colour = o.colour("color").value_or(Vec3(1.0f));
+    const auto intensity = o.number("intensity", kNonNegative);
+    light.colour = colour * static_cast<float>(intensity.value_or(1.0));
+    if (const Json* a = o.get("attenuation")) {
+      const std::string ptr = o.child("attenuation");
+      if (const auto c = read_vec3(r, *a, ptr)) {
+        if (c->x < 0 || c->y < 0 || c->z < 0 || c->x + c->y + c->z <= 0) {
+          r.expected(ptr, "[c0, c1, c2] >= 0, not all zero (radiance / (c0 + c1 d + c2 d^2))", *a);
+        } else {
+          light.c0 = c->x;
+          light.c1 = c->y;
+          light.c2 = c->z;
+        }
+      }
+    }
+    o.finish();
+    out.emplace_back(light);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<SceneDescription> parse_scene(const JsonDocument& doc, Diagnostics& diags) {
+  const size_t errors_before = diags.error_count();
+  const JsonReader r(doc, diags);
+  SceneDescription scene;
+  scene.path = doc.path;
+  ObjectReader top(r, doc.root, "");
+  top.get("$schema");  // editors use it to find the schema; we don't need it
+  if (const Json* v = top.get("render")) parse_render(r, *v, scene.render);
+  if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov")) parse_camera(r, *v, scene.camera);
+  if (const auto bg = top.colour("background")) scene.background = *bg;
+  if (const auto ambient = top.colour("ambient")) scene.ambient = *ambient;
+  if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v);
+  if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
+  if (const Json* v = top.get("nodes", true, "an array of nodes")) {
+    NodeParseContext ctx{r, std::filesystem::path(doc.path).parent_path().string(), scene.materials, {}};
+    scene.nodes = parse_nodes(ctx, *v, "/nodes");
+  }
+  top.finish();
+  if (diags.error_count() > errors_before) return std::nullopt;
+  return scene;
+}
+
+}  // namespace rt
