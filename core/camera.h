@@ -26,15 +26,22 @@ struct Camera {
   }
 
   // A camera in front of and a little above `bounds` (towards +Z, Y up), looking at its centre,
-  // far enough back that its bounding sphere fits both fields of view.
+  // just far enough back that all eight corners of the box are inside the image, plus 5 %.
   static Camera framing(const Aabb& bounds, float vertical_fov_degrees, float aspect) {
     const Vec3 centre = bounds.centre();
-    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
-    const float half_v = radians(vertical_fov_degrees) * 0.5f;
-    const float half_h = std::atan(std::tan(half_v) * aspect);
-    const float distance = radius / std::sin(std::min(half_v, half_h));
-    const Vec3 direction = glm::normalize(Vec3(0.0f, 0.35f, 1.0f));
-    return look_at(centre + distance * direction, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
+    const Vec3 back = glm::normalize(Vec3(0.0f, 0.35f, 1.0f));  // from the centre towards the camera
+    const Camera axes = look_at(centre + back, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
+    const float tan_v = std::tan(radians(vertical_fov_degrees) * 0.5f), tan_h = tan_v * aspect;
+    float distance = 1e-6f;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 c = Vec3(corner & 1 ? bounds.hi.x : bounds.lo.x, corner & 2 ? bounds.hi.y : bounds.lo.y,
+                          corner & 4 ? bounds.hi.z : bounds.lo.z) - centre;
+      // The corner is at depth distance + c.forward; it must satisfy |c.right| <= depth * tan_h.
+      const float depth_offset = glm::dot(c, axes.forward);
+      distance = std::max({distance, std::fabs(glm::dot(c, axes.right)) / tan_h - depth_offset,
+                           std::fabs(glm::dot(c, axes.up)) / tan_v - depth_offset});
+    }
+    return look_at(centre + 1.05f * distance * back, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
   }
 
   // Primary ray through continuous pixel position (x, y) of a width x height image.

@@ -1,61 +1,118 @@
 // BVH traversal: the innermost loop of the renderer.
 #include "core/accel/bvh.h"
 
+#include <cstring>
+
+#include "core/accel/simd.h"
+
 namespace rt {
 namespace {
 
-// Slab test against the ray's current interval. The far distance is widened by a few ulps
-// so that rounding never loses a box that the ray grazes (pbrt-v4's 1 + 2 * gamma(3)).
-inline bool hits_box(const BvhNode& node, Vec3 origin, Vec3 inv_dir, float tmin, float tmax) {
-  const Vec3 t0 = (node.lo - origin) * inv_dir;
-  const Vec3 t1 = (node.hi - origin) * inv_dir;
-  const Vec3 tnear = glm::min(t0, t1);
-  const Vec3 tfar = glm::max(t0, t1);
-  const float enter = std::max(std::max(tnear.x, tnear.y), std::max(tnear.z, tmin));
-  const float leave = std::min(std::min(tfar.x, tfar.y), std::min(tfar.z, tmax)) * 1.0000004f;
-  return enter <= leave;
+// Each 4-wide level pushes at most three entries; the tree is at most kMaxDepth deep.
+constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
+
+struct StackEntry {
+  uint32_t ref;
+  float t;  // where the ray enters the entry's box: skipped if a closer hit turns up meanwhile
+};
+
+// A ray prepared for slab tests against four boxes at once. For each axis, the row of the
+// node's bounds that the ray meets first (near) and last (far) follows from the direction sign,
+// so an inverted (empty) box always yields near > far.
+struct RaySlabs {
+  Float4 origin[3], inv_dir[3];
+  int near_row[3], far_row[3];
+
+  explicit RaySlabs(const Ray& ray) {
+    for (int a = 0; a < 3; ++a) {
+      const float inv = 1.0f / ray.direction[a];
+      origin[a] = splat4(ray.origin[a]);
+      inv_dir[a] = splat4(inv);
+      near_row[a] = 2 * a + (inv < 0.0f ? 1 : 0);
+      far_row[a] = 2 * a + (inv < 0.0f ? 0 : 1);
+    }
+  }
+
+  // Bit i set when child i's box is entered within [tmin, tmax]; tnear gets the entry distances.
+  unsigned test(const BvhNode4& node, float tmin, float tmax, Float4& tnear) const {
+    Float4 lo = splat4(tmin), hi = splat4(tmax);
+    for (int a = 0; a < 3; ++a) {
+      lo = max4(lo, (load4(node.bounds[near_row[a]]) - origin[a]) * inv_dir[a]);
+      hi = min4(hi, (load4(node.bounds[far_row[a]]) - origin[a]) * inv_dir[a]);
+    }
+    tnear = lo;
+    // Widen the far distance by a few ulps so rounding never loses a grazed box (pbrt-v4).
+    return movemask4(lo <= hi * splat4(1.0000004f));
+  }
+};
+
+// Inserts e into stack[base, top), which is sorted by decreasing t.
+inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
+  int i = top++;
+  for (; i > base && stack[i - 1].t < e.t; --i) stack[i] = stack[i - 1];
+  stack[i] = e;
 }
 
 }  // namespace
 
 template <bool kAnyHit>
 bool Bvh::traverse(Ray& ray, Hit& hit) const {
-  if (nodes_.empty()) return false;
-  const Vec3 inv_dir = 1.0f / ray.direction;
-  const bool dir_negative[3] = {inv_dir.x < 0.0f, inv_dir.y < 0.0f, inv_dir.z < 0.0f};
+  if (prims_.size() == 0) return false;
+  const RaySlabs slabs(ray);
   const auto triangle_count = static_cast<uint32_t>(prims_.triangles.size());
-  uint32_t stack[kMaxDepth];
+  StackEntry stack[kStackSize];
   int top = 0;
-  uint32_t current = 0;
+  stack[top++] = StackEntry{root_, ray.tmin};
   bool found = false;
-  for (;;) {
-    const BvhNode& node = nodes_[current];
-    if (hits_box(node, ray.origin, inv_dir, ray.tmin, ray.tmax)) {
-      if (node.count == 0) {
-        // Visit the child on the near side of the split plane first; the far one waits.
-        if (dir_negative[node.axis]) {
-          stack[top++] = current + 1;
-          current = node.offset;
-        } else {
-          stack[top++] = node.offset;
-          current = current + 1;
-        }
+  while (top > 0) {
+    const StackEntry entry = stack[--top];
+    if (entry.t > ray.tmax) continue;
+    uint32_t ref = entry.ref;
+    while (!BvhRef::is_leaf(ref)) {
+      Float4 tnear;
+      const BvhNode4& node = nodes_[ref];
+      unsigned mask = slabs.test(node, ray.tmin, ray.tmax, tnear);
+      if (mask == 0) break;
+      // Continue with the nearest child entered; push the others, farthest deepest, so that they
+      // come off the stack nearest first. One or two hits are by far the common cases.
+      alignas(16) float t[4];
+      std::memcpy(t, &tnear, sizeof t);
+      int slot = __builtin_ctz(mask);
+      mask &= mask - 1;
+      if (mask == 0) {
+        ref = node.child[slot];
         continue;
       }
-      for (uint32_t slot = node.offset, end = node.offset + node.count; slot < end; ++slot) {
-        const uint32_t id = order_[slot];
-        const bool hit_now = id < triangle_count ? intersect_triangle(slot_triangles_[slot], ray, hit)
-                                                 : intersect_shape(prims_.shape(id), ray, hit);
-        if (hit_now) {
-          if constexpr (kAnyHit) return true;
-          hit.prim = id;
-          ray.tmax = hit.t;
-          found = true;
-        }
+      const int other = __builtin_ctz(mask);
+      mask &= mask - 1;
+      if (mask == 0) {
+        const bool first_nearer = t[slot] <= t[other];
+        const int near = first_nearer ? slot : other, far = first_nearer ? other : slot;
+        stack[top++] = StackEntry{node.child[far], t[far]};
+        ref = node.child[near];
+        continue;
+      }
+      // Three or four: insertion-sort them onto the stack by decreasing distance, pop the nearest.
+      const int base = top;
+      for (int s : {slot, other}) push_sorted(stack, base, top, StackEntry{node.child[s], t[s]});
+      for (; mask; mask &= mask - 1) {
+        const int s = __builtin_ctz(mask);
+        push_sorted(stack, base, top, StackEntry{node.child[s], t[s]});
+      }
+      ref = stack[--top].ref;
+    }
+    if (!BvhRef::is_leaf(ref)) continue;  // the node's children were all missed
+    for (uint32_t slot = BvhRef::first(ref), end = slot + BvhRef::count(ref); slot < end; ++slot) {
+      const uint32_t id = order_[slot];
+      const bool hit_now = id < triangle_count ? intersect_triangle(slot_triangles_[slot], ray, hit)
+                                               : intersect_shape(prims_.shape(id), ray, hit);
+      if (hit_now) {
+        if constexpr (kAnyHit) return true;
+        hit.prim = id;
+        ray.tmax = hit.t;
+        found = true;
       }
     }
-    if (top == 0) break;
-    current = stack[--top];
   }
   return found;
 }

@@ -1,34 +1,51 @@
-// Bounding volume hierarchy over a PrimitiveSet: binned surface-area-heuristic build, stored as
-// a flat array of 32-byte nodes in depth-first order (left child follows its parent), traversed
-// with a fixed-size stack, near child first. No allocation and no virtual call per ray.
+// Bounding volume hierarchy over a PrimitiveSet. Built as a binary tree with the binned surface
+// area heuristic, then collapsed into a 4-wide tree: each node holds the boxes of up to four
+// children side by side, so one visit tests four boxes with one SIMD slab test. Nodes are a flat
+// array; traversal uses a fixed-size stack, visits the nearest child first and skips entries
+// farther than the closest hit found since they were pushed. No allocation and no virtual call
+// per ray.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "core/accel/huge_page_allocator.h"
 #include "core/accel/primitives.h"
 
 namespace rt {
 
-struct BvhNode {
-  Vec3 lo;
-  uint32_t offset;  // interior: index of the right child; leaf: first slot in the primitive order
-  Vec3 hi;
-  uint16_t count;   // 0 for an interior node, else number of primitives in the leaf
-  uint8_t axis;     // split axis of an interior node: picks which child is nearer
-  uint8_t pad = 0;
+// A child reference: an interior node index, or (top bit set) a leaf: `count` primitives from
+// `first` slot of the primitive order.
+struct BvhRef {
+  static constexpr uint32_t kLeafBit = 0x80000000u;
+  static constexpr int kCountShift = 27;
+  static constexpr uint32_t kMaxLeafCount = 15;
+  static constexpr uint32_t kMaxFirst = (1u << kCountShift) - 1;
+
+  static uint32_t leaf(uint32_t first, uint32_t count) { return kLeafBit | (count << kCountShift) | first; }
+  static bool is_leaf(uint32_t ref) { return (ref & kLeafBit) != 0; }
+  static uint32_t first(uint32_t ref) { return ref & kMaxFirst; }
+  static uint32_t count(uint32_t ref) { return (ref >> kCountShift) & kMaxLeafCount; }
 };
-static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes: two per cache line");
+
+struct alignas(64) BvhNode4 {
+  // Child boxes as rows of four: lo x, hi x, lo y, hi y, lo z, hi z. An unused slot has an
+  // inverted box (lo = +inf, hi = -inf) that no ray can enter.
+  float bounds[6][4];
+  uint32_t child[4];  // BvhRef values
+  uint8_t pad[16];
+};
+static_assert(sizeof(BvhNode4) == 128, "BvhNode4 must stay two cache lines");
 
 struct BvhBuildOptions {
-  unsigned threads = 1;  // subtrees are built in parallel; the result does not depend on this
+  unsigned threads = 1;  // subtrees are built in parallel; the tree does not depend on this
 };
 
 struct BvhStats {
-  size_t nodes = 0;
+  size_t nodes = 0;       // 4-wide nodes
   size_t leaves = 0;
-  int max_depth = 0;
-  double sah_cost = 0.0;
+  int max_depth = 0;      // of the 4-wide tree
+  double sah_cost = 0.0;  // of the binary tree it was collapsed from, relative to one primitive test
 };
 
 class Bvh {
@@ -42,11 +59,12 @@ class Bvh {
   bool occluded(const Ray& ray) const;
 
   const PrimitiveSet& primitives() const { return prims_; }
-  const std::vector<BvhNode>& nodes() const { return nodes_; }
-  Aabb bounds() const;
+  const std::vector<BvhNode4, HugePageAllocator<BvhNode4>>& nodes() const { return nodes_; }
+  uint32_t root() const { return root_; }
+  Aabb bounds() const { return bounds_; }
   BvhStats stats() const;
 
-  // Deepest tree the builder produces; the traversal stack is sized from it.
+  // Deepest binary tree the builder makes; the 4-wide traversal stack is sized from it.
   static constexpr int kMaxDepth = 64;
 
  private:
@@ -54,9 +72,12 @@ class Bvh {
   bool traverse(Ray& ray, Hit& hit) const;
 
   PrimitiveSet prims_;
-  std::vector<BvhNode> nodes_;
-  std::vector<uint32_t> order_;                // slot -> primitive id
-  std::vector<PackedTriangle> slot_triangles_;  // slot -> triangle copy, so leaves read memory in order
+  std::vector<BvhNode4, HugePageAllocator<BvhNode4>> nodes_;
+  uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
+  Aabb bounds_;
+  double binary_sah_cost_ = 0.0;
+  std::vector<uint32_t, HugePageAllocator<uint32_t>> order_;  // slot -> primitive id
+  std::vector<PackedTriangle, HugePageAllocator<PackedTriangle>> slot_triangles_;  // slot -> triangle copy, so leaves read memory in order
 };
 
 }  // namespace rt

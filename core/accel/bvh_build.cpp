@@ -1,65 +1,122 @@
-// Binned SAH build (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007).
-// Every node bins primitive centroids on all three axes, sweeps the bins for the cheapest split
-// and partitions its slice of the order array in place. Large subtrees are built on separate
-// threads into their own node arrays and spliced back in a fixed order, so the tree is identical
-// whatever the thread count.
-#include <numeric>
+// BVH construction in two steps.
+// 1. A binary tree by binned SAH (Wald, "On fast construction of SAH-based bounding volume
+//    hierarchies", 2007): each node bins primitive centroids on all three axes, sweeps the bins
+//    for the cheapest split and partitions its slice of the order array in place. Large subtrees
+//    are built on separate threads into their own arrays and spliced back in a fixed order, so
+//    the tree is identical whatever the thread count.
+// 2. A collapse to 4-wide nodes: a node adopts its children, then repeatedly replaces the
+//    interior child with the largest surface area by that child's two children.
+#include <cstring>
 #include <thread>
 
 #include "core/accel/bvh.h"
+#include "core/accel/simd.h"
 
 namespace rt {
 namespace {
 
-constexpr int kBins = 16;
-constexpr float kTraversalCost = 0.5f;   // cost of visiting a node, relative to one primitive test
-constexpr uint32_t kMaxLeafSize = 8;     // larger leaves are always split
-constexpr int kSahDepthLimit = 32;       // deeper nodes use median splits: depth stays < kMaxDepth
+constexpr int kBins = 32;
+constexpr float kTraversalCost = 1.0f;  // cost of a node visit relative to one primitive test
+constexpr uint32_t kMaxLeafSize = 8;    // larger leaves are always split (<= BvhRef::kMaxLeafCount)
+constexpr int kSahDepthLimit = 32;      // deeper nodes use median splits, so depth < Bvh::kMaxDepth
 constexpr uint32_t kParallelMinPrims = 4096;
+static_assert(kMaxLeafSize <= BvhRef::kMaxLeafCount);
+
+struct BinaryNode {
+  Aabb bounds;
+  uint32_t offset = 0;  // interior: index of the right child (the left one follows its parent); leaf: first slot
+  uint32_t count = 0;   // 0 for interior nodes
+};
+
+// One primitive during the build: its box as two 4-lane vectors, the id riding in the unused
+// fourth lane of `lo`. Records are partitioned in place, so every pass reads memory in order.
+struct alignas(32) BuildPrim {
+  Float4 lo;  // x, y, z, (id bits)
+  Float4 hi;  // x, y, z, unused
+  uint32_t id() const {
+    uint32_t v;
+    std::memcpy(&v, reinterpret_cast<const char*>(&lo) + 12, 4);
+    return v;
+  }
+  Float4 centroid2() const { return lo + hi; }  // twice the centre: one add, and scale-invariant for binning
+};
+
+typedef int32_t Int4 __attribute__((vector_size(16)));
+
+// No default member initialisers: arrays of bins are filled only as far as a node needs.
+struct Box4 {
+  Float4 lo, hi;
+  static Box4 empty() { return Box4{splat4(kInfinity), splat4(-kInfinity)}; }
+  void extend(Float4 l, Float4 h) {
+    lo = min4(lo, l);
+    hi = max4(hi, h);
+  }
+  void extend(const Box4& b) { extend(b.lo, b.hi); }
+  float half_area() const {
+    const Float4 e = hi - lo;
+    return e[0] < 0.0f ? 0.0f : e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+  }
+  Aabb aabb() const { return Aabb{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
+};
 
 struct Range {
   uint32_t begin = 0, end = 0;
-  Aabb bounds, centroid_bounds;
+  Box4 bounds = Box4::empty(), centroids = Box4::empty();  // centroids doubled (BuildPrim::centroid2)
   uint32_t count() const { return end - begin; }
 };
 
+// Maps doubled centroids to bins: bin = min(count - 1, (c - lo) * scale), per axis at once.
+// Small nodes get fewer bins: with a handful of primitives, more bins than primitives only
+// costs time.
+struct Binner {
+  Float4 lo, scale;
+  int count;
+  Binner(const Box4& centroids, uint32_t prims)
+      : lo(centroids.lo), count(static_cast<int>(std::clamp<uint32_t>(prims, 4, kBins))) {
+    const Float4 extent = centroids.hi - centroids.lo;
+    for (int a = 0; a < 3; ++a) scale[a] = extent[a] > 0.0f ? static_cast<float>(count) / extent[a] : 0.0f;
+    scale[3] = 0.0f;
+  }
+  Int4 bins(Float4 c2) const {
+    const Int4 k = __builtin_convertvector((c2 - lo) * scale, Int4);
+    const Int4 last{count - 1, count - 1, count - 1, count - 1};
+    return k < last ? k : last;
+  }
+  bool usable(int axis) const { return scale[axis] > 0.0f; }
+};
+
 struct Bin {
-  Aabb bounds, centroid_bounds;
-  uint32_t count = 0;
+  Box4 bounds;
+  uint32_t count;
 };
 
 struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin) go left
   float cost = kInfinity;
+  Box4 left_bounds = Box4::empty(), right_bounds = Box4::empty();
 };
 
-class Builder {
+class BinaryBuilder {
  public:
-  Builder(const std::vector<Aabb>& boxes, const std::vector<Vec3>& centroids, std::vector<uint32_t>& order)
-      : boxes_(boxes), centroids_(centroids), order_(order) {}
+  explicit BinaryBuilder(std::vector<BuildPrim>& prims) : prims_(prims) {}
 
-  void build(const Range& range, int depth, unsigned threads, std::vector<BvhNode>& out) const {
+  void build(const Range& range, int depth, unsigned threads, std::vector<BinaryNode>& out) const {
     const auto index = static_cast<uint32_t>(out.size());
-    out.push_back(BvhNode{range.bounds.lo, range.begin, range.bounds.hi, 0, 0, 0});
+    out.push_back(BinaryNode{range.bounds.aabb(), range.begin, 0});
     const uint32_t n = range.count();
     Split split;
     if (n > 1 && depth < kSahDepthLimit) split = find_split(range);
     const bool sah_prefers_leaf = split.axis < 0 || split.cost >= static_cast<float>(n);
     if (n == 1 || (n <= kMaxLeafSize && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
-      out[index].count = static_cast<uint16_t>(n);
+      out[index].count = n;
       return;
     }
     Range left, right;
-    if (split.axis >= 0 && depth < kSahDepthLimit) {
-      partition(range, split, left, right);
-      out[index].axis = static_cast<uint8_t>(split.axis);
-    } else {
-      median_split(range, left, right);
-      out[index].axis = static_cast<uint8_t>(range.centroid_bounds.largest_axis());
-    }
+    if (split.axis >= 0) partition(range, split, left, right);
+    else median_split(range, left, right);
     if (threads > 1 && n >= kParallelMinPrims) {
-      std::vector<BvhNode> left_nodes, right_nodes;
+      std::vector<BinaryNode> left_nodes, right_nodes;
       {
         std::jthread worker([&] { build(left, depth + 1, threads / 2, left_nodes); });
         build(right, depth + 1, threads - threads / 2, right_nodes);
@@ -75,153 +132,199 @@ class Builder {
   }
 
  private:
-  static int bin_of(float c, float lo, float scale) {
-    return std::min(kBins - 1, static_cast<int>((c - lo) * scale));
-  }
-  static float bin_scale(const Aabb& cb, int axis) { return kBins / (cb.hi[axis] - cb.lo[axis]); }
-
   Split find_split(const Range& range) const {
-    const Aabb& cb = range.centroid_bounds;
+    const Binner binner(range.centroids, range.count());
+    const int nb = binner.count;
     Bin bins[3][kBins];
-    float scale[3];
-    bool usable[3];
-    for (int a = 0; a < 3; ++a) {
-      usable[a] = cb.hi[a] > cb.lo[a];
-      scale[a] = usable[a] ? bin_scale(cb, a) : 0.0f;
-    }
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < nb; ++k) bins[a][k] = Bin{Box4::empty(), 0};
     for (uint32_t i = range.begin; i < range.end; ++i) {
-      const uint32_t id = order_[i];
-      const Vec3 c = centroids_[id];
+      const BuildPrim& p = prims_[i];
+      const Int4 k = binner.bins(p.centroid2());
       for (int a = 0; a < 3; ++a) {
-        Bin& b = bins[a][bin_of(c[a], cb.lo[a], scale[a])];
-        b.bounds.extend(boxes_[id]);
-        b.centroid_bounds.extend(c);
+        Bin& b = bins[a][k[a]];
+        b.bounds.extend(p.lo, p.hi);
         ++b.count;
       }
     }
     Split best;
-    const float inv_area = 1.0f / std::max(range.bounds.surface_area(), 1e-30f);
+    const float inv_area = 1.0f / std::max(range.bounds.half_area(), 1e-30f);
     for (int a = 0; a < 3; ++a) {
-      if (!usable[a]) continue;
-      // Sweep from the right, storing area * count of everything right of each plane.
-      float right_cost[kBins];
-      Aabb acc;
+      if (!binner.usable(a)) continue;  // all centroids share this coordinate
+      // Sweep from the right, keeping the bounds of everything right of each plane.
+      Box4 right_bounds[kBins];
+      uint32_t right_count[kBins];
+      Box4 acc = Box4::empty();
       uint32_t count = 0;
-      for (int k = kBins - 1; k > 0; --k) {
+      for (int k = nb - 1; k > 0; --k) {
         acc.extend(bins[a][k].bounds);
         count += bins[a][k].count;
-        right_cost[k] = count ? acc.surface_area() * static_cast<float>(count) : 0.0f;
+        right_bounds[k] = acc;
+        right_count[k] = count;
       }
-      acc = Aabb{};
+      acc = Box4::empty();
       count = 0;
-      for (int k = 1; k < kBins; ++k) {
+      for (int k = 1; k < nb; ++k) {
         acc.extend(bins[a][k - 1].bounds);
         count += bins[a][k - 1].count;
-        if (count == 0 || count == range.count()) continue;
-        const float cost = kTraversalCost + (acc.surface_area() * static_cast<float>(count) + right_cost[k]) * inv_area;
-        if (cost < best.cost) best = Split{a, k, cost};
+        if (count == 0 || right_count[k] == 0) continue;
+        const float cost = kTraversalCost + (acc.half_area() * static_cast<float>(count) +
+                                             right_bounds[k].half_area() * static_cast<float>(right_count[k])) *
+                                                inv_area;
+        if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
       }
     }
     return best;
   }
 
+  // Hoare-style partition by bin; gathers each side's centroid bounds on the way.
   void partition(const Range& range, const Split& split, Range& left, Range& right) const {
-    const int a = split.axis;
-    const float lo = range.centroid_bounds.lo[a];
-    const float scale = bin_scale(range.centroid_bounds, a);
-    left = Range{range.begin, range.begin, {}, {}};
-    right = Range{range.begin, range.end, {}, {}};
-    auto mid = std::partition(order_.begin() + range.begin, order_.begin() + range.end,
-                              [&](uint32_t id) { return bin_of(centroids_[id][a], lo, scale) < split.bin; });
-    left.end = right.begin = static_cast<uint32_t>(mid - order_.begin());
-    compute_bounds(left);
-    compute_bounds(right);
+    const Binner binner(range.centroids, range.count());
+    const auto goes_left = [&](const BuildPrim& p) { return binner.bins(p.centroid2())[split.axis] < split.bin; };
+    Box4 left_centroids = Box4::empty(), right_centroids = Box4::empty();
+    uint32_t i = range.begin, j = range.end;
+    while (true) {
+      for (; i < j && goes_left(prims_[i]); ++i) left_centroids.extend(prims_[i].centroid2(), prims_[i].centroid2());
+      for (; i < j && !goes_left(prims_[j - 1]); --j) right_centroids.extend(prims_[j - 1].centroid2(), prims_[j - 1].centroid2());
+      if (i >= j) break;
+      std::swap(prims_[i], prims_[j - 1]);
+    }
+    left = Range{range.begin, i, split.left_bounds, left_centroids};
+    right = Range{i, range.end, split.right_bounds, right_centroids};
   }
 
-  // Halves the range along the widest centroid axis; used past the SAH depth limit and when
-  // all centroids coincide, so the tree always terminates with small leaves.
+  // Halves the range along the widest centroid axis: used past the SAH depth limit and when no
+  // bin boundary separates the centroids, so the tree always ends in small leaves.
   void median_split(const Range& range, Range& left, Range& right) const {
-    const int a = range.centroid_bounds.largest_axis();
+    const Float4 extent = range.centroids.hi - range.centroids.lo;
+    const int a = (extent[0] >= extent[1] && extent[0] >= extent[2]) ? 0 : (extent[1] >= extent[2] ? 1 : 2);
     const uint32_t mid = range.begin + range.count() / 2;
-    std::nth_element(order_.begin() + range.begin, order_.begin() + mid, order_.begin() + range.end,
-                     [&](uint32_t x, uint32_t y) {
-                       return centroids_[x][a] < centroids_[y][a] || (centroids_[x][a] == centroids_[y][a] && x < y);
+    std::nth_element(prims_.begin() + range.begin, prims_.begin() + mid, prims_.begin() + range.end,
+                     [&](const BuildPrim& x, const BuildPrim& y) {
+                       const float cx = x.centroid2()[a], cy = y.centroid2()[a];
+                       return cx < cy || (cx == cy && x.id() < y.id());
                      });
     left = Range{range.begin, mid, {}, {}};
     right = Range{mid, range.end, {}, {}};
-    compute_bounds(left);
-    compute_bounds(right);
-  }
-
-  void compute_bounds(Range& r) const {
-    for (uint32_t i = r.begin; i < r.end; ++i) {
-      r.bounds.extend(boxes_[order_[i]]);
-      r.centroid_bounds.extend(centroids_[order_[i]]);
-    }
+    for (Range* r : {&left, &right})
+      for (uint32_t k = r->begin; k < r->end; ++k) {
+        r->bounds.extend(prims_[k].lo, prims_[k].hi);
+        r->centroids.extend(prims_[k].centroid2(), prims_[k].centroid2());
+      }
   }
 
   // Appends a subtree built into its own array, rebasing its interior links.
-  static void splice(std::vector<BvhNode>& out, const std::vector<BvhNode>& sub) {
+  static void splice(std::vector<BinaryNode>& out, const std::vector<BinaryNode>& sub) {
     const auto base = static_cast<uint32_t>(out.size());
-    for (BvhNode node : sub) {
+    for (BinaryNode node : sub) {
       if (node.count == 0) node.offset += base;
       out.push_back(node);
     }
   }
 
-  const std::vector<Aabb>& boxes_;
-  const std::vector<Vec3>& centroids_;
-  std::vector<uint32_t>& order_;
+  std::vector<BuildPrim>& prims_;
 };
+
+double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
+  const double root_area = std::max(nodes[0].bounds.surface_area(), 1e-30f);
+  double cost = 0.0;
+  for (const BinaryNode& n : nodes)
+    cost += n.bounds.surface_area() / root_area * (n.count ? static_cast<double>(n.count) : kTraversalCost);
+  return cost;
+}
+
+void set_child(BvhNode4& node, int slot, const Aabb& box, uint32_t ref) {
+  node.bounds[0][slot] = box.lo.x;
+  node.bounds[1][slot] = box.hi.x;
+  node.bounds[2][slot] = box.lo.y;
+  node.bounds[3][slot] = box.hi.y;
+  node.bounds[4][slot] = box.lo.z;
+  node.bounds[5][slot] = box.hi.z;
+  node.child[slot] = ref;
+}
+
+template <class NodeVector>
+uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& out) {
+  const BinaryNode& n = bin[b];
+  if (n.count > 0) return BvhRef::leaf(n.offset, n.count);
+  uint32_t kids[4] = {b + 1, n.offset, 0, 0};
+  int k = 2;
+  while (k < 4) {
+    int widest = -1;
+    float widest_area = -1.0f;
+    for (int i = 0; i < k; ++i) {
+      const BinaryNode& c = bin[kids[i]];
+      if (c.count == 0 && c.bounds.surface_area() > widest_area) {
+        widest = i;
+        widest_area = c.bounds.surface_area();
+      }
+    }
+    if (widest < 0) break;
+    const uint32_t opened = kids[widest];
+    kids[widest] = opened + 1;
+    kids[k++] = bin[opened].offset;
+  }
+  const auto index = static_cast<uint32_t>(out.size());
+  out.emplace_back();
+  BvhNode4 node;
+  for (int slot = 0; slot < 4; ++slot) {
+    if (slot < k) set_child(node, slot, bin[kids[slot]].bounds, collapse(bin, kids[slot], out));
+    else set_child(node, slot, Aabb{}, 0);  // inverted box: never entered
+  }
+  out[index] = node;
+  return index;
+}
 
 }  // namespace
 
 Bvh::Bvh(PrimitiveSet prims, const BvhBuildOptions& options) : prims_(std::move(prims)) {
   const uint32_t n = prims_.size();
   if (n == 0) return;
-  std::vector<Aabb> boxes(n);
-  std::vector<Vec3> centroids(n);
+  if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");
+  std::vector<BuildPrim> build_prims(n);
   Range root{0, n, {}, {}};
   for (uint32_t id = 0; id < n; ++id) {
-    boxes[id] = prims_.bounds(id);
-    centroids[id] = boxes[id].centre();
-    root.bounds.extend(boxes[id]);
-    root.centroid_bounds.extend(centroids[id]);
+    const Aabb box = prims_.bounds(id);
+    BuildPrim& p = build_prims[id];
+    p.lo = Float4{box.lo.x, box.lo.y, box.lo.z, 0.0f};
+    std::memcpy(reinterpret_cast<char*>(&p.lo) + 12, &id, 4);
+    p.hi = Float4{box.hi.x, box.hi.y, box.hi.z, 0.0f};
+    root.bounds.extend(p.lo, p.hi);
+    root.centroids.extend(p.centroid2(), p.centroid2());
   }
-  order_.resize(n);
-  std::iota(order_.begin(), order_.end(), 0u);
-  nodes_.reserve(2 * static_cast<size_t>(n) / 3 + 1);
-  Builder(boxes, centroids, order_).build(root, 0, std::max(1u, options.threads), nodes_);
-  nodes_.shrink_to_fit();
+  std::vector<BinaryNode> binary;
+  binary.reserve(2 * static_cast<size_t>(n) / 3 + 1);
+  BinaryBuilder(build_prims).build(root, 0, std::max(1u, options.threads), binary);
+  bounds_ = root.bounds.aabb();
+  binary_sah_cost_ = binary_sah_cost(binary);
+  nodes_.reserve(binary.size() / 3 + 1);
+  root_ = collapse(binary, 0, nodes_);
 
+  order_.resize(n);
+  for (uint32_t slot = 0; slot < n; ++slot) order_[slot] = build_prims[slot].id();
   slot_triangles_.resize(n);
   for (uint32_t slot = 0; slot < n; ++slot)
     if (prims_.is_triangle(order_[slot])) slot_triangles_[slot] = prims_.triangles[order_[slot]];
 }
 
-Aabb Bvh::bounds() const { return nodes_.empty() ? Aabb{} : Aabb{nodes_[0].lo, nodes_[0].hi}; }
-
 BvhStats Bvh::stats() const {
   BvhStats s;
   s.nodes = nodes_.size();
-  if (nodes_.empty()) return s;
-  const float root_area = std::max(bounds().surface_area(), 1e-30f);
-  struct Item { uint32_t node; int depth; };
-  std::vector<Item> stack{{0, 0}};
+  s.sah_cost = binary_sah_cost_;
+  if (prims_.size() == 0) return s;
+  struct Item { uint32_t ref; int depth; };
+  std::vector<Item> stack{{root_, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
-    const BvhNode& node = nodes_[it.node];
-    const float rel_area = Aabb{node.lo, node.hi}.surface_area() / root_area;
     s.max_depth = std::max(s.max_depth, it.depth);
-    if (node.count > 0) {
+    if (BvhRef::is_leaf(it.ref)) {
       ++s.leaves;
-      s.sah_cost += rel_area * node.count;
-    } else {
-      s.sah_cost += rel_area * kTraversalCost;
-      stack.push_back({it.node + 1, it.depth + 1});
-      stack.push_back({node.offset, it.depth + 1});
+      continue;
     }
+    const BvhNode4& node = nodes_[it.ref];
+    for (int slot = 0; slot < 4; ++slot)
+      if (node.bounds[0][slot] <= node.bounds[1][slot]) stack.push_back({node.child[slot], it.depth + 1});
   }
   return s;
 }

@@ -26,18 +26,18 @@ struct PackedTriangle {
 // Updates hit (t, b1, b2) and returns true if the triangle is hit inside (ray.tmin, ray.tmax).
 // Both faces count: shading decides what the back of a triangle looks like.
 inline bool intersect_triangle(const PackedTriangle& tri, const Ray& ray, Hit& hit) {
+  // All conditions are evaluated and combined into one branch: with incoherent rays each
+  // early-out branch would be mispredicted half the time, which costs more than the arithmetic.
   const Vec3 p = glm::cross(ray.direction, tri.e2);
   const float det = glm::dot(tri.e1, p);
-  if (det == 0.0f) return false;  // ray parallel to the triangle's plane, or degenerate triangle
-  const float inv_det = 1.0f / det;
+  const float inv_det = 1.0f / det;  // +-inf for a parallel ray: then b1, b2 or t are NaN or inf
   const Vec3 s = ray.origin - tri.v0;
   const float b1 = glm::dot(s, p) * inv_det;
-  if (b1 < 0.0f || b1 > 1.0f) return false;
   const Vec3 q = glm::cross(s, tri.e1);
   const float b2 = glm::dot(ray.direction, q) * inv_det;
-  if (b2 < 0.0f || b1 + b2 > 1.0f) return false;
   const float t = glm::dot(tri.e2, q) * inv_det;
-  if (!(t > ray.tmin && t < ray.tmax)) return false;
+  const bool inside = (det != 0.0f) & (b1 >= 0.0f) & (b2 >= 0.0f) & (b1 + b2 <= 1.0f) & (t > ray.tmin) & (t < ray.tmax);
+  if (!inside) return false;
   hit.t = t;
   hit.b1 = b1;
   hit.b2 = b2;
