@@ -266,7 +266,7 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
   }
   const auto index = static_cast<uint32_t>(out.size());
   out.emplace_back();
-  BvhNode4 node;
+  BvhNode4 node{};  // padding zeroed too: the tree's bytes are as deterministic as its shape
   for (int slot = 0; slot < 4; ++slot) {
     if (slot < k) set_child(node, slot, bin[kids[slot]].bounds, collapse(bin, kids[slot], out));
     else set_child(node, slot, Aabb{}, 0);  // inverted box: never entered

@@ -41,6 +41,7 @@ inline bool intersect_triangle(const PackedTriangle& tri, const Ray& ray, Hit& h
   hit.t = t;
   hit.b1 = b1;
   hit.b2 = b2;
+  hit.part = 0;
   return true;
 }
 

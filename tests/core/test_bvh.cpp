@@ -1,0 +1,138 @@
+#include <cstring>
+
+#include <catch2/catch.hpp>
+
+#include "core/accel/brute_force.h"
+#include "core/accel/bvh.h"
+#include "core/rng.h"
+
+using namespace rt;
+
+namespace {
+
+Vec3 random_in(Rng& rng, float lo, float hi) {
+  return Vec3(lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float());
+}
+
+Vec3 random_direction(Rng& rng) {
+  for (;;) {
+    const Vec3 v = random_in(rng, -1.0f, 1.0f);
+    const float l = glm::length(v);
+    if (l > 1e-3f && l <= 1.0f) return v / l;
+  }
+}
+
+// Thousands of triangles of mixed sizes plus every analytic kind, rotated and scaled.
+PrimitiveSet random_scene(uint64_t seed) {
+  Rng rng(seed);
+  PrimitiveSet prims;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 c = random_in(rng, -10.0f, 10.0f);
+    const float size = i % 10 == 0 ? 3.0f : 0.4f;
+    prims.triangles.push_back(PackedTriangle::from_vertices(c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1),
+                                                           c + size * random_in(rng, -1, 1)));
+  }
+  const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone};
+  for (int i = 0; i < 60; ++i) {
+    AnalyticShape s;
+    s.kind = kinds[i % 5];
+    const Vec3 scale = Vec3(0.3f) + 1.5f * Vec3(rng.next_float(), rng.next_float(), rng.next_float());
+    s.transform = *make_transform(compose_trs(random_in(rng, -10, 10), random_in(rng, -180, 180), scale));
+    prims.shapes.push_back(s);
+  }
+  return prims;
+}
+
+}  // namespace
+
+TEST_CASE("BVH closest hits equal brute force on thousands of random rays", "[bvh]") {
+  const PrimitiveSet prims = random_scene(42);
+  for (unsigned threads : {1u, 2u}) {
+    const Bvh bvh(prims, BvhBuildOptions{threads});
+    const BruteForce brute(bvh.primitives());
+    Rng rng(7);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+      Ray a;
+      a.origin = random_in(rng, -14, 14);
+      a.direction = random_direction(rng);
+      Ray b = a;
+      Hit ha, hb;
+      const bool found_a = bvh.intersect(a, ha);
+      const bool found_b = brute.intersect(b, hb);
+      REQUIRE(found_a == found_b);
+      if (!found_a) continue;
+      ++hits;
+      REQUIRE(ha.prim == hb.prim);
+      REQUIRE(ha.t == hb.t);
+      REQUIRE(ha.part == hb.part);
+    }
+    CHECK(hits > 5000);  // the test would prove little if most rays missed
+  }
+}
+
+TEST_CASE("BVH occlusion equals brute force, with finite segments", "[bvh]") {
+  const PrimitiveSet prims = random_scene(5);
+  const Bvh bvh(prims, BvhBuildOptions{1});
+  const BruteForce brute(bvh.primitives());
+  Rng rng(11);
+  int blocked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Ray r;
+    r.origin = random_in(rng, -12, 12);
+    const Vec3 to = random_in(rng, -12, 12);
+    r.direction = glm::normalize(to - r.origin);
+    r.tmax = glm::length(to - r.origin);
+    const bool occluded = bvh.occluded(r);
+    REQUIRE(occluded == brute.occluded(r));
+    blocked += occluded;
+  }
+  CHECK(blocked > 2000);
+  CHECK(blocked < 18000);
+}
+
+TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
+  const PrimitiveSet prims = random_scene(3);
+  const Bvh one(prims, BvhBuildOptions{1}), four(prims, BvhBuildOptions{4});
+  REQUIRE(one.nodes().size() == four.nodes().size());
+  for (size_t i = 0; i < one.nodes().size(); ++i)
+    REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode4)) == 0);
+}
+
+TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives", "[bvh]") {
+  Ray r;
+  r.origin = Vec3(0.2f, 0.2f, 5);
+  r.direction = Vec3(0, 0, -1);
+  Hit h;
+  {
+    const Bvh empty(PrimitiveSet{}, {});
+    Ray copy = r;
+    CHECK_FALSE(empty.intersect(copy, h));
+    CHECK_FALSE(empty.occluded(r));
+  }
+  PrimitiveSet one;
+  one.triangles.push_back(PackedTriangle::from_vertices({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+  {
+    const Bvh bvh(one, {});
+    Ray copy = r;
+    REQUIRE(bvh.intersect(copy, h));
+    CHECK(h.t == Approx(5.0f));
+    CHECK(copy.tmax == h.t);
+  }
+  PrimitiveSet same;  // coincident centroids: no SAH split exists, median splits must terminate
+  for (int i = 0; i < 1000; ++i) same.triangles.push_back(one.triangles[0]);
+  const Bvh bvh(same, {});
+  CHECK(bvh.stats().max_depth < Bvh::kMaxDepth);
+  Ray copy = r;
+  CHECK(bvh.intersect(copy, h));
+}
+
+TEST_CASE("BVH quality: far fewer node visits than primitives", "[bvh]") {
+  const PrimitiveSet prims = random_scene(9);
+  const Bvh bvh(prims, {});
+  const BvhStats s = bvh.stats();
+  CHECK(s.leaves > 0);
+  CHECK(s.nodes < prims.size());
+  CHECK(s.max_depth < 20);
+  CHECK(s.sah_cost < 0.1 * prims.size());  // a linear list would cost prims.size()
+}

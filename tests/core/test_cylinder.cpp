@@ -1,0 +1,113 @@
+#include <catch2/catch.hpp>
+
+#include "core/shapes/analytic_shape.h"
+#include "core/shapes/cylinder.h"
+
+using namespace rt;
+
+namespace {
+Ray make_ray(Vec3 o, Vec3 d) {
+  Ray r;
+  r.origin = o;
+  r.direction = d;
+  return r;
+}
+void check_vec(Vec3 a, Vec3 b) {
+  CHECK(a.x == Approx(b.x).margin(1e-5));
+  CHECK(a.y == Approx(b.y).margin(1e-5));
+  CHECK(a.z == Approx(b.z).margin(1e-5));
+}
+}  // namespace
+
+TEST_CASE("cylinder: through a cap only (along the axis, inside the radius)", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({0.3f, 0.2f, 5}, {0, 0, -1}), h));
+  CHECK(h.t == Approx(4.0f));
+  CHECK(h.part == kCylinderTop);
+  check_vec(cylinder_patch({0.3f, 0.2f, 1}, h.part).normal, {0, 0, 1});
+}
+
+TEST_CASE("cylinder: enters through the side, leaves through a cap", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({-3, 0, 0.2f}, {1, 0, 0.25f}), h));
+  CHECK(h.t == Approx(2.0f));
+  CHECK(h.part == kCylinderSide);
+  check_vec(cylinder_patch({-1, 0, 0.7f}, h.part).normal, {-1, 0, 0});
+  // The same line from beyond the side hit: the top cap at z = 1 (t = 3.2 from the original origin).
+  Ray r = make_ray({-3, 0, 0.2f}, {1, 0, 0.25f});
+  r.tmin = 2.5f;
+  REQUIRE(intersect_cylinder(r, h));
+  CHECK(h.t == Approx(3.2f));
+  CHECK(h.part == kCylinderTop);
+}
+
+TEST_CASE("cylinder: enters through a cap, leaves through the side", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({0, 0, 2}, {0.5f, 0, -1}), h));
+  CHECK(h.t == Approx(1.0f));
+  CHECK(h.part == kCylinderTop);
+}
+
+TEST_CASE("cylinder: tangent to the side touches at one point", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({-2, 1, 0.5f}, {1, 0, 0}), h));
+  CHECK(h.t == Approx(2.0f));
+  CHECK(h.part == kCylinderSide);
+  check_vec(cylinder_patch({0, 1, 0.5f}, h.part).normal, {0, 1, 0});
+  CHECK_FALSE(intersect_cylinder(make_ray({-2, 1.0001f, 0.5f}, {1, 0, 0}), h));
+}
+
+TEST_CASE("cylinder: parallel to the axis hits a cap or nothing", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({0.5f, 0, -2}, {0, 0, 1}), h));
+  CHECK(h.t == Approx(2.0f));
+  CHECK(h.part == kCylinderBase);
+  check_vec(cylinder_patch({0.5f, 0, 0}, h.part).normal, {0, 0, -1});
+  CHECK_FALSE(intersect_cylinder(make_ray({1.5f, 0, -2}, {0, 0, 1}), h));
+}
+
+TEST_CASE("cylinder: starting inside hits the side or a cap from within", "[shapes][cylinder]") {
+  Hit h;
+  REQUIRE(intersect_cylinder(make_ray({0, 0, 0.5f}, {1, 0, 0}), h));
+  CHECK(h.t == Approx(1.0f));
+  CHECK(h.part == kCylinderSide);
+  REQUIRE(intersect_cylinder(make_ray({0, 0, 0.5f}, {0, 0, 1}), h));
+  CHECK(h.t == Approx(0.5f));
+  CHECK(h.part == kCylinderTop);
+}
+
+TEST_CASE("cylinder: misses above, beside and pointing away", "[shapes][cylinder]") {
+  Hit h;
+  CHECK_FALSE(intersect_cylinder(make_ray({-3, 0, 2}, {1, 0, 0}), h));
+  CHECK_FALSE(intersect_cylinder(make_ray({-3, 2, 0.5f}, {1, 0, 0}), h));
+  CHECK_FALSE(intersect_cylinder(make_ray({-3, 0, 0.5f}, {-1, 0, 0}), h));
+}
+
+TEST_CASE("cylinder: uv and tangent frame", "[shapes][cylinder]") {
+  const SurfacePatch side = cylinder_patch({0, 1, 0.25f}, kCylinderSide);
+  CHECK(side.uv.x == Approx(0.25f));
+  CHECK(side.uv.y == Approx(0.25f));
+  check_vec(side.dpdv, {0, 0, 1});
+  CHECK(glm::dot(glm::cross(side.dpdu, side.dpdv), side.normal) > 0.0f);
+  for (uint32_t cap : {kCylinderBase, kCylinderTop}) {
+    const SurfacePatch s = cylinder_patch({1, 1, cap == kCylinderTop ? 1.0f : 0.0f}, cap);
+    CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) > 0.0f);
+    CHECK(s.uv.x == Approx(1.0f));
+  }
+}
+
+TEST_CASE("cylinder under non-uniform scale and rotation: exact world normal", "[shapes][cylinder][transform]") {
+  AnalyticShape s;
+  s.kind = ShapeKind::kCylinder;
+  // An elliptic cylinder, x radius 2, y radius 1, standing up along world +Y.
+  s.transform = *make_transform(compose_trs({0, 0, 0}, {-90, 0, 0}, {2, 1, 3}));
+  const Ray r = make_ray({6, 1, 3}, glm::normalize(Vec3(-1, 0, -0.5f)));
+  Hit h;
+  REQUIRE(intersect_shape(s, r, h));
+  const SurfaceInteraction si = shape_surface(s, r, h);
+  const Vec3 p = si.position;
+  // Rotating -90 about X maps object z to world y and object y to world -z: x^2/4 + z^2 = 1.
+  CHECK(p.x * p.x / 4 + p.z * p.z == Approx(1.0f).margin(1e-4));
+  check_vec(si.geometric_normal, glm::normalize(Vec3(p.x / 4, 0, p.z)));
+  CHECK(p.y == Approx(1.0f).margin(1e-5));
+}

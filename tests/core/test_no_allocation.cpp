@@ -1,0 +1,93 @@
+// Proves the hot path allocates nothing: this test binary replaces the global operator new with
+// a counting one, then traces rays through the BVH and shades pixels, and compares the counts.
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include <catch2/catch.hpp>
+
+#include "core/accel/bvh.h"
+#include "core/render/pixel_sampler.h"
+#include "core/rng.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace rt;
+
+namespace {
+
+Scene small_scene() {
+  Scene scene;
+  scene.camera = Camera::look_at({0, 2, 6}, {0, 0, 0}, {0, 1, 0}, 50.0f);
+  scene.materials = {Material{}};
+  scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), 1, 0, 0}};
+  PrimitiveSet prims;
+  Rng rng(1);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 c(4 * rng.next_float() - 2, 4 * rng.next_float() - 2, 4 * rng.next_float() - 2);
+    prims.triangles.push_back(PackedTriangle::from_vertices(c, c + Vec3(0.2f, 0, 0), c + Vec3(0, 0.2f, 0.1f)));
+  }
+  TriangleMesh mesh;
+  for (const PackedTriangle& t : prims.triangles) {
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {t.v0, t.v0 + t.e1, t.v0 + t.e2});
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+  }
+  scene.meshes = {mesh};
+  scene.mesh_first_triangle = {0};
+  for (ShapeKind k : {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
+    AnalyticShape s;
+    s.kind = k;
+    s.transform = *make_transform(compose_trs({static_cast<float>(k) - 2.0f, -1, 0}, {10, 20, 30}, {0.5f, 0.7f, 0.4f}));
+    prims.shapes.push_back(s);
+  }
+  scene.bvh = Bvh(std::move(prims), {});
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("tracing and shading allocate nothing per ray", "[bvh][alloc]") {
+  const Scene scene = small_scene();
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  const auto integrator = make_integrator("whitted");
+  RayCounters counters;
+  PixelContext ctx{scene, settings, *integrator, counters, 0};
+  const auto sampler = make_pixel_sampler(settings);
+
+  const long before = g_allocations.load();
+  Rng rng(3);
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Ray r;
+    r.origin = Vec3(0, 0, 8);
+    r.direction = glm::normalize(Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, -1.0f));
+    Hit h;
+    hits += scene.intersect(r, h);
+    hits += scene.occluded(r);
+  }
+  Vec3 sum(0.0f);
+  for (int y = 0; y < settings.height; ++y)
+    for (int x = 0; x < settings.width; ++x) sum += sampler->pixel(x, y, ctx);
+  const long after = g_allocations.load();
+
+  CHECK(hits > 1000);
+  CHECK(counters.shadow > 0);
+  CHECK(sum.x > 0.0f);
+  CHECK(after - before == 0);
+}

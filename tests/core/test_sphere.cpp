@@ -1,0 +1,81 @@
+#include <catch2/catch.hpp>
+
+#include "core/shapes/analytic_shape.h"
+#include "core/shapes/sphere.h"
+
+using namespace rt;
+
+namespace {
+Ray make_ray(Vec3 o, Vec3 d) {
+  Ray r;
+  r.origin = o;
+  r.direction = d;
+  return r;
+}
+}  // namespace
+
+TEST_CASE("sphere: hit from outside gives the near root and outward normal", "[shapes][sphere]") {
+  Hit h;
+  REQUIRE(intersect_sphere(make_ray({0, 0, 5}, {0, 0, -1}), h));
+  CHECK(h.t == Approx(4.0f));
+  const SurfacePatch s = sphere_patch({0, 0, 1}, h.part);
+  CHECK(s.normal.z == Approx(1.0f));
+  CHECK(s.uv.x == Approx(0.0f).margin(1e-6));  // +Z is u = 0
+  CHECK(s.uv.y == Approx(0.5f));               // on the equator
+}
+
+TEST_CASE("sphere: unnormalised direction keeps t in world units of the ray parameter", "[shapes][sphere]") {
+  Hit h;
+  REQUIRE(intersect_sphere(make_ray({0, 0, 5}, {0, 0, -2}), h));
+  CHECK(h.t == Approx(2.0f));
+}
+
+TEST_CASE("sphere: from inside, the far root", "[shapes][sphere]") {
+  Hit h;
+  REQUIRE(intersect_sphere(make_ray({0, 0, 0.5f}, {1, 0, 0}), h));
+  CHECK(h.t == Approx(std::sqrt(1.0f - 0.25f)));
+}
+
+TEST_CASE("sphere: misses, tangents and the ray interval", "[shapes][sphere]") {
+  Hit h;
+  CHECK_FALSE(intersect_sphere(make_ray({0, 1.001f, 5}, {0, 0, -1}), h));
+  REQUIRE(intersect_sphere(make_ray({0, 1, 5}, {0, 0, -1}), h));  // tangent: a single touching point
+  CHECK(h.t == Approx(5.0f));
+  CHECK_FALSE(intersect_sphere(make_ray({0, 0, 5}, {0, 0, 1}), h));  // pointing away
+  Ray short_ray = make_ray({0, 0, 5}, {0, 0, -1});
+  short_ray.tmax = 3.9f;
+  CHECK_FALSE(intersect_sphere(short_ray, h));
+}
+
+TEST_CASE("sphere: far from the origin, no cancellation", "[shapes][sphere]") {
+  Hit h;
+  REQUIRE(intersect_sphere(make_ray({0, 0, 1e4f}, {0, 0, -1}), h));
+  CHECK(h.t == Approx(1e4f - 1.0f).epsilon(1e-6));
+}
+
+TEST_CASE("sphere: uv and tangent frame at the north pole and on the +X meridian", "[shapes][sphere]") {
+  const SurfacePatch px = sphere_patch({1, 0, 0}, 0);
+  CHECK(px.uv.x == Approx(0.25f));  // a quarter turn from +Z towards +X
+  CHECK(glm::dot(px.dpdu, px.normal) == Approx(0.0f).margin(1e-6));
+  CHECK(glm::dot(px.dpdv, px.normal) == Approx(0.0f).margin(1e-6));
+  CHECK(px.dpdv.y < 0.0f);  // v grows towards the south pole
+  const SurfacePatch pole = sphere_patch({0, 1, 0}, 0);
+  CHECK(pole.uv.y == Approx(0.0f).margin(1e-6));
+}
+
+TEST_CASE("sphere under non-uniform scale: world normal is the inverse transpose", "[shapes][sphere][transform]") {
+  AnalyticShape s;
+  s.kind = ShapeKind::kSphere;
+  s.transform = *make_transform(compose_trs({0, 0, 0}, {0, 0, 0}, {2, 1, 1}));  // ellipsoid x^2/4 + y^2 + z^2 = 1
+  Ray r = make_ray({5, 5, 0}, glm::normalize(Vec3(-1, -1, 0)));
+  Hit h;
+  REQUIRE(intersect_shape(s, r, h));
+  const SurfaceInteraction si = shape_surface(s, r, h);
+  // Gradient of the implicit function at the hit: (x/2, 2y, 2z) up to scale.
+  const Vec3 p = si.position;
+  CHECK(p.x * p.x / 4 + p.y * p.y + p.z * p.z == Approx(1.0f).margin(1e-4));
+  const Vec3 expected = glm::normalize(Vec3(p.x / 4, p.y, p.z));
+  CHECK(si.geometric_normal.x == Approx(expected.x).margin(1e-5));
+  CHECK(si.geometric_normal.y == Approx(expected.y).margin(1e-5));
+  CHECK(si.front_face);
+}
