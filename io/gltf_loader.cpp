@@ -50,18 +50,15 @@ Mat4 node_matrix(const tinygltf::Node& node) {
   return m;
 }
 
-// Triangle list from a primitive's index stream in triangle, strip or fan mode.
-std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& idx, int mode) {
-  if (mode == TINYGLTF_MODE_TRIANGLES) return std::vector<uint32_t>(idx.begin(), idx.begin() + static_cast<long>(idx.size() / 3 * 3));
+// Triangle list from a primitive's index stream in triangle, strip or fan mode, in the vertex
+// order the glTF 2.0 specification gives (3.7.2.1): strip triangle k is (v_k, v_{k+1+k%2},
+// v_{k+2-k%2}), which keeps one winding; fan triangle k is (v_{k+1}, v_{k+2}, v_0).
+std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& v, int mode) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) return std::vector<uint32_t>(v.begin(), v.begin() + static_cast<long>(v.size() / 3 * 3));
   std::vector<uint32_t> out;
-  for (size_t i = 2; i < idx.size(); ++i) {
-    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-      // Every other triangle of a strip is reversed to keep one winding (glTF 2.0, 3.7.2.1).
-      if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
-      else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
-    } else {
-      out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
-    }
+  for (size_t k = 0; k + 2 < v.size(); ++k) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) out.insert(out.end(), {v[k], v[k + 1 + k % 2], v[k + 2 - k % 2]});
+    else out.insert(out.end(), {v[k + 1], v[k + 2], v[0]});
   }
   return out;
 }

@@ -49,10 +49,14 @@ class TrackingSax {
     frames_.pop_back();
     return done(dom_.end_array());
   }
+  // `position` is one past the last character read. For a syntax error that is the offending
+  // character; an overflowing number has been read whole, and `last_token` is exactly its text.
+  // (For other errors last_token also holds whitespace read before the token: not usable.)
   template <class Exception>
   bool parse_error(std::size_t position, const std::string& last_token, const Exception& ex) {
-    error_ = Error{position >= last_token.size() ? position - last_token.size() : 0, pointer(frames_.size()), ex.what(),
-                   ex.id == 406};
+    const bool overflow = ex.id == 406;
+    const size_t back = overflow ? last_token.size() : 1;
+    error_ = Error{position >= back ? position - back : 0, pointer(frames_.size()), ex.what(), overflow};
     return false;
   }
 
