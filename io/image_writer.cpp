@@ -8,7 +8,6 @@
 #include <cstring>
 #include <filesystem>
 
-#include <stb_image_write.h>
 
 namespace rt {
 
@@ -18,15 +17,15 @@ uint8_t encode_srgb8(float linear) {
   return static_cast<uint8_t>(std::lround(encoded * 255.0f));
 }
 
-std::vector<uint8_t> encode_srgb8(const Image& image) {
-  std::vector<uint8_t> bytes;
-  bytes.reserve(image.pixels.size() * 3);
+Rgb8Image encode_srgb8(const Image& image) {
+  Rgb8Image out{image.width, image.height, {}};
+  out.rgb.reserve(image.pixels.size() * 3);
   for (const Vec3& p : image.pixels) {
-    bytes.push_back(encode_srgb8(p.x));
-    bytes.push_back(encode_srgb8(p.y));
-    bytes.push_back(encode_srgb8(p.z));
+    out.rgb.push_back(encode_srgb8(p.x));
+    out.rgb.push_back(encode_srgb8(p.y));
+    out.rgb.push_back(encode_srgb8(p.z));
   }
-  return bytes;
+  return out;
 }
 
 bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error) {
@@ -56,18 +55,7 @@ bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& 
 }
 
 bool write_png(const std::string& path, const Image& image, std::string& error) {
-  const std::vector<uint8_t> rgb = encode_srgb8(image);
-  std::vector<uint8_t> png;
-  const auto append = [](void* context, void* data, int size) {
-    auto* out = static_cast<std::vector<uint8_t>*>(context);
-    const auto* bytes = static_cast<const uint8_t*>(data);
-    out->insert(out->end(), bytes, bytes + size);
-  };
-  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, rgb.data(), image.width * 3)) {
-    error = "PNG encoding failed";
-    return false;
-  }
-  return write_file_atomically(path, png, error);
+  return write_png(path, encode_srgb8(image), error);
 }
 
 }  // namespace rt

@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "core/image.h"
+#include "io/rgb8_image.h"
 
 namespace rt {
 
 uint8_t encode_srgb8(float linear);
-std::vector<uint8_t> encode_srgb8(const Image& image);  // RGB, row 0 at the top
+Rgb8Image encode_srgb8(const Image& image);
 
 bool write_png(const std::string& path, const Image& image, std::string& error);
 

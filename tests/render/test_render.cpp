@@ -1,0 +1,112 @@
+// Whole renders: determinism across threads and tiles, a golden image, every example scene.
+#include <cstdlib>
+#include <filesystem>
+
+#include <catch2/catch.hpp>
+
+#include "core/render/renderer.h"
+#include "io/image_writer.h"
+#include "io/scene_loader.h"
+#include "tests/support/test_paths.h"
+#include "tools/imagediff/image_compare.h"
+
+using namespace rt;
+
+namespace {
+
+LoadedScene load(const std::string& path) {
+  Diagnostics diags;
+  auto loaded = load_scene(path, LoadOptions{1}, diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(loaded);
+  return std::move(*loaded);
+}
+
+Rgb8Image render_rgb8(const LoadedScene& s, RenderSettings settings) {
+  Image image;
+  render(s.scene, settings, image);
+  return encode_srgb8(image);
+}
+
+}  // namespace
+
+TEST_CASE("the image is the same for any thread count and tile size", "[render][determinism]") {
+  const LoadedScene s = load(rt::test::source_path("scenes/primitives.json"));
+  RenderSettings settings = s.description.render;
+  settings.width = 160;
+  settings.height = 90;
+  settings.threads = 1;
+  const Rgb8Image reference = render_rgb8(s, settings);
+  for (const auto& [threads, tile] : {std::pair{2u, 32}, std::pair{3u, 7}, std::pair{2u, 1}}) {
+    settings.threads = threads;
+    settings.tile_size = tile;
+    INFO("threads " << threads << ", tile " << tile);
+    CHECK(render_rgb8(s, settings).rgb == reference.rgb);
+  }
+}
+
+TEST_CASE("render statistics count camera and shadow rays", "[render]") {
+  const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
+  RenderSettings settings = s.description.render;
+  Image image;
+  int progress_calls = 0;
+  const RenderStats stats = render(s.scene, settings, image, [&](const RenderProgress& p) {
+    ++progress_calls;
+    CHECK(p.pixels_done <= p.pixels_total);
+  });
+  CHECK(stats.rays.camera == 96u * 64u * 4u);  // 2 x 2 samples per pixel
+  CHECK(stats.rays.shadow > 0);
+  CHECK(stats.rays.shadow <= stats.rays.camera);  // one light
+  CHECK(progress_calls >= 1);
+  CHECK(image.width == 96);
+}
+
+// Golden image. Tolerance: every channel within 2 levels (of 255) of the reference for all but
+// 0.5 % of the pixels, and a mean channel difference under 0.25 levels. The renderer is
+// deterministic, so on one build the match is exact; the tolerance absorbs libm differences
+// between platforms (sin, pow) that move a few edge pixels by a level. On failure the actual
+// image and an 8x amplified difference image are written next to the test binary's output.
+// RTCLI_UPDATE_GOLDEN=1 rewrites the reference instead (look at it before committing it).
+TEST_CASE("golden image: tiny scene with every shape and a glTF mesh", "[render][golden]") {
+  const std::string golden = rt::test::source_path("tests/golden/tiny.png");
+  const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
+  const Rgb8Image actual = render_rgb8(s, s.description.render);
+  std::string error;
+  if (std::getenv("RTCLI_UPDATE_GOLDEN")) {
+    REQUIRE(write_png(golden, actual, error));
+    WARN("golden image rewritten: " << golden);
+    return;
+  }
+  const auto expected = read_rgb8(golden, error);
+  REQUIRE(expected);
+  const ImageDifference d = compare_images(actual, *expected, 2);
+  const size_t pixels = static_cast<size_t>(actual.width) * static_cast<size_t>(actual.height);
+  const bool ok = d.same_size && d.pixels_over * 200 <= pixels && d.mean_channel < 0.25;
+  if (!ok) {
+    const std::string actual_path = rt::test::output_path("tiny.actual.png");
+    const std::string diff_path = rt::test::output_path("tiny.diff.png");
+    write_png(actual_path, actual, error);
+    if (d.same_size) write_png(diff_path, difference_image(actual, *expected), error);
+    FAIL("golden mismatch: max " << d.max_channel << " levels, mean " << d.mean_channel << ", " << d.pixels_over
+                                 << " pixels over 2 levels; see " << actual_path << " and " << diff_path);
+  }
+  CHECK(d.max_channel <= 255);
+}
+
+TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path("scenes"))) {
+    if (entry.path().extension() != ".json") continue;
+    INFO(entry.path().string());
+    const LoadedScene s = load(entry.path().string());
+    RenderSettings settings = s.description.render;
+    settings.width = 48;
+    settings.height = 27;
+    const Rgb8Image image = render_rgb8(s, settings);
+    // Not a blank image: something was hit and lit.
+    const auto [lo, hi] = std::minmax_element(image.rgb.begin(), image.rgb.end());
+    CHECK(*hi - *lo > 50);
+    ++scenes;
+  }
+  CHECK(scenes >= 2);
+}

@@ -1,0 +1,36 @@
+#include "tools/imagediff/image_compare.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace rt {
+
+ImageDifference compare_images(const Rgb8Image& a, const Rgb8Image& b, int threshold) {
+  ImageDifference d;
+  if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size()) {
+    d.same_size = false;
+    return d;
+  }
+  long long sum = 0;
+  for (size_t i = 0; i < a.rgb.size(); i += 3) {
+    int pixel_max = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const int diff = std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c]));
+      pixel_max = std::max(pixel_max, diff);
+      sum += diff;
+    }
+    d.max_channel = std::max(d.max_channel, pixel_max);
+    d.pixels_over += pixel_max > threshold;
+  }
+  d.mean_channel = a.rgb.empty() ? 0.0 : static_cast<double>(sum) / static_cast<double>(a.rgb.size());
+  return d;
+}
+
+Rgb8Image difference_image(const Rgb8Image& a, const Rgb8Image& b) {
+  Rgb8Image out{a.width, a.height, std::vector<uint8_t>(a.rgb.size(), 0)};
+  for (size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
+    out.rgb[i] = static_cast<uint8_t>(std::min(255, 8 * std::abs(int(a.rgb[i]) - int(b.rgb[i]))));
+  return out;
+}
+
+}  // namespace rt
