@@ -1,0 +1,133 @@
+// The rtcli binary as a user runs it: exit codes, messages, files written and files left alone.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include <catch2/catch.hpp>
+
+#include "tests/support/test_paths.h"
+
+namespace fs = std::filesystem;
+using rt::test::output_path;
+using rt::test::read_file;
+using rt::test::source_path;
+using rt::test::write_file;
+
+namespace {
+
+struct Run {
+  int code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs rtcli with `args` (shell syntax) from `cwd`.
+Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_DIR) {
+  const std::string command = "cd '" + cwd + "' && '" + RTCLI_BINARY + "' " + args + " 2>&1";
+  Run run;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string small(const std::string& extra = "") { return "--width 40 --height 24 " + extra; }
+
+}  // namespace
+
+TEST_CASE("cli: --version, --help, render --help", "[cli]") {
+  Run r = rtcli("--version");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::StartsWith("rtcli 0."));
+  r = rtcli("--help");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("render") && Catch::Contains("bench"));
+  r = rtcli("render --help");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("--threads") && Catch::Contains("--seed") && Catch::Contains("--quiet"));
+}
+
+TEST_CASE("cli: bad usage exits 2 with a message", "[cli]") {
+  for (const char* args : {"", "render", "frobnicate", "render scenes/default.json --bogus", "render scenes/default.json --threads 0",
+                           "render scenes/default.json --width -5", "render scenes/default.json --seed banana"}) {
+    INFO(args);
+    const Run r = rtcli(args);
+    CHECK(r.code == 2);
+    CHECK_FALSE(r.output.empty());
+  }
+}
+
+TEST_CASE("cli: render writes the PNG, prints a summary and where it wrote", "[cli]") {
+  const std::string out = output_path("cli-default.png");
+  fs::remove(out);
+  const Run r = rtcli("render scenes/default.json -o '" + out + "' " + small("--threads 2"));
+  REQUIRE(r.code == 0);
+  CHECK(fs::file_size(out) > 100);
+  CHECK_THAT(r.output, Catch::Contains("40x24") && Catch::Contains("Mrays/s") && Catch::Contains("2 threads") &&
+                           Catch::Contains("wrote " + out));
+  CHECK(read_file(out).substr(1, 3) == "PNG");
+}
+
+TEST_CASE("cli: without -o the image is named after the scene, in the current folder", "[cli]") {
+  const std::string folder = output_path("cwd-test");
+  fs::create_directories(folder);
+  fs::remove(folder + "/primitives.png");
+  const Run r = rtcli("render '" + source_path("scenes/primitives.json") + "' " + small("--quiet"), folder);
+  REQUIRE(r.code == 0);
+  CHECK(r.output.empty());  // --quiet
+  CHECK(fs::exists(folder + "/primitives.png"));
+}
+
+TEST_CASE("cli: a glTF model renders directly", "[cli]") {
+  const Run r = rtcli("render scenes/models/knot.glb -o '" + output_path("knot.png") + "' " + small());
+  CHECK(r.code == 0);
+}
+
+TEST_CASE("cli: 1 thread and 2 threads give byte-identical PNG files", "[cli][determinism]") {
+  const std::string a = output_path("threads1.png"), b = output_path("threads2.png");
+  REQUIRE(rtcli("render scenes/primitives.json -q --width 120 --height 70 --threads 1 -o '" + a + "'").code == 0);
+  REQUIRE(rtcli("render scenes/primitives.json -q --width 120 --height 70 --threads 2 -o '" + b + "'").code == 0);
+  CHECK(read_file(a) == read_file(b));
+}
+
+TEST_CASE("cli: bad scenes exit 2 and leave an existing output untouched", "[cli][errors]") {
+  // A folder of its own: other tests may be writing temporary files next to theirs meanwhile.
+  fs::create_directories(output_path("untouched"));
+  const std::string out = output_path("untouched/precious.png");
+  write_file("untouched/precious.png", "the good image from yesterday");
+  const std::string bad = write_file("bad-material.json", R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "materials": {"red": {"kd": [1, 0, 0]}},
+  "nodes": [{"shape": "sphere", "material": "blue"}]
+})");
+  const Run r = rtcli("render '" + bad + "' -o '" + out + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("bad-material.json:4:45: error: /nodes/0/material: expected the name of a material"));
+  CHECK(read_file(out) == "the good image from yesterday");
+  for (const auto& entry : fs::directory_iterator(output_path("untouched")))
+    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);  // no temporary left behind
+
+  const Run missing = rtcli("render no-such-scene.json -o '" + out + "'");
+  CHECK(missing.code == 2);
+  CHECK_THAT(missing.output, Catch::Contains("no-such-scene.json: error: file not found"));
+  CHECK(read_file(out) == "the good image from yesterday");
+}
+
+TEST_CASE("cli: an output that cannot be written is refused before rendering", "[cli][errors]") {
+  Run r = rtcli("render scenes/default.json -o /no/such/folder/x.png");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("does not exist"));
+  r = rtcli("render scenes/default.json -o '" + output_path("image.jpg") + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains(".png"));
+}
+
+TEST_CASE("cli: bench runs on a small model", "[cli][bench]") {
+  const Run r = rtcli("bench scenes/models/gem.gltf --scene scenes/default.json");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("BVH build") && Catch::Contains("incoherent rays") && Catch::Contains("shadow rays") &&
+                           Catch::Contains("render default.json"));
+}

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages rtcli needs, if any are missing: with apt-get as root, through
+# sudo otherwise. If neither works it lists the packages to install and fails.
+set -euo pipefail
+
+packages=(g++ cmake ninja-build pkg-config
+          libtinygltf-dev nlohmann-json3-dev libglm-dev libstb-dev libcli11-dev
+          catch2 libvalijson-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "rtcli: installing missing packages: ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+  run=()
+elif command -v sudo >/dev/null 2>&1; then
+  run=(sudo)
+else
+  echo "rtcli: error: not root and no sudo; please install as root: apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+if ! { "${run[@]}" apt-get update -qq &&
+       DEBIAN_FRONTEND=noninteractive "${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"; }; then
+  echo "rtcli: error: could not install the packages; please run: sudo apt-get install ${missing[*]}" >&2
+  exit 1
+fi
