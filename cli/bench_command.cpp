@@ -15,11 +15,14 @@ namespace {
 
 constexpr size_t kGeneratedTriangles = 300'000;
 
+// Best of three renders.
 double render_seconds(const LoadedScene& loaded, unsigned threads) {
   RenderSettings settings = loaded.description.render;
   settings.threads = threads;
   Image image;
-  return render(loaded.scene, settings, image).seconds;
+  double best = kInfinity;
+  for (int repeat = 0; repeat < 3; ++repeat) best = std::min(best, render(loaded.scene, settings, image).seconds);
+  return best;
 }
 
 }  // namespace

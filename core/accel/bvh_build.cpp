@@ -6,6 +6,7 @@
 //    the tree is identical whatever the thread count.
 // 2. A collapse to 4-wide nodes: a node adopts its children, then repeatedly replaces the
 //    interior child with the largest surface area by that child's two children.
+#include <atomic>
 #include <cstring>
 #include <thread>
 
@@ -99,9 +100,13 @@ struct Split {
 
 class BinaryBuilder {
  public:
-  explicit BinaryBuilder(std::vector<BuildPrim>& prims) : prims_(prims) {}
+  // `spare_threads`: how many more threads may run at once. A large node hands its left subtree
+  // to a new thread while one is spare, and the thread is spare again when that subtree is done,
+  // so work moves to wherever it remains. Every handed-off subtree is built into its own array
+  // and spliced back in place, which gives exactly the array a single thread would write.
+  BinaryBuilder(std::vector<BuildPrim>& prims, unsigned spare_threads) : prims_(prims), spare_threads_(spare_threads) {}
 
-  void build(const Range& range, int depth, unsigned threads, std::vector<BinaryNode>& out) const {
+  void build(const Range& range, int depth, std::vector<BinaryNode>& out) {
     const auto index = static_cast<uint32_t>(out.size());
     out.push_back(BinaryNode{range.bounds.aabb(), range.begin, 0});
     const uint32_t n = range.count();
@@ -115,19 +120,22 @@ class BinaryBuilder {
     Range left, right;
     if (split.axis >= 0) partition(range, split, left, right);
     else median_split(range, left, right);
-    if (threads > 1 && n >= kParallelMinPrims) {
+    if (n >= kParallelMinPrims && take_spare_thread()) {
       std::vector<BinaryNode> left_nodes, right_nodes;
       {
-        std::jthread worker([&] { build(left, depth + 1, threads / 2, left_nodes); });
-        build(right, depth + 1, threads - threads / 2, right_nodes);
+        std::jthread worker([&] {
+          build(left, depth + 1, left_nodes);
+          ++spare_threads_;
+        });
+        build(right, depth + 1, right_nodes);
       }
       splice(out, left_nodes);
       out[index].offset = static_cast<uint32_t>(out.size());
       splice(out, right_nodes);
     } else {
-      build(left, depth + 1, threads, out);
+      build(left, depth + 1, out);
       out[index].offset = static_cast<uint32_t>(out.size());
-      build(right, depth + 1, threads, out);
+      build(right, depth + 1, out);
     }
   }
 
@@ -222,7 +230,15 @@ class BinaryBuilder {
     }
   }
 
+  bool take_spare_thread() {
+    unsigned spare = spare_threads_.load();
+    while (spare > 0)
+      if (spare_threads_.compare_exchange_weak(spare, spare - 1)) return true;
+    return false;
+  }
+
   std::vector<BuildPrim>& prims_;
+  std::atomic<unsigned> spare_threads_;
 };
 
 double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
@@ -294,7 +310,7 @@ Bvh::Bvh(PrimitiveSet prims, const BvhBuildOptions& options) : prims_(std::move(
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n) / 3 + 1);
-  BinaryBuilder(build_prims).build(root, 0, std::max(1u, options.threads), binary);
+  BinaryBuilder(build_prims, std::max(1u, options.threads) - 1).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary);
   nodes_.reserve(binary.size() / 3 + 1);

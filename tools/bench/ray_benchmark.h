@@ -20,7 +20,8 @@ struct RayBenchmarkResult {
   double sah_cost = 0.0;
 };
 
-// Builds a BVH over `prims` with `threads` threads, then traces with as many threads:
+// Builds a BVH over `prims` with `threads` threads, then traces with as many threads (every
+// figure is the best of three runs):
 //  primary    - a pinhole camera framing the bounds at 1920x1080, one ray per pixel;
 //  incoherent - 2M rays from uniform points in the bounds in uniform random directions;
 //  shadow     - from every primary hit towards a point light above the model, any-hit.
