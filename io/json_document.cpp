@@ -28,6 +28,7 @@ class TrackingSax {
   bool string(std::string& v) { return done(dom_.string(v)); }
   bool binary(Json::binary_t& v) { return done(dom_.binary(v)); }
   bool start_object(std::size_t n) {
+    if (too_deep()) return false;
     frames_.push_back(Frame{true, 0, {}, {}});
     return dom_.start_object(n);
   }
@@ -42,6 +43,7 @@ class TrackingSax {
     return done(dom_.end_object());
   }
   bool start_array(std::size_t n) {
+    if (too_deep()) return false;
     frames_.push_back(Frame{false, 0, {}, {}});
     return dom_.start_array(n);
   }
@@ -67,6 +69,8 @@ class TrackingSax {
     bool overflow = false;  // a number too large for a double
   };
   const std::optional<Error>& error() const { return error_; }
+  bool nesting_exceeded() const { return nesting_exceeded_; }
+  static constexpr size_t kMaxNesting = 512;
   const std::vector<std::string>& duplicates() const { return duplicates_; }
 
  private:
@@ -76,6 +80,14 @@ class TrackingSax {
     std::string key;  // objects: key of the member being parsed
     std::set<std::string> keys;
   };
+
+  // Scenes are a few levels deep; refusing absurd nesting keeps every later recursive walk of
+  // the tree (error location, destruction) far from the stack limit.
+  bool too_deep() {
+    if (frames_.size() < kMaxNesting) return false;
+    nesting_exceeded_ = true;
+    return true;
+  }
 
   bool done(bool ok) {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
@@ -92,6 +104,7 @@ class TrackingSax {
   std::vector<Frame> frames_;
   std::optional<Error> error_;
   std::vector<std::string> duplicates_;
+  bool nesting_exceeded_ = false;
 };
 
 // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 3, column 8: ";
@@ -155,6 +168,11 @@ std::optional<JsonDocument> parse_json_text(std::string path, std::string text, 
   JsonDocument doc{std::move(path), std::move(text), Json()};
   TrackingSax sax(doc.root);
   const bool ok = Json::sax_parse(doc.text, &sax, Json::input_format_t::json, true, false);
+  if (sax.nesting_exceeded()) {
+    diags.file_error(doc.path, "expected JSON nested at most " + std::to_string(TrackingSax::kMaxNesting) +
+                                   " levels deep, found deeper nesting");
+    return std::nullopt;
+  }
   if (!ok || sax.error()) {
     if (!sax.error()) {
       diags.file_error(doc.path, "invalid JSON");

@@ -231,6 +231,13 @@ TEST_CASE("every error in a file is reported, not just the first", "[io][errors]
   CHECK(a.diags.error_count() == 3);
 }
 
+TEST_CASE("absurdly deep nesting is refused, not a stack overflow", "[io][errors]") {
+  const std::string deep = "{\"nodes\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const Attempt a = load_text("deep.json", deep);
+  REQUIRE_FALSE(a.loaded);
+  CHECK_THAT(a.first().message, Catch::Contains("nested at most 512 levels"));
+}
+
 TEST_CASE("minified files get a windowed excerpt around the error", "[io][errors]") {
   Json j = valid_scene();
   j["camera"]["fov"] = "wide";
