@@ -137,15 +137,19 @@ std::optional<double> read_number(const JsonReader& r, const Json& v, const std:
   return v.get<double>();
 }
 
-std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::string& ptr) {
+namespace {
+
+// An array of exactly three numbers, each checked against `rule` at its own pointer.
+std::optional<Vec3> read_number3(const JsonReader& r, const Json& v, const std::string& ptr, std::string_view expected,
+                                 const NumberRule& rule) {
   if (!v.is_array() || v.size() != 3) {
-    r.expected(ptr, kVec3Expected, v);
+    r.expected(ptr, expected, v);
     return std::nullopt;
   }
   Vec3 out;
   bool ok = true;
   for (size_t i = 0; i < 3; ++i) {
-    const auto c = read_number(r, v[i], pointer_child(ptr, i), kAnyNumber);
+    const auto c = read_number(r, v[i], pointer_child(ptr, i), rule);
     ok = ok && c.has_value();
     if (c) out[static_cast<int>(i)] = static_cast<float>(*c);
   }
@@ -156,23 +160,18 @@ std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::str
   return ok ? std::optional<Vec3>(out) : std::nullopt;
 }
 
+}  // namespace
+
+std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::string& ptr) {
+  return read_number3(r, v, ptr, kVec3Expected, kAnyNumber);
+}
+
 std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::string& ptr) {
   if (v.is_number()) {
     const auto grey = read_number(r, v, ptr, kNonNegative);
     return grey ? std::optional<Vec3>(Vec3(static_cast<float>(*grey))) : std::nullopt;
   }
-  if (!v.is_array() || v.size() != 3) {
-    r.expected(ptr, kColourExpected, v);
-    return std::nullopt;
-  }
-  Vec3 out;
-  bool ok = true;
-  for (size_t i = 0; i < 3; ++i) {
-    const auto c = read_number(r, v[i], pointer_child(ptr, i), kNonNegative);
-    ok = ok && c.has_value();
-    if (c) out[static_cast<int>(i)] = static_cast<float>(*c);
-  }
-  return ok ? std::optional<Vec3>(out) : std::nullopt;
+  return read_number3(r, v, ptr, kColourExpected, kNonNegative);
 }
 
 std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr) {

@@ -9,21 +9,13 @@ bool intersect_cone(const Ray& ray, Hit& hit) {
   const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
   const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
   double best = HUGE_VAL;
-  uint32_t part = 0;
+  uint32_t part = kConeSide;
   double t0, t1;
   // a == 0 when the ray runs parallel to a line of the cone; solve_quadratic then solves the
-  // remaining linear equation.
+  // remaining linear equation. Roots below z = 0 belong to the mirrored nappe: rejected.
   const double a = dx * dx + dy * dy - dz * dz;
-  if (solve_quadratic(a, 2.0 * (ox * dx + oy * dy - oz * dz), ox * ox + oy * oy - oz * oz, t0, t1)) {
-    for (const double t : {t0, t1}) {
-      const double z = oz + t * dz;
-      if (t > ray.tmin && t < ray.tmax && z >= 0.0 && z <= 1.0) {
-        best = t;
-        part = kConeSide;
-        break;
-      }
-    }
-  }
+  if (solve_quadratic(a, 2.0 * (ox * dx + oy * dy - oz * dz), ox * ox + oy * oy - oz * oz, t0, t1))
+    side_root_in_height(ray, t0, t1, best);
   double tc;
   if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kConeBase; }
   if (best == HUGE_VAL) return false;

@@ -14,23 +14,26 @@ bool intersect_unit_disc(const Ray& ray, float z_cap, double& t) {
   return x * x + y * y <= 1.0;
 }
 
-bool intersect_cylinder(const Ray& ray, Hit& hit) {
-  const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
-  const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-  double best = HUGE_VAL;
-  uint32_t part = 0;
-  double t0, t1;
-  const double a = dx * dx + dy * dy;  // 0 when the ray is parallel to the axis: no side hit
-  if (a > 0.0 && solve_quadratic(a, 2.0 * (ox * dx + oy * dy), ox * ox + oy * oy - 1.0, t0, t1)) {
-    for (const double t : {t0, t1}) {
-      const double z = oz + t * dz;
-      if (t > ray.tmin && t < ray.tmax && z >= 0.0 && z <= 1.0) {
-        best = t;
-        part = kCylinderSide;
-        break;
-      }
+bool side_root_in_height(const Ray& ray, double t0, double t1, double& t) {
+  for (const double root : {t0, t1}) {
+    const double z = ray.origin.z + root * ray.direction.z;
+    if (root > ray.tmin && root < ray.tmax && z >= 0.0 && z <= 1.0) {
+      t = root;
+      return true;
     }
   }
+  return false;
+}
+
+bool intersect_cylinder(const Ray& ray, Hit& hit) {
+  const double ox = ray.origin.x, oy = ray.origin.y;
+  const double dx = ray.direction.x, dy = ray.direction.y;
+  double best = HUGE_VAL;
+  uint32_t part = kCylinderSide;
+  double t0, t1;
+  const double a = dx * dx + dy * dy;  // 0 when the ray is parallel to the axis: no side hit
+  if (a > 0.0 && solve_quadratic(a, 2.0 * (ox * dx + oy * dy), ox * ox + oy * oy - 1.0, t0, t1))
+    side_root_in_height(ray, t0, t1, best);
   double tc;
   if (intersect_unit_disc(ray, 0.0f, tc) && tc < best) { best = tc; part = kCylinderBase; }
   if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kCylinderTop; }

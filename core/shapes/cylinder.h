@@ -17,6 +17,9 @@ SurfacePatch cylinder_patch(Vec3 p, uint32_t part);
 
 // Shared with the cone: the disc x^2 + y^2 <= 1 in the plane z = z_cap.
 bool intersect_unit_disc(const Ray& ray, float z_cap, double& t);
+// Shared with the cone: the nearer of the quadric roots t0 <= t1 that lies inside the ray's
+// interval and between z = 0 and z = 1, where the side exists.
+bool side_root_in_height(const Ray& ray, double t0, double t1, double& t);
 SurfacePatch cap_patch(Vec3 p, bool top);
 
 }  // namespace rt

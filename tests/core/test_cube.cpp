@@ -1,17 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/shapes/cube.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
-namespace {
-Ray make_ray(Vec3 o, Vec3 d) {
-  Ray r;
-  r.origin = o;
-  r.direction = d;
-  return r;
-}
-}  // namespace
 
 TEST_CASE("cube: each face from outside, with its outward normal and face id", "[shapes][cube]") {
   const Vec3 dirs[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};

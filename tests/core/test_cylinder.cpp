@@ -1,23 +1,14 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/cylinder.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
-namespace {
-Ray make_ray(Vec3 o, Vec3 d) {
-  Ray r;
-  r.origin = o;
-  r.direction = d;
-  return r;
-}
-void check_vec(Vec3 a, Vec3 b) {
-  CHECK(a.x == Approx(b.x).margin(1e-5));
-  CHECK(a.y == Approx(b.y).margin(1e-5));
-  CHECK(a.z == Approx(b.z).margin(1e-5));
-}
-}  // namespace
 
 TEST_CASE("cylinder: through a cap only (along the axis, inside the radius)", "[shapes][cylinder]") {
   Hit h;

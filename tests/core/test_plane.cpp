@@ -1,17 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/shapes/plane.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
-namespace {
-Ray make_ray(Vec3 o, Vec3 d) {
-  Ray r;
-  r.origin = o;
-  r.direction = d;
-  return r;
-}
-}  // namespace
 
 TEST_CASE("plane: hit from above and from below, normal +Y", "[shapes][plane]") {
   Hit h;

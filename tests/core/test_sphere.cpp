@@ -1,18 +1,14 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/sphere.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
-namespace {
-Ray make_ray(Vec3 o, Vec3 d) {
-  Ray r;
-  r.origin = o;
-  r.direction = d;
-  return r;
-}
-}  // namespace
 
 TEST_CASE("sphere: hit from outside gives the near root and outward normal", "[shapes][sphere]") {
   Hit h;

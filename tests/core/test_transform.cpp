@@ -1,17 +1,14 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/camera.h"
 #include "core/transform.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
-namespace {
-void check_vec(Vec3 a, Vec3 b) {
-  CHECK(a.x == Approx(b.x).margin(1e-5));
-  CHECK(a.y == Approx(b.y).margin(1e-5));
-  CHECK(a.z == Approx(b.z).margin(1e-5));
-}
-}  // namespace
 
 TEST_CASE("compose_trs: scale, then rotate X, Y, Z, then translate", "[transform]") {
   const Mat4 m = compose_trs({10, 0, 0}, {90, 0, 0}, {2, 1, 1});

@@ -1,17 +1,15 @@
 #include <catch2/catch.hpp>
 
+#include "tests/support/geometry.h"
+
 #include "core/mesh.h"
 #include "core/shapes/triangle.h"
 
 using namespace rt;
+using rt::test::check_vec;
+using rt::test::make_ray;
 
 namespace {
-Ray make_ray(Vec3 o, Vec3 d) {
-  Ray r;
-  r.origin = o;
-  r.direction = d;
-  return r;
-}
 const PackedTriangle kTri = PackedTriangle::from_vertices({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
 }  // namespace
 
