@@ -31,17 +31,14 @@ int run_bench(const BenchCommand& cmd) {
   PrimitiveSet prims;
   std::string what;
   if (cmd.model.empty()) {
-    const TriangleMesh mesh = make_benchmark_mesh(kGeneratedTriangles);
-    for (size_t i = 0; i < mesh.indices.size(); i += 3)
-      prims.triangles.push_back(PackedTriangle::from_vertices(mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
-                                                             mesh.positions[mesh.indices[i + 2]]));
+    prims = make_primitive_set({make_benchmark_mesh(kGeneratedTriangles)}, {});
     what = "generated displaced sphere";
   } else {
     Diagnostics diags;
     const auto loaded = load_scene(cmd.model, LoadOptions{}, diags);
     print_diagnostics(stderr, diags);
     if (!loaded) return kExitBadInput;
-    prims = loaded->scene.bvh.primitives();
+    prims = make_primitive_set(loaded->scene.meshes, loaded->scene.bvh.shapes());
     what = cmd.model;
   }
   const unsigned all = resolve_thread_count(0);

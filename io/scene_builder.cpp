@@ -39,19 +39,13 @@ class Builder {
     scene.ambient = desc_.ambient;
     scene.lights = desc_.lights;
     scene.materials = std::move(materials_);
-    PrimitiveSet prims;
-    size_t triangles = 0;
-    for (const TriangleMesh& m : meshes_) triangles += m.triangle_count();
-    prims.triangles.reserve(triangles);
+    uint32_t first = 0;
     for (const TriangleMesh& m : meshes_) {
-      scene.mesh_first_triangle.push_back(static_cast<uint32_t>(prims.triangles.size()));
-      for (size_t i = 0; i < m.indices.size(); i += 3)
-        prims.triangles.push_back(
-            PackedTriangle::from_vertices(m.positions[m.indices[i]], m.positions[m.indices[i + 1]], m.positions[m.indices[i + 2]]));
+      scene.mesh_first_triangle.push_back(first);
+      first += static_cast<uint32_t>(m.triangle_count());
     }
-    prims.shapes = std::move(shapes_);
+    scene.bvh = Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options.threads)});
     scene.meshes = std::move(meshes_);
-    scene.bvh = Bvh(std::move(prims), BvhBuildOptions{resolve_thread_count(options.threads)});
     return scene;
   }
 

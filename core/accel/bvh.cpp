@@ -57,9 +57,8 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
 
 template <bool kAnyHit>
 bool Bvh::traverse(Ray& ray, Hit& hit) const {
-  if (prims_.size() == 0) return false;
+  if (primitive_count() == 0) return false;
   const RaySlabs slabs(ray);
-  const auto triangle_count = static_cast<uint32_t>(prims_.triangles.size());
   StackEntry stack[kStackSize];
   int top = 0;
   stack[top++] = StackEntry{root_, ray.tmin};
@@ -104,8 +103,8 @@ bool Bvh::traverse(Ray& ray, Hit& hit) const {
     if (!BvhRef::is_leaf(ref)) continue;  // the node's children were all missed
     for (uint32_t slot = BvhRef::first(ref), end = slot + BvhRef::count(ref); slot < end; ++slot) {
       const uint32_t id = order_[slot];
-      const bool hit_now = id < triangle_count ? intersect_triangle(slot_triangles_[slot], ray, hit)
-                                               : intersect_shape(prims_.shape(id), ray, hit);
+      const bool hit_now = id < triangle_count_ ? intersect_triangle(slot_triangles_[slot], ray, hit)
+                                                : intersect_shape(shape(id), ray, hit);
       if (hit_now) {
         if constexpr (kAnyHit) return true;
         hit.prim = id;

@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/accel/huge_page_allocator.h"
 #include "core/accel/primitives.h"
 
 namespace rt {
@@ -51,15 +50,20 @@ struct BvhStats {
 class Bvh {
  public:
   Bvh() = default;
-  Bvh(PrimitiveSet prims, const BvhBuildOptions& options);
+  Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options);
 
   // Closest hit in (ray.tmin, ray.tmax); narrows ray.tmax to it.
   bool intersect(Ray& ray, Hit& hit) const;
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const;
 
-  const PrimitiveSet& primitives() const { return prims_; }
-  const std::vector<BvhNode4, HugePageAllocator<BvhNode4>>& nodes() const { return nodes_; }
+  // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
+  // BVH holds its own copy in leaf order).
+  uint32_t primitive_count() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
+  bool is_triangle(uint32_t id) const { return id < triangle_count_; }
+  const AnalyticShape& shape(uint32_t id) const { return shapes_[id - triangle_count_]; }
+  const std::vector<AnalyticShape>& shapes() const { return shapes_; }
+  const std::vector<BvhNode4>& nodes() const { return nodes_; }
   uint32_t root() const { return root_; }
   Aabb bounds() const { return bounds_; }
   BvhStats stats() const;
@@ -71,13 +75,14 @@ class Bvh {
   template <bool kAnyHit>
   bool traverse(Ray& ray, Hit& hit) const;
 
-  PrimitiveSet prims_;
-  std::vector<BvhNode4, HugePageAllocator<BvhNode4>> nodes_;
+  uint32_t triangle_count_ = 0;
+  std::vector<AnalyticShape> shapes_;
+  std::vector<BvhNode4> nodes_;
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;
-  std::vector<uint32_t, HugePageAllocator<uint32_t>> order_;  // slot -> primitive id
-  std::vector<PackedTriangle, HugePageAllocator<PackedTriangle>> slot_triangles_;  // slot -> triangle copy, so leaves read memory in order
+  std::vector<uint32_t> order_;                 // slot -> primitive id
+  std::vector<PackedTriangle> slot_triangles_;  // slot -> triangle copy, so leaves read memory in order  // slot -> triangle copy, so leaves read memory in order
 };
 
 }  // namespace rt

@@ -293,14 +293,15 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
 
 }  // namespace
 
-Bvh::Bvh(PrimitiveSet prims, const BvhBuildOptions& options) : prims_(std::move(prims)) {
-  const uint32_t n = prims_.size();
+Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
+    : triangle_count_(static_cast<uint32_t>(prims.triangles.size())), shapes_(prims.shapes) {
+  const uint32_t n = prims.size();
   if (n == 0) return;
   if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");
   std::vector<BuildPrim> build_prims(n);
   Range root{0, n, {}, {}};
   for (uint32_t id = 0; id < n; ++id) {
-    const Aabb box = prims_.bounds(id);
+    const Aabb box = prims.bounds(id);
     BuildPrim& p = build_prims[id];
     p.lo = Float4{box.lo.x, box.lo.y, box.lo.z, 0.0f};
     std::memcpy(reinterpret_cast<char*>(&p.lo) + 12, &id, 4);
@@ -320,14 +321,14 @@ Bvh::Bvh(PrimitiveSet prims, const BvhBuildOptions& options) : prims_(std::move(
   for (uint32_t slot = 0; slot < n; ++slot) order_[slot] = build_prims[slot].id();
   slot_triangles_.resize(n);
   for (uint32_t slot = 0; slot < n; ++slot)
-    if (prims_.is_triangle(order_[slot])) slot_triangles_[slot] = prims_.triangles[order_[slot]];
+    if (prims.is_triangle(order_[slot])) slot_triangles_[slot] = prims.triangles[order_[slot]];
 }
 
 BvhStats Bvh::stats() const {
   BvhStats s;
   s.nodes = nodes_.size();
   s.sah_cost = binary_sah_cost_;
-  if (prims_.size() == 0) return s;
+  if (primitive_count() == 0) return s;
   struct Item { uint32_t ref; int depth; };
   std::vector<Item> stack{{root_, 0}};
   while (!stack.empty()) {

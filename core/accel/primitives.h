@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/mesh.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/triangle.h"
 
@@ -19,6 +20,9 @@ struct PrimitiveSet {
   const AnalyticShape& shape(uint32_t id) const { return shapes[id - triangles.size()]; }
   Aabb bounds(uint32_t id) const { return is_triangle(id) ? triangles[id].bounds() : world_bounds(shape(id)); }
 };
+
+// Every triangle of the meshes (mesh by mesh, in index order), then the shapes.
+PrimitiveSet make_primitive_set(const std::vector<TriangleMesh>& meshes, std::vector<AnalyticShape> shapes);
 
 // Intersects primitive `id`; on a hit inside the ray's interval, fills `hit` and narrows ray.tmax.
 inline bool intersect_primitive(const PrimitiveSet& prims, uint32_t id, Ray& ray, Hit& hit) {

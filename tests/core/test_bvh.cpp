@@ -49,7 +49,7 @@ TEST_CASE("BVH closest hits equal brute force on thousands of random rays", "[bv
   const PrimitiveSet prims = random_scene(42);
   for (unsigned threads : {1u, 2u}) {
     const Bvh bvh(prims, BvhBuildOptions{threads});
-    const BruteForce brute(bvh.primitives());
+    const BruteForce brute(prims);
     Rng rng(7);
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -74,7 +74,7 @@ TEST_CASE("BVH closest hits equal brute force on thousands of random rays", "[bv
 TEST_CASE("BVH occlusion equals brute force, with finite segments", "[bvh]") {
   const PrimitiveSet prims = random_scene(5);
   const Bvh bvh(prims, BvhBuildOptions{1});
-  const BruteForce brute(bvh.primitives());
+  const BruteForce brute(prims);
   Rng rng(11);
   int blocked = 0;
   for (int i = 0; i < 20000; ++i) {

@@ -54,7 +54,7 @@ Scene small_scene() {
     s.transform = *make_transform(compose_trs({static_cast<float>(k) - 2.0f, -1, 0}, {10, 20, 30}, {0.5f, 0.7f, 0.4f}));
     prims.shapes.push_back(s);
   }
-  scene.bvh = Bvh(std::move(prims), {});
+  scene.bvh = Bvh(prims, {});
   return scene;
 }
 
