@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rt {
@@ -23,9 +24,13 @@ struct Diagnostic {
 // "file:line:column: error: /pointer: message" — the one line a user reads first.
 std::string format_diagnostic(const Diagnostic& d);
 
+// Text safe to print on a terminal: control characters (but tab and newline) and bytes that are
+// not valid UTF-8 become '?'. Messages quote user files, which may be anything.
+std::string printable(std::string_view text);
+
 class Diagnostics {
  public:
-  void add(Diagnostic d) { items_.push_back(std::move(d)); }
+  void add(Diagnostic d);
   // For problems with no position inside a file (the file is missing, unreadable, ...).
   void file_error(const std::string& file, std::string message) {
     add(Diagnostic{Severity::kError, file, 0, 0, "", std::move(message), ""});

@@ -10,6 +10,7 @@
 #include <tiny_gltf.h>
 
 #include "io/gltf_accessor.h"
+#include "io/json_document.h"
 #include "io/pbr_to_phong.h"
 
 namespace rt {
@@ -156,7 +157,7 @@ std::optional<ImportedModel> import_gltf(const std::string& path, const std::opt
   const bool ok = is_binary_gltf(path) ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
                                        : loader.LoadASCIIFromFile(&model, &err, &warn, path);
   if (!ok) {
-    error = trim(err.empty() ? "not a readable glTF file" : err);
+    error = err.empty() ? "not a readable glTF file" : clean_parser_message(trim(err));
     return std::nullopt;
   }
   ImportedModel out;

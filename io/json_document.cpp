@@ -107,6 +107,8 @@ class TrackingSax {
   bool nesting_exceeded_ = false;
 };
 
+}  // namespace
+
 // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 3, column 8: ";
 // we print our own position, so keep only what follows.
 std::string clean_parser_message(std::string what) {
@@ -119,6 +121,8 @@ std::string clean_parser_message(std::string what) {
   }
   return what;
 }
+
+namespace {
 
 Diagnostic at_offset(const std::string& path, const std::string& text, size_t offset, std::string pointer,
                      std::string message) {
@@ -165,6 +169,14 @@ std::optional<JsonDocument> read_json_file(const std::string& path, Diagnostics&
 }
 
 std::optional<JsonDocument> parse_json_text(std::string path, std::string text, Diagnostics& diags) {
+  if (text.rfind("glTF", 0) == 0) {
+    diags.file_error(path, "expected a JSON scene, found a binary glTF file (name it .glb to render it as a model)");
+    return std::nullopt;
+  }
+  if (text.substr(0, 4096).find('\0') != std::string::npos) {
+    diags.file_error(path, "expected a JSON scene, found binary data");
+    return std::nullopt;
+  }
   JsonDocument doc{std::move(path), std::move(text), Json()};
   TrackingSax sax(doc.root);
   const bool ok = Json::sax_parse(doc.text, &sax, Json::input_format_t::json, true, false);

@@ -23,6 +23,10 @@ struct JsonDocument {
 std::optional<JsonDocument> read_json_file(const std::string& path, Diagnostics& diags);
 std::optional<JsonDocument> parse_json_text(std::string path, std::string text, Diagnostics& diags);
 
+// A message from nlohmann::json (also inside tinygltf's errors) without its exception-id prefix
+// and its own "at line L, column C" (we report positions ourselves).
+std::string clean_parser_message(std::string what);
+
 // Reads a whole file; on failure returns nothing and sets `error` to a sentence for the user.
 std::optional<std::string> read_text_file(const std::string& path, std::string& error);
 

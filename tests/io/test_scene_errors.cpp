@@ -238,6 +238,19 @@ TEST_CASE("absurdly deep nesting is refused, not a stack overflow", "[io][errors
   CHECK_THAT(a.first().message, Catch::Contains("nested at most 512 levels"));
 }
 
+TEST_CASE("binary files and bytes that are not text never reach the terminal raw", "[io][errors]") {
+  Attempt a = load_text("binary.json", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  REQUIRE_FALSE(a.loaded);
+  CHECK(a.first().message == "expected a JSON scene, found binary data");
+  a = load_text("glb.json", std::string("glTF\x02\0\0\0", 8));
+  CHECK_THAT(a.first().message, Catch::Contains("name it .glb"));
+  a = load_text("bad-bytes.json", "{\"camera\": {\"fov\": \"\x01caf\xc3\xa9\xff\"}}");
+  REQUIRE_FALSE(a.loaded);
+  for (const Diagnostic& d : a.diags.all())
+    for (const char c : d.message + d.excerpt) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t'));
+  CHECK(printable("caf\xc3\xa9 \xff\x1b[2J") == "caf\xc3\xa9 ??[2J");
+}
+
 TEST_CASE("minified files get a windowed excerpt around the error", "[io][errors]") {
   Json j = valid_scene();
   j["camera"]["fov"] = "wide";
