@@ -244,7 +244,7 @@ TEST_CASE("binary files and bytes that are not text never reach the terminal raw
   CHECK(a.first().message == "expected a JSON scene, found binary data");
   a = load_text("glb.json", std::string("glTF\x02\0\0\0", 8));
   CHECK_THAT(a.first().message, Catch::Contains("name it .glb"));
-  a = load_text("bad-bytes.json", "{\"camera\": {\"fov\": \"\x01caf\xc3\xa9\xff\"}}");
+  a = load_text("bad-bytes.json", "{\"camera\": {\"fov\": \"\x01" "caf\xc3\xa9\xff\"}}");
   REQUIRE_FALSE(a.loaded);
   for (const Diagnostic& d : a.diags.all())
     for (const char c : d.message + d.excerpt) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t'));
