@@ -81,8 +81,13 @@ class Bvh {
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;
-  std::vector<uint32_t> order_;                 // slot -> primitive id
-  std::vector<PackedTriangle> slot_triangles_;  // slot -> triangle copy, so leaves read memory in order  // slot -> triangle copy, so leaves read memory in order
+  // What a leaf slot holds: the primitive id and, for a triangle, a copy of its data, so that a
+  // leaf's primitives are one contiguous read.
+  struct Slot {
+    PackedTriangle triangle;  // unused for analytic shapes
+    uint32_t id;
+  };
+  std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
 };
 
 }  // namespace rt

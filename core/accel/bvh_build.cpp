@@ -317,11 +317,12 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   nodes_.reserve(binary.size() / 3 + 1);
   root_ = collapse(binary, 0, nodes_);
 
-  order_.resize(n);
-  for (uint32_t slot = 0; slot < n; ++slot) order_[slot] = build_prims[slot].id();
-  slot_triangles_.resize(n);
-  for (uint32_t slot = 0; slot < n; ++slot)
-    if (prims.is_triangle(order_[slot])) slot_triangles_[slot] = prims.triangles[order_[slot]];
+  slots_.resize(n);
+  for (uint32_t slot = 0; slot < n; ++slot) {
+    const uint32_t id = build_prims[slot].id();
+    slots_[slot].id = id;
+    if (prims.is_triangle(id)) slots_[slot].triangle = prims.triangles[id];
+  }
 }
 
 BvhStats Bvh::stats() const {
