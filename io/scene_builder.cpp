@@ -11,8 +11,12 @@ namespace {
 
 class Builder {
  public:
+  // The scene's own materials come first, so their indices stay those of the description;
+  // glTF files append theirs as they are loaded.
   Builder(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags)
-      : desc_(desc), source_(source), diags_(diags) {}
+      : desc_(desc), source_(source), diags_(diags) {
+    for (const MaterialDescription& m : desc_.materials) materials_.push_back(m.material);
+  }
 
   void add_nodes(const std::vector<NodeDescription>& nodes, const Mat4& parent) {
     for (const NodeDescription& node : nodes) {
@@ -47,11 +51,6 @@ class Builder {
     scene.bvh = Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options.threads)});
     scene.meshes = std::move(meshes_);
     return scene;
-  }
-
-  void start() {
-    materials_.reserve(desc_.materials.size());
-    for (const MaterialDescription& m : desc_.materials) materials_.push_back(m.material);
   }
 
  private:
@@ -134,7 +133,6 @@ std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocumen
                                  Diagnostics& diags) {
   const size_t errors_before = diags.error_count();
   Builder builder(desc, source, diags);
-  builder.start();
   builder.add_nodes(desc.nodes, Mat4(1.0f));
   if (diags.error_count() > errors_before) return std::nullopt;
   return builder.finish(options);
