@@ -1,13 +1,14 @@
 // BVH construction in two steps.
 // 1. A binary tree by binned SAH (Wald, "On fast construction of SAH-based bounding volume
 //    hierarchies", 2007): each node bins primitive centroids on all three axes, sweeps the bins
-//    for the cheapest split and partitions its slice of the order array in place. Large subtrees
-//    are built on separate threads into their own arrays and spliced back in a fixed order, so
-//    the tree is identical whatever the thread count.
+//    for the cheapest split and partitions its slice of the build records in place. Large
+//    subtrees are built on spare threads into their own arrays and spliced back in a fixed order,
+//    so the tree is identical whatever the thread count.
 // 2. A collapse to 4-wide nodes: a node adopts its children, then repeatedly replaces the
 //    interior child with the largest surface area by that child's two children.
 #include <atomic>
 #include <cstring>
+#include <stdexcept>
 #include <thread>
 
 #include "core/accel/bvh.h"
@@ -20,7 +21,7 @@ constexpr int kBins = 32;
 constexpr float kTraversalCost = 1.0f;  // cost of a node visit relative to one primitive test
 constexpr uint32_t kMaxLeafSize = 8;    // larger leaves are always split (<= BvhRef::kMaxLeafCount)
 constexpr int kSahDepthLimit = 32;      // deeper nodes use median splits, so depth < Bvh::kMaxDepth
-constexpr uint32_t kParallelMinPrims = 4096;
+constexpr uint32_t kParallelMinPrims = 4096;  // smaller subtrees are not worth starting a thread
 static_assert(kMaxLeafSize <= BvhRef::kMaxLeafCount);
 
 struct BinaryNode {
@@ -30,14 +31,24 @@ struct BinaryNode {
 };
 
 // One primitive during the build: its box as two 4-lane vectors, the id riding in the unused
-// fourth lane of `lo`. Records are partitioned in place, so every pass reads memory in order.
+// fourth lane of `lo`. The id's bits are offset into the range of normal floats (2.0 and up): raw
+// small integers would be denormals, which the centroid sum would then compute with, very slowly
+// on some CPUs. Records are partitioned in place, so every pass reads memory in order.
 struct alignas(32) BuildPrim {
-  Float4 lo;  // x, y, z, (id bits)
-  Float4 hi;  // x, y, z, unused
+  static constexpr uint32_t kIdBias = 0x40000000u;  // the bits of 2.0f
+  Float4 lo;  // x, y, z, (biased id bits)
+  Float4 hi;  // x, y, z, 0
+
+  static BuildPrim make(const Aabb& box, uint32_t id) {
+    BuildPrim p{Float4{box.lo.x, box.lo.y, box.lo.z, 0.0f}, Float4{box.hi.x, box.hi.y, box.hi.z, 0.0f}};
+    const uint32_t bits = id + kIdBias;
+    std::memcpy(reinterpret_cast<char*>(&p.lo) + 12, &bits, 4);
+    return p;
+  }
   uint32_t id() const {
-    uint32_t v;
-    std::memcpy(&v, reinterpret_cast<const char*>(&lo) + 12, 4);
-    return v;
+    uint32_t bits;
+    std::memcpy(&bits, reinterpret_cast<const char*>(&lo) + 12, 4);
+    return bits - kIdBias;
   }
   Float4 centroid2() const { return lo + hi; }  // twice the centre: one add, and scale-invariant for binning
 };
@@ -301,11 +312,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   std::vector<BuildPrim> build_prims(n);
   Range root{0, n, {}, {}};
   for (uint32_t id = 0; id < n; ++id) {
-    const Aabb box = prims.bounds(id);
-    BuildPrim& p = build_prims[id];
-    p.lo = Float4{box.lo.x, box.lo.y, box.lo.z, 0.0f};
-    std::memcpy(reinterpret_cast<char*>(&p.lo) + 12, &id, 4);
-    p.hi = Float4{box.hi.x, box.hi.y, box.hi.z, 0.0f};
+    const BuildPrim& p = build_prims[id] = BuildPrim::make(prims.bounds(id), id);
     root.bounds.extend(p.lo, p.hi);
     root.centroids.extend(p.centroid2(), p.centroid2());
   }
