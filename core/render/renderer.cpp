@@ -40,7 +40,9 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
   unsigned running = threads;
 
   const auto worker = [&](unsigned index) {
-    RayCounters& mine = counters[index];
+    // Counted on this thread's own stack and stored once at the end: neighbouring entries of
+    // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
+    RayCounters mine;
     PixelContext ctx{scene, settings, *integrator, mine, frame};
     for (int t = next_tile++; t < tile_count; t = next_tile++) {
       const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
@@ -51,6 +53,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
       pixels_done += static_cast<uint64_t>((x1 - x0) * (y1 - y0));
       rays_done += mine.total() - rays_before;
     }
+    counters[index] = mine;
     std::lock_guard lock(mutex);
     if (--running == 0) finished.notify_all();
   };
