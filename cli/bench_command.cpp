@@ -42,8 +42,8 @@ int run_bench(const BenchCommand& cmd) {
     what = cmd.model;
   }
   const unsigned all = resolve_thread_count(0);
-  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", what.c_str(), prims.triangles.size(),
-              prims.shapes.size(), all);
+  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", what.c_str(),
+              prims.triangles.size(), prims.shapes.size(), all);
   std::fflush(stdout);
 
   std::vector<unsigned> thread_counts{1};
@@ -70,7 +70,8 @@ int run_bench(const BenchCommand& cmd) {
   row("shadow rays (any hit)", &RayBenchmarkResult::shadow_mrays, "Mray/s", true);
   const RayBenchmarkResult& r0 = results.front();
   std::printf("BVH: %zu nodes, SAH cost %.1f; hit fractions: primary %.2f, incoherent %.2f, shadow occluded %.2f\n",
-              r0.bvh_nodes, r0.sah_cost, r0.primary_hit_fraction, r0.incoherent_hit_fraction, r0.shadow_occluded_fraction);
+              r0.bvh_nodes, r0.sah_cost, r0.primary_hit_fraction, r0.incoherent_hit_fraction,
+              r0.shadow_occluded_fraction);
 
   if (cmd.scene.empty()) return kExitSuccess;
   Diagnostics diags;
@@ -80,8 +81,8 @@ int run_bench(const BenchCommand& cmd) {
     std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
     return kExitBadInput;
   }
-  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(), scene->description.render.width,
-              scene->description.render.height);
+  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(),
+              scene->description.render.width, scene->description.render.height);
   std::vector<double> seconds;
   for (const unsigned t : thread_counts) {
     seconds.push_back(render_seconds(*scene, t));

@@ -14,20 +14,26 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RenderCommand render;
-  CLI::App* render_cmd = app.add_subcommand("render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image");
+  CLI::App* render_cmd =
+      app.add_subcommand("render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image");
   render_cmd->add_option("scene", render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
   render_cmd->add_option("-o,--output", render.output, "Output PNG (default: <scene name>.png in the current folder)");
-  render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")->check(CLI::Range(1u, 1024u));
-  render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")->check(CLI::Range(1, 16384));
-  render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
+      ->check(CLI::Range(1u, 1024u));
+  render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
+      ->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")
+      ->check(CLI::Range(1, 16384));
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   BenchCommand bench;
   bench.scene = std::string(RTCLI_SOURCE_DIR) + "/scenes/primitives.json";
   CLI::App* bench_cmd = app.add_subcommand("bench", "Measure BVH build time, ray throughput and render time");
-  bench_cmd->add_option("model", bench.model, "Mesh to trace (.glb/.gltf/.json; default: a generated 300k-triangle mesh)");
-  bench_cmd->add_option("--scene", bench.scene, "Scene whose render time is measured last ('' to skip)")->capture_default_str();
+  bench_cmd->add_option("model", bench.model,
+                        "Mesh to trace (.glb/.gltf/.json; default: a generated 300k-triangle mesh)");
+  bench_cmd->add_option("--scene", bench.scene, "Scene whose render time is measured last ('' to skip)")
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);

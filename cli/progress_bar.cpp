@@ -23,9 +23,11 @@ std::string format_count(double count) {
 
 void ProgressBar::update(const RenderProgress& p) {
   constexpr int kWidth = 30;
-  const double fraction = p.pixels_total ? static_cast<double>(p.pixels_done) / static_cast<double>(p.pixels_total) : 1.0;
+  const double fraction =
+      p.pixels_total ? static_cast<double>(p.pixels_done) / static_cast<double>(p.pixels_total) : 1.0;
   const int filled = static_cast<int>(fraction * kWidth);
-  std::string line = "\r[" + std::string(static_cast<size_t>(filled), '#') + std::string(static_cast<size_t>(kWidth - filled), '-') + "]";
+  std::string line = "\r[" + std::string(static_cast<size_t>(filled), '#') +
+                     std::string(static_cast<size_t>(kWidth - filled), '-') + "]";
   char buf[128];
   const double eta = fraction > 0.0 ? p.seconds * (1.0 - fraction) / fraction : 0.0;
   const double rate = p.seconds > 0.0 ? static_cast<double>(p.rays) / p.seconds : 0.0;

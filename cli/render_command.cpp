@@ -16,9 +16,7 @@
 namespace rt {
 namespace {
 
-std::string default_output(const std::string& scene) {
-  return std::filesystem::path(scene).stem().string() + ".png";
-}
+std::string default_output(const std::string& scene) { return std::filesystem::path(scene).stem().string() + ".png"; }
 
 // Refuses an output we could never write before spending minutes on the render.
 bool check_output(const std::string& path, std::string& error) {
@@ -73,8 +71,9 @@ int run_render(const RenderCommand& cmd) {
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
   Image image;
-  const RenderStats stats = render(loaded->scene, settings, image, show_progress ? [&](const RenderProgress& p) { bar.update(p); }
-                                                                                 : ProgressCallback{});
+  const RenderStats stats =
+      render(loaded->scene, settings, image,
+             show_progress ? [&](const RenderProgress& p) { bar.update(p); } : ProgressCallback{});
   bar.clear();
 
   if (!write_png(output, image, error)) {

@@ -35,7 +35,8 @@ struct Camera {
     float distance = 1e-6f;
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 c = Vec3(corner & 1 ? bounds.hi.x : bounds.lo.x, corner & 2 ? bounds.hi.y : bounds.lo.y,
-                          corner & 4 ? bounds.hi.z : bounds.lo.z) - centre;
+                          corner & 4 ? bounds.hi.z : bounds.lo.z) -
+                     centre;
       // The corner is at depth distance + c.forward; it must satisfy |c.right| <= depth * tan_h.
       const float depth_offset = glm::dot(c, axes.forward);
       distance = std::max({distance, std::fabs(glm::dot(c, axes.right)) / tan_h - depth_offset,

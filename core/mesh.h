@@ -15,8 +15,8 @@ namespace rt {
 
 struct TriangleMesh {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;   // per vertex, unit; empty = flat shading
-  std::vector<Vec2> uvs;       // per vertex (TEXCOORD_0, origin top-left); empty = none
+  std::vector<Vec3> normals;      // per vertex, unit; empty = flat shading
+  std::vector<Vec2> uvs;          // per vertex (TEXCOORD_0, origin top-left); empty = none
   std::vector<uint32_t> indices;  // three per triangle, each < positions.size()
   uint32_t material = 0;
 

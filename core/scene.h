@@ -17,9 +17,9 @@ struct Scene {
   Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
   std::vector<Material> materials;
   std::vector<Light> lights;
-  std::vector<TriangleMesh> meshes;  // world space, for surface details of triangle hits
+  std::vector<TriangleMesh> meshes;           // world space, for surface details of triangle hits
   std::vector<uint32_t> mesh_first_triangle;  // primitive id of each mesh's first triangle
-  Bvh bvh;  // all triangles of all meshes, then all analytic shapes
+  Bvh bvh;                                    // all triangles of all meshes, then all analytic shapes
 
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }

@@ -64,7 +64,8 @@ bool read_view(const tinygltf::Model& model, int view_index, uint64_t byte_offse
   }
   const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(view_index)];
   if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size())) {
-    error = "bufferView " + std::to_string(view_index) + " names buffer " + std::to_string(view.buffer) + ", which does not exist";
+    error = "bufferView " + std::to_string(view_index) + " names buffer " + std::to_string(view.buffer) +
+            ", which does not exist";
     return false;
   }
   const std::vector<unsigned char>& data = model.buffers[static_cast<size_t>(view.buffer)].data;
@@ -84,7 +85,9 @@ bool read_view(const tinygltf::Model& model, int view_index, uint64_t byte_offse
   const uint64_t needed = byte_offset + stride * (count - 1) + element;
   if (needed > view.byteLength || uint64_t{view.byteOffset} + view.byteLength > data.size()) {
     error = "accessor reads " + std::to_string(needed) + " bytes from bufferView " + std::to_string(view_index) +
-            ", which holds " + std::to_string(std::min<uint64_t>(view.byteLength, data.size() > view.byteOffset ? data.size() - view.byteOffset : 0)) +
+            ", which holds " +
+            std::to_string(std::min<uint64_t>(view.byteLength,
+                                              data.size() > view.byteOffset ? data.size() - view.byteOffset : 0)) +
             ": the file is truncated or inconsistent";
     return false;
   }
@@ -107,18 +110,19 @@ bool read_accessor(const tinygltf::Model& model, int index, int components, std:
   const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
   const int found = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
   if (found != components) {
-    error = "accessor " + std::to_string(index) + " has " + std::to_string(found) + " components per element, expected " +
-            std::to_string(components);
+    error = "accessor " + std::to_string(index) + " has " + std::to_string(found) +
+            " components per element, expected " + std::to_string(components);
     return false;
   }
   const uint64_t count = a.count;
   if (count > (uint64_t{1} << 28)) {
-    error = "accessor " + std::to_string(index) + " has " + std::to_string(count) + " elements, more than this renderer accepts (2^28)";
+    error = "accessor " + std::to_string(index) + " has " + std::to_string(count) +
+            " elements, more than this renderer accepts (2^28)";
     return false;
   }
   out.assign(count * static_cast<uint64_t>(components), 0.0);  // no bufferView: zeros (then sparse values)
-  if (a.bufferView >= 0 &&
-      !read_view(model, a.bufferView, a.byteOffset, count, components, a.componentType, a.normalized, out.data(), error)) {
+  if (a.bufferView >= 0 && !read_view(model, a.bufferView, a.byteOffset, count, components, a.componentType,
+                                      a.normalized, out.data(), error)) {
     error = "accessor " + std::to_string(index) + ": " + error;
     return false;
   }
@@ -140,7 +144,8 @@ bool read_accessor(const tinygltf::Model& model, int index, int components, std:
     }
     const auto target = static_cast<uint64_t>(indices[k]);
     for (int c = 0; c < components; ++c)
-      out[target * static_cast<uint64_t>(components) + static_cast<uint64_t>(c)] = values[k * static_cast<uint64_t>(components) + static_cast<uint64_t>(c)];
+      out[target * static_cast<uint64_t>(components) + static_cast<uint64_t>(c)] =
+          values[k * static_cast<uint64_t>(components) + static_cast<uint64_t>(c)];
   }
   return true;
 }
@@ -153,7 +158,8 @@ bool read_indices(const tinygltf::Model& model, int index, size_t vertex_count, 
   for (size_t i = 0; i < raw.size(); ++i) {
     if (!(raw[i] >= 0 && raw[i] < static_cast<double>(vertex_count))) {
       error = "index accessor " + std::to_string(index) + ": element " + std::to_string(i) + " is " +
-              std::to_string(static_cast<long long>(raw[i])) + ", but there are only " + std::to_string(vertex_count) + " vertices";
+              std::to_string(static_cast<long long>(raw[i])) + ", but there are only " + std::to_string(vertex_count) +
+              " vertices";
       return false;
     }
     out[i] = static_cast<uint32_t>(raw[i]);

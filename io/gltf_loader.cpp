@@ -4,10 +4,10 @@
 #include <fstream>
 #include <functional>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <tiny_gltf.h>
 
 #include "io/gltf_accessor.h"
 #include "io/json_document.h"
@@ -36,7 +36,8 @@ std::string trim(std::string s) {
 Mat4 node_matrix(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     Mat4 m;
-    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<size_t>(i)]);  // column-major
+    for (int i = 0; i < 16; ++i)
+      glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<size_t>(i)]);  // column-major
     return m;
   }
   Mat4 m(1.0f);
@@ -47,7 +48,8 @@ Mat4 node_matrix(const tinygltf::Node& node) {
     m *= glm::mat4_cast(glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
                                   static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
   if (node.scale.size() == 3)
-    m = glm::scale(m, Vec3(static_cast<float>(node.scale[0]), static_cast<float>(node.scale[1]), static_cast<float>(node.scale[2])));
+    m = glm::scale(m, Vec3(static_cast<float>(node.scale[0]), static_cast<float>(node.scale[1]),
+                           static_cast<float>(node.scale[2])));
   return m;
 }
 
@@ -55,7 +57,8 @@ Mat4 node_matrix(const tinygltf::Node& node) {
 // order the glTF 2.0 specification gives (3.7.2.1): strip triangle k is (v_k, v_{k+1+k%2},
 // v_{k+2-k%2}), which keeps one winding; fan triangle k is (v_{k+1}, v_{k+2}, v_0).
 std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& v, int mode) {
-  if (mode == TINYGLTF_MODE_TRIANGLES) return std::vector<uint32_t>(v.begin(), v.begin() + static_cast<long>(v.size() / 3 * 3));
+  if (mode == TINYGLTF_MODE_TRIANGLES)
+    return std::vector<uint32_t>(v.begin(), v.begin() + static_cast<long>(v.size() / 3 * 3));
   std::vector<uint32_t> out;
   for (size_t k = 0; k + 2 < v.size(); ++k) {
     if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) out.insert(out.end(), {v[k], v[k + 1 + k % 2], v[k + 2 - k % 2]});
@@ -87,7 +90,8 @@ bool import_primitive(const tinygltf::Model& model, const tinygltf::Primitive& p
   const size_t n = raw.size() / 3;
   ip.mesh.positions.resize(n);
   for (size_t i = 0; i < n; ++i) {
-    ip.mesh.positions[i] = Vec3(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]), static_cast<float>(raw[3 * i + 2]));
+    ip.mesh.positions[i] =
+        Vec3(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]), static_cast<float>(raw[3 * i + 2]));
     if (!is_finite(ip.mesh.positions[i])) {
       error = where + " POSITION: vertex " + std::to_string(i) + " is not a finite point";
       return false;
@@ -98,7 +102,8 @@ bool import_primitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     if (raw.size() / 3 != n) return (error = where + ": NORMAL and POSITION counts differ"), false;
     ip.mesh.normals.resize(n);
     for (size_t i = 0; i < n; ++i) {
-      const Vec3 v(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]), static_cast<float>(raw[3 * i + 2]));
+      const Vec3 v(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]),
+                   static_cast<float>(raw[3 * i + 2]));
       const float len = glm::length(v);
       ip.mesh.normals[i] = (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);  // zero: use the face normal
     }
@@ -107,7 +112,8 @@ bool import_primitive(const tinygltf::Model& model, const tinygltf::Primitive& p
     if (!read_accessor(model, it->second, 2, raw, error)) return (error = where + " TEXCOORD_0: " + error), false;
     if (raw.size() / 2 != n) return (error = where + ": TEXCOORD_0 and POSITION counts differ"), false;
     ip.mesh.uvs.resize(n);
-    for (size_t i = 0; i < n; ++i) ip.mesh.uvs[i] = Vec2(static_cast<float>(raw[2 * i]), static_cast<float>(raw[2 * i + 1]));
+    for (size_t i = 0; i < n; ++i)
+      ip.mesh.uvs[i] = Vec2(static_cast<float>(raw[2 * i]), static_cast<float>(raw[2 * i + 1]));
   }
   std::vector<uint32_t> indices;
   if (prim.indices >= 0) {
@@ -129,8 +135,8 @@ bool import_mesh(const tinygltf::Model& model, size_t mesh_index, ImportedModel&
   const tinygltf::Mesh& mesh = model.meshes[mesh_index];
   std::vector<ImportedPrimitive>& prims = out.meshes[mesh_index];
   for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-    const std::string where = "mesh " + std::to_string(mesh_index) + (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") +
-                              " primitive " + std::to_string(p);
+    const std::string where = "mesh " + std::to_string(mesh_index) +
+                              (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") + " primitive " + std::to_string(p);
     if (!import_primitive(model, mesh.primitives[p], where, out, prims, error)) return false;
   }
   return true;
@@ -168,7 +174,8 @@ std::optional<ImportedModel> import_gltf(const std::string& path, const std::opt
                           ? Vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                                  static_cast<float>(pbr.baseColorFactor[2]))
                           : Vec3(1.0f);
-    out.materials.push_back(pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor)));
+    out.materials.push_back(
+        pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor)));
   }
   out.meshes.resize(model.meshes.size());
 
@@ -203,13 +210,15 @@ std::optional<ImportedModel> import_gltf(const std::string& path, const std::opt
   // Depth-first over the node tree; the depth limit also stops cycles in malformed files.
   std::function<bool(int, const Mat4&, int)> visit = [&](int node_index, const Mat4& parent, int depth) -> bool {
     if (node_index < 0 || node_index >= static_cast<int>(model.nodes.size()) || depth > 256) {
-      error = "node " + std::to_string(node_index) + (depth > 256 ? " is nested too deeply (a cycle?)" : " does not exist");
+      error =
+          "node " + std::to_string(node_index) + (depth > 256 ? " is nested too deeply (a cycle?)" : " does not exist");
       return false;
     }
     const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
     const Mat4 world = parent * node_matrix(node);
     if (node.mesh >= static_cast<int>(model.meshes.size())) {
-      error = "node " + std::to_string(node_index) + " uses mesh " + std::to_string(node.mesh) + ", which does not exist";
+      error =
+          "node " + std::to_string(node_index) + " uses mesh " + std::to_string(node.mesh) + ", which does not exist";
       return false;
     }
     if (node.mesh >= 0 && !place(static_cast<size_t>(node.mesh), world)) return false;

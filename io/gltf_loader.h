@@ -31,7 +31,7 @@ struct ImportedModel {
 };
 
 struct ImportError {
-  std::string message;      // completes "could not be loaded: ..." or "has no mesh named ..."
+  std::string message;        // completes "could not be loaded: ..." or "has no mesh named ..."
   bool unknown_mesh = false;  // the file loaded, but has no mesh of the requested name
 };
 

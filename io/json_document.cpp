@@ -76,7 +76,7 @@ class TrackingSax {
  private:
   struct Frame {
     bool object;
-    size_t index;  // arrays: index of the element being parsed
+    size_t index;     // arrays: index of the element being parsed
     std::string key;  // objects: key of the member being parsed
     std::set<std::string> keys;
   };
@@ -127,8 +127,8 @@ namespace {
 Diagnostic at_offset(const std::string& path, const std::string& text, size_t offset, std::string pointer,
                      std::string message) {
   const LineColumn lc = line_column(text, offset);
-  return Diagnostic{Severity::kError, path, lc.line, lc.column, std::move(pointer), std::move(message),
-                    source_excerpt(text, offset)};
+  return Diagnostic{
+      Severity::kError, path, lc.line, lc.column, std::move(pointer), std::move(message), source_excerpt(text, offset)};
 }
 
 }  // namespace

@@ -67,7 +67,8 @@ class Scanner {
       }
       return i + 1;
     }
-    while (i < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i])) || s_[i] == '-' || s_[i] == '+' || s_[i] == '.'))
+    while (i < s_.size() &&
+           (std::isalnum(static_cast<unsigned char>(s_[i])) || s_[i] == '-' || s_[i] == '+' || s_[i] == '.'))
       ++i;
     return i;
   }
@@ -79,7 +80,8 @@ class Scanner {
     uint32_t v = 0;
     for (size_t k = i; k < i + 4 && k < s_.size(); ++k) {
       const char h = s_[k];
-      v = v * 16 + static_cast<uint32_t>(std::isdigit(static_cast<unsigned char>(h)) ? h - '0' : (std::tolower(h) - 'a' + 10));
+      v = v * 16 +
+          static_cast<uint32_t>(std::isdigit(static_cast<unsigned char>(h)) ? h - '0' : (std::tolower(h) - 'a' + 10));
     }
     return v;
   }
@@ -116,7 +118,9 @@ std::string escape_token(std::string_view key) {
 
 }  // namespace
 
-std::string pointer_child(const std::string& pointer, std::string_view key) { return pointer + "/" + escape_token(key); }
+std::string pointer_child(const std::string& pointer, std::string_view key) {
+  return pointer + "/" + escape_token(key);
+}
 std::string pointer_child(const std::string& pointer, size_t index) { return pointer + "/" + std::to_string(index); }
 
 std::vector<std::string> pointer_tokens(std::string_view pointer) {

@@ -81,7 +81,8 @@ std::string describe(const Json& v) {
     case Json::value_t::number_float: return "the number " + format_number(v.get<double>());
     case Json::value_t::array: {
       std::string out = "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " element" : " elements");
-      if (!v.empty() && v.size() <= 4 && std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_primitive(); }))
+      if (!v.empty() && v.size() <= 4 &&
+          std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_primitive(); }))
         out += " " + v.dump();
       return out;
     }
@@ -191,7 +192,8 @@ std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std:
   }
   std::string message = "expected one of " + join_quoted(choices) + ", found " + describe(v);
   if (v.is_string())
-    if (const auto near = closest_match(v.get<std::string>(), choices)) message += " (did you mean " + quote_text(*near) + "?)";
+    if (const auto near = closest_match(v.get<std::string>(), choices))
+      message += " (did you mean " + quote_text(*near) + "?)";
   r.error(ptr, message);
   return std::nullopt;
 }

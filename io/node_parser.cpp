@@ -71,7 +71,8 @@ std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const J
   }
   ref.file = *file;
   const std::filesystem::path p(*file);
-  ref.resolved_path = p.is_absolute() ? p.string() : (std::filesystem::path(ctx.scene_folder) / p).lexically_normal().string();
+  ref.resolved_path =
+      p.is_absolute() ? p.string() : (std::filesystem::path(ctx.scene_folder) / p).lexically_normal().string();
   ref.mesh_name = name;
   return ref;
 }
@@ -106,9 +107,11 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
   if (const auto name = o.string("name")) {
     node.name = *name;
     const auto [it, fresh] = ctx.names.emplace(*name, ptr);
-    if (!fresh) r.error(o.child("name"), "expected a unique node name, found \"" + *name + "\" already used by " + it->second);
+    if (!fresh)
+      r.error(o.child("name"), "expected a unique node name, found \"" + *name + "\" already used by " + it->second);
   }
-  if (const Json* t = o.get("transform")) node.local = parse_transform(r, *t, o.child("transform")).value_or(Mat4(1.0f));
+  if (const Json* t = o.get("transform"))
+    node.local = parse_transform(r, *t, o.child("transform")).value_or(Mat4(1.0f));
   if (const Json* s = o.get("shape")) {
     if (const auto k = read_choice(r, *s, o.child("shape"), kShapeNames)) node.shape = kShapeKinds[*k];
   }
@@ -117,7 +120,8 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
   if (material) node.material = resolve_material(ctx, *material, o.child("material"));
   if (const Json* children = o.get("children")) {
     if (depth + 1 >= kMaxNodeDepth) {
-      r.error(o.child("children"), "expected at most " + std::to_string(kMaxNodeDepth) + " levels of nested nodes, found deeper nesting");
+      r.error(o.child("children"),
+              "expected at most " + std::to_string(kMaxNodeDepth) + " levels of nested nodes, found deeper nesting");
     } else {
       node.children = parse_nodes(ctx, *children, o.child("children"), depth + 1);
     }
@@ -125,12 +129,14 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
   o.finish();
   if (!o.valid()) return node;
   if (o.has("shape") && o.has("mesh"))
-    r.error(o.child("mesh"), "expected either \"shape\" or \"mesh\" on one node, found both (use child nodes)", Anchor::kKey);
+    r.error(o.child("mesh"), "expected either \"shape\" or \"mesh\" on one node, found both (use child nodes)",
+            Anchor::kKey);
   if (o.has("shape") && !material)
     r.error(o.child("material"), "missing required key \"material\"; expected the name of a material for the shape",
             Anchor::kParent);
   if (material && !o.has("shape") && !o.has("mesh"))
-    r.error(o.child("material"), "expected a material only on a node with a \"shape\" or a \"mesh\", found one on a group node",
+    r.error(o.child("material"),
+            "expected a material only on a node with a \"shape\" or a \"mesh\", found one on a group node",
             Anchor::kKey);
   return node;
 }
@@ -147,7 +153,8 @@ std::optional<Mat4> parse_transform(const JsonReader& r, const Json& value, cons
     }
     result = read_matrix(r, *m, o.child("matrix"));
     if (result && !make_transform(*result)) {
-      r.error(o.child("matrix"), "expected an invertible matrix, found a singular one (it flattens space: no inverse, no normals)");
+      r.error(o.child("matrix"),
+              "expected an invertible matrix, found a singular one (it flattens space: no inverse, no normals)");
       result.reset();
     }
   } else {
@@ -173,7 +180,8 @@ std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& valu
     ctx.reader.expected(pointer, "an array of nodes", value);
     return nodes;
   }
-  for (size_t i = 0; i < value.size(); ++i) nodes.push_back(parse_node(ctx, value[i], pointer_child(pointer, i), depth));
+  for (size_t i = 0; i < value.size(); ++i)
+    nodes.push_back(parse_node(ctx, value[i], pointer_child(pointer, i), depth));
   return nodes;
 }
 

@@ -24,8 +24,9 @@ class Builder {
       if (node.shape || node.mesh) {
         const auto transform = make_transform(world);
         if (!transform) {
-          error(node.pointer, "expected an invertible world transform, found a singular one (the transforms above this "
-                              "node multiply to a flattening scale)");
+          error(node.pointer,
+                "expected an invertible world transform, found a singular one (the transforms above this "
+                "node multiply to a flattening scale)");
         } else if (node.shape) {
           shapes_.push_back(AnalyticShape{*node.shape, node.material.value_or(0), *transform});
         } else {
@@ -38,7 +39,8 @@ class Builder {
 
   Scene finish(const BuildOptions& options) {
     Scene scene;
-    scene.camera = Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
+    scene.camera =
+        Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
     scene.background = desc_.background;
     scene.ambient = desc_.ambient;
     scene.lights = desc_.lights;
@@ -48,7 +50,8 @@ class Builder {
       scene.mesh_first_triangle.push_back(first);
       first += static_cast<uint32_t>(m.triangle_count());
     }
-    scene.bvh = Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options.threads)});
+    scene.bvh =
+        Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options.threads)});
     scene.meshes = std::move(meshes_);
     return scene;
   }
@@ -102,7 +105,9 @@ class Builder {
   }
 
   void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
-  void warning(const std::string& pointer, std::string message) { report(Severity::kWarning, pointer, std::move(message)); }
+  void warning(const std::string& pointer, std::string message) {
+    report(Severity::kWarning, pointer, std::move(message));
+  }
   void report(Severity severity, const std::string& pointer, std::string message) {
     if (source_) {
       const JsonReader r(*source_, diags_);

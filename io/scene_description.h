@@ -32,7 +32,7 @@ struct MeshReference {
   std::string file;           // as written in the scene
   std::string resolved_path;  // relative paths resolved against the scene file's folder
   std::optional<std::string> mesh_name;
-  std::string pointer;        // of the "mesh" object
+  std::string pointer;  // of the "mesh" object
 };
 
 struct NodeDescription {

@@ -120,7 +120,8 @@ std::optional<SceneDescription> parse_scene(const JsonDocument& doc, Diagnostics
   ObjectReader top(r, doc.root, "");
   top.get("$schema");  // editors use it to find the schema; we don't need it
   if (const Json* v = top.get("render")) parse_render(r, *v, scene.render);
-  if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov")) parse_camera(r, *v, scene.camera);
+  if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
+    parse_camera(r, *v, scene.camera);
   if (const auto bg = top.colour("background")) scene.background = *bg;
   if (const auto ambient = top.colour("ambient")) scene.ambient = *ambient;
   if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v);

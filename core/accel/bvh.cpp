@@ -104,7 +104,8 @@ bool Bvh::traverse(Ray& ray, Hit& hit) const {
     for (uint32_t slot = BvhRef::first(ref), end = slot + BvhRef::count(ref); slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const uint32_t id = s.id;
-      const bool hit_now = id < triangle_count_ ? intersect_triangle(s.triangle, ray, hit) : intersect_shape(shape(id), ray, hit);
+      const bool hit_now =
+          id < triangle_count_ ? intersect_triangle(s.triangle, ray, hit) : intersect_shape(shape(id), ray, hit);
       if (hit_now) {
         if constexpr (kAnyHit) return true;
         hit.prim = id;

@@ -41,7 +41,7 @@ struct BvhBuildOptions {
 };
 
 struct BvhStats {
-  size_t nodes = 0;       // 4-wide nodes
+  size_t nodes = 0;  // 4-wide nodes
   size_t leaves = 0;
   int max_depth = 0;      // of the 4-wide tree
   double sah_cost = 0.0;  // of the binary tree it was collapsed from, relative to one primitive test

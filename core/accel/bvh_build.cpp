@@ -18,9 +18,9 @@ namespace rt {
 namespace {
 
 constexpr int kBins = 32;
-constexpr float kTraversalCost = 1.0f;  // cost of a node visit relative to one primitive test
-constexpr uint32_t kMaxLeafSize = 8;    // larger leaves are always split (<= BvhRef::kMaxLeafCount)
-constexpr int kSahDepthLimit = 32;      // deeper nodes use median splits, so depth < Bvh::kMaxDepth
+constexpr float kTraversalCost = 1.0f;        // cost of a node visit relative to one primitive test
+constexpr uint32_t kMaxLeafSize = 8;          // larger leaves are always split (<= BvhRef::kMaxLeafCount)
+constexpr int kSahDepthLimit = 32;            // deeper nodes use median splits, so depth < Bvh::kMaxDepth
 constexpr uint32_t kParallelMinPrims = 4096;  // smaller subtrees are not worth starting a thread
 static_assert(kMaxLeafSize <= BvhRef::kMaxLeafCount);
 
@@ -36,8 +36,8 @@ struct BinaryNode {
 // on some CPUs. Records are partitioned in place, so every pass reads memory in order.
 struct alignas(32) BuildPrim {
   static constexpr uint32_t kIdBias = 0x40000000u;  // the bits of 2.0f
-  Float4 lo;  // x, y, z, (biased id bits)
-  Float4 hi;  // x, y, z, 0
+  Float4 lo;                                        // x, y, z, (biased id bits)
+  Float4 hi;                                        // x, y, z, 0
 
   static BuildPrim make(const Aabb& box, uint32_t id) {
     BuildPrim p{Float4{box.lo.x, box.lo.y, box.lo.z, 0.0f}, Float4{box.hi.x, box.hi.y, box.hi.z, 0.0f}};
@@ -204,7 +204,8 @@ class BinaryBuilder {
     uint32_t i = range.begin, j = range.end;
     while (true) {
       for (; i < j && goes_left(prims_[i]); ++i) left_centroids.extend(prims_[i].centroid2(), prims_[i].centroid2());
-      for (; i < j && !goes_left(prims_[j - 1]); --j) right_centroids.extend(prims_[j - 1].centroid2(), prims_[j - 1].centroid2());
+      for (; i < j && !goes_left(prims_[j - 1]); --j)
+        right_centroids.extend(prims_[j - 1].centroid2(), prims_[j - 1].centroid2());
       if (i >= j) break;
       std::swap(prims_[i], prims_[j - 1]);
     }
@@ -337,7 +338,10 @@ BvhStats Bvh::stats() const {
   s.nodes = nodes_.size();
   s.sah_cost = binary_sah_cost_;
   if (primitive_count() == 0) return s;
-  struct Item { uint32_t ref; int depth; };
+  struct Item {
+    uint32_t ref;
+    int depth;
+  };
   std::vector<Item> stack{{root_, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();

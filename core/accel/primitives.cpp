@@ -10,7 +10,7 @@ PrimitiveSet make_primitive_set(const std::vector<TriangleMesh>& meshes, std::ve
   for (const TriangleMesh& m : meshes)
     for (size_t i = 0; i + 2 < m.indices.size(); i += 3)
       prims.triangles.push_back(PackedTriangle::from_vertices(m.positions[m.indices[i]], m.positions[m.indices[i + 1]],
-                                                             m.positions[m.indices[i + 2]]));
+                                                              m.positions[m.indices[i + 2]]));
   prims.shapes = std::move(shapes);
   return prims;
 }

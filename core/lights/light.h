@@ -13,7 +13,7 @@ using Light = std::variant<PointLight>;
 struct LightSample {
   Vec3 direction{0.0f};  // unit, from the point towards the light
   float distance = 0.0f;
-  Vec3 radiance{0.0f};   // arriving at the point, attenuation applied, shadow not yet tested
+  Vec3 radiance{0.0f};  // arriving at the point, attenuation applied, shadow not yet tested
 };
 
 inline LightSample sample_light(const PointLight& light, Vec3 point) {

@@ -12,7 +12,9 @@ struct Entry {
 };
 
 template <class T>
-std::unique_ptr<Integrator> make() { return std::make_unique<T>(); }
+std::unique_ptr<Integrator> make() {
+  return std::make_unique<T>();
+}
 
 // The name table. Adding an integrator = one file and one line here.
 constexpr Entry kIntegrators[] = {

@@ -17,8 +17,8 @@ unsigned resolve_thread_count(unsigned requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image,
-                   const ProgressCallback& progress, uint32_t frame) {
+RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const ProgressCallback& progress,
+                   uint32_t frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::unique_ptr<Integrator> integrator = make_integrator(settings.integrator);

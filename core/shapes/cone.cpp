@@ -17,7 +17,10 @@ bool intersect_cone(const Ray& ray, Hit& hit) {
   if (solve_quadratic(a, 2.0 * (ox * dx + oy * dy - oz * dz), ox * ox + oy * oy - oz * oz, t0, t1))
     side_root_in_height(ray, t0, t1, best);
   double tc;
-  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kConeBase; }
+  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) {
+    best = tc;
+    part = kConeBase;
+  }
   if (best == HUGE_VAL) return false;
   hit.t = static_cast<float>(best);
   hit.part = part;

@@ -13,8 +13,14 @@ bool intersect_cube(const Ray& ray, Hit& hit) {
     }
     double t0 = (-1.0 - o) / d, t1 = (1.0 - o) / d;
     if (t0 > t1) std::swap(t0, t1);
-    if (t0 > t_near) { t_near = t0; near_axis = a; }
-    if (t1 < t_far) { t_far = t1; far_axis = a; }
+    if (t0 > t_near) {
+      t_near = t0;
+      near_axis = a;
+    }
+    if (t1 < t_far) {
+      t_far = t1;
+      far_axis = a;
+    }
   }
   if (t_near > t_far || near_axis < 0) return false;
   if (t_near > ray.tmin && t_near < ray.tmax) {  // entering from outside

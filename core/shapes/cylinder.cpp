@@ -35,8 +35,14 @@ bool intersect_cylinder(const Ray& ray, Hit& hit) {
   if (a > 0.0 && solve_quadratic(a, 2.0 * (ox * dx + oy * dy), ox * ox + oy * oy - 1.0, t0, t1))
     side_root_in_height(ray, t0, t1, best);
   double tc;
-  if (intersect_unit_disc(ray, 0.0f, tc) && tc < best) { best = tc; part = kCylinderBase; }
-  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) { best = tc; part = kCylinderTop; }
+  if (intersect_unit_disc(ray, 0.0f, tc) && tc < best) {
+    best = tc;
+    part = kCylinderBase;
+  }
+  if (intersect_unit_disc(ray, 1.0f, tc) && tc < best) {
+    best = tc;
+    part = kCylinderTop;
+  }
   if (best == HUGE_VAL) return false;
   hit.t = static_cast<float>(best);
   hit.part = part;

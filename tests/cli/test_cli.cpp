@@ -51,8 +51,9 @@ TEST_CASE("cli: --version, --help, render --help", "[cli]") {
 }
 
 TEST_CASE("cli: bad usage exits 2 with a message", "[cli]") {
-  for (const char* args : {"", "render", "frobnicate", "render scenes/default.json --bogus", "render scenes/default.json --threads 0",
-                           "render scenes/default.json --width -5", "render scenes/default.json --seed banana"}) {
+  for (const char* args :
+       {"", "render", "frobnicate", "render scenes/default.json --bogus", "render scenes/default.json --threads 0",
+        "render scenes/default.json --width -5", "render scenes/default.json --seed banana"}) {
     INFO(args);
     const Run r = rtcli(args);
     CHECK(r.code == 2);
@@ -105,7 +106,8 @@ TEST_CASE("cli: bad scenes exit 2 and leave an existing output untouched", "[cli
 })");
   const Run r = rtcli("render '" + bad + "' -o '" + out + "'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("bad-material.json:4:45: error: /nodes/0/material: expected the name of a material"));
+  CHECK_THAT(r.output,
+             Catch::Contains("bad-material.json:4:45: error: /nodes/0/material: expected the name of a material"));
   CHECK(read_file(out) == "the good image from yesterday");
   for (const auto& entry : fs::directory_iterator(output_path("untouched")))
     CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);  // no temporary left behind
@@ -128,6 +130,6 @@ TEST_CASE("cli: an output that cannot be written is refused before rendering", "
 TEST_CASE("cli: bench runs on a small model", "[cli][bench]") {
   const Run r = rtcli("bench scenes/models/gem.gltf --scene scenes/default.json");
   REQUIRE(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("BVH build") && Catch::Contains("incoherent rays") && Catch::Contains("shadow rays") &&
-                           Catch::Contains("render default.json"));
+  CHECK_THAT(r.output, Catch::Contains("BVH build") && Catch::Contains("incoherent rays") &&
+                           Catch::Contains("shadow rays") && Catch::Contains("render default.json"));
 }

@@ -29,10 +29,11 @@ PrimitiveSet random_scene(uint64_t seed) {
   for (int i = 0; i < 3000; ++i) {
     const Vec3 c = random_in(rng, -10.0f, 10.0f);
     const float size = i % 10 == 0 ? 3.0f : 0.4f;
-    prims.triangles.push_back(PackedTriangle::from_vertices(c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1),
-                                                           c + size * random_in(rng, -1, 1)));
+    prims.triangles.push_back(PackedTriangle::from_vertices(
+        c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1)));
   }
-  const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone};
+  const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder,
+                             ShapeKind::kCone};
   for (int i = 0; i < 60; ++i) {
     AnalyticShape s;
     s.kind = kinds[i % 5];

@@ -8,7 +8,6 @@ using namespace rt;
 using rt::test::check_vec;
 using rt::test::make_ray;
 
-
 TEST_CASE("cube: each face from outside, with its outward normal and face id", "[shapes][cube]") {
   const Vec3 dirs[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
   for (int face = 0; face < 6; ++face) {
@@ -33,7 +32,7 @@ TEST_CASE("cube: from inside, the exit face", "[shapes][cube]") {
 TEST_CASE("cube: misses, grazing rays, axis-parallel rays", "[shapes][cube]") {
   Hit h;
   CHECK_FALSE(intersect_cube(make_ray({0, 1.5f, 5}, {0, 0, -1}), h));
-  CHECK_FALSE(intersect_cube(make_ray({3, 3, 0}, {1, 1, 0}), h));  // pointing away
+  CHECK_FALSE(intersect_cube(make_ray({3, 3, 0}, {1, 1, 0}), h));                          // pointing away
   CHECK_FALSE(intersect_cube(make_ray({-5, 0, 0}, glm::normalize(Vec3(1, 0.5f, 0))), h));  // passes above
   REQUIRE(intersect_cube(make_ray({-5, 0.5f, 0.5f}, {1, 0, 0}), h));  // parallel to two slabs, inside them
   CHECK(h.t == Approx(4.0f));

@@ -9,7 +9,6 @@ using namespace rt;
 using rt::test::check_vec;
 using rt::test::make_ray;
 
-
 TEST_CASE("cylinder: through a cap only (along the axis, inside the radius)", "[shapes][cylinder]") {
   Hit h;
   REQUIRE(intersect_cylinder(make_ray({0.3f, 0.2f, 5}, {0, 0, -1}), h));

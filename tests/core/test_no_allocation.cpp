@@ -48,7 +48,8 @@ Scene small_scene() {
   }
   scene.meshes = {mesh};
   scene.mesh_first_triangle = {0};
-  for (ShapeKind k : {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
+  for (ShapeKind k :
+       {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
     AnalyticShape s;
     s.kind = k;
     s.transform = *make_transform(compose_trs({static_cast<float>(k) - 2.0f, -1, 0}, {10, 20, 30}, {0.5f, 0.7f, 0.4f}));

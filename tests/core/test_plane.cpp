@@ -8,7 +8,6 @@ using namespace rt;
 using rt::test::check_vec;
 using rt::test::make_ray;
 
-
 TEST_CASE("plane: hit from above and from below, normal +Y", "[shapes][plane]") {
   Hit h;
   REQUIRE(intersect_plane(make_ray({0.5f, 2, -0.5f}, {0, -1, 0}), h));

@@ -9,7 +9,6 @@ using namespace rt;
 using rt::test::check_vec;
 using rt::test::make_ray;
 
-
 TEST_CASE("sphere: hit from outside gives the near root and outward normal", "[shapes][sphere]") {
   Hit h;
   REQUIRE(intersect_sphere(make_ray({0, 0, 5}, {0, 0, -1}), h));

@@ -9,7 +9,6 @@ using namespace rt;
 using rt::test::check_vec;
 using rt::test::make_ray;
 
-
 TEST_CASE("compose_trs: scale, then rotate X, Y, Z, then translate", "[transform]") {
   const Mat4 m = compose_trs({10, 0, 0}, {90, 0, 0}, {2, 1, 1});
   const Transform t = *make_transform(m);
@@ -45,7 +44,7 @@ TEST_CASE("make_transform rejects singular and non-finite matrices", "[transform
   nan[3][0] = std::nanf("");
   CHECK_FALSE(make_transform(nan).has_value());
   CHECK(make_transform(compose_trs({0, 0, 0}, {0, 0, 0}, {1e-3f, 1e-3f, 1e-3f})).has_value());  // tiny, not singular
-  CHECK(make_transform(compose_trs({0, 0, 0}, {0, 0, 0}, {-1, 1, 1})).has_value());  // mirroring is fine
+  CHECK(make_transform(compose_trs({0, 0, 0}, {0, 0, 0}, {-1, 1, 1})).has_value());             // mirroring is fine
 }
 
 TEST_CASE("transform_bounds: a rotated unit box", "[transform]") {

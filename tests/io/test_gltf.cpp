@@ -156,11 +156,15 @@ TEST_CASE("glTF: byte indices, triangle strips and fans", "[io][gltf]") {
   std::string buffer = square_positions();
   append<uint8_t>(buffer, {0, 1, 3, 2});  // strip: (v0, v1, v2), then (v1, v3, v2) to keep the winding
   append<uint8_t>(buffer, {0, 0, 0, 0});  // padding to 4 bytes
-  Json doc = {{"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 5}},
-                                            {{"attributes", {{"POSITION", 0}}}, {"mode", 6}}}}}}},
-              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-                             {{"bufferView", 1}, {"componentType", 5121}, {"count", 4}, {"type", "SCALAR"}}}},
-              {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 4}}}}};
+  Json doc = {
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 5}},
+           {{"attributes", {{"POSITION", 0}}}, {"mode", 6}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", 5121}, {"count", 4}, {"type", "SCALAR"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 4}}}}};
   ImportError error;
   const auto m = import(write_gltf("strip-fan.gltf", buffer, doc), error);
   INFO(error.message);
@@ -169,21 +173,29 @@ TEST_CASE("glTF: byte indices, triangle strips and fans", "[io][gltf]") {
   REQUIRE(prims.size() == 2);
   CHECK(prims[0].mesh.indices == std::vector<uint32_t>{0, 1, 3, 1, 2, 3});
   CHECK(prims[1].mesh.indices == std::vector<uint32_t>{1, 2, 0, 2, 3, 0});  // fan around vertex 0, no indices
-  CHECK(prims[0].mesh.normals.empty());  // flat shading
+  CHECK(prims[0].mesh.normals.empty());                                     // flat shading
 }
 
 TEST_CASE("glTF: sparse accessors and normalised texture coordinates", "[io][gltf]") {
-  std::string buffer = square_positions();                // view 0: 48 bytes
+  std::string buffer = square_positions();                             // view 0: 48 bytes
   append<uint16_t>(buffer, {0, 0, 65535, 0, 65535, 65535, 0, 65535});  // view 1: UVs, 16 bytes
-  append<uint16_t>(buffer, {2, 0});                         // view 2: sparse index (+2 padding)
-  append<float>(buffer, {1, 1, 0.5f});                      // view 3: sparse value for vertex 2
-  Json doc = {{"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"mode", 6}}}}}}},
-              {"accessors",
-               {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
-                 {"sparse", {{"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}}, {"values", {{"bufferView", 3}}}}}},
-                {{"bufferView", 1}, {"componentType", 5123}, {"normalized", true}, {"count", 4}, {"type", "VEC2"}}}},
-              {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 16}},
-                               {{"buffer", 0}, {"byteOffset", 64}, {"byteLength", 2}}, {{"buffer", 0}, {"byteOffset", 68}, {"byteLength", 12}}}}};
+  append<uint16_t>(buffer, {2, 0});                                    // view 2: sparse index (+2 padding)
+  append<float>(buffer, {1, 1, 0.5f});                                 // view 3: sparse value for vertex 2
+  Json doc = {
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"mode", 6}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"count", 4},
+         {"type", "VEC3"},
+         {"sparse",
+          {{"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}}, {"values", {{"bufferView", 3}}}}}},
+        {{"bufferView", 1}, {"componentType", 5123}, {"normalized", true}, {"count", 4}, {"type", "VEC2"}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteLength", 48}},
+        {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 16}},
+        {{"buffer", 0}, {"byteOffset", 64}, {"byteLength", 2}},
+        {{"buffer", 0}, {"byteOffset", 68}, {"byteLength", 12}}}}};
   ImportError error;
   const auto m = import(write_gltf("sparse.gltf", buffer, doc), error);
   INFO(error.message);
@@ -197,10 +209,12 @@ TEST_CASE("glTF: sparse accessors and normalised texture coordinates", "[io][glt
 TEST_CASE("glTF: out-of-bounds accessors and indices are errors, not crashes", "[io][gltf]") {
   std::string buffer = square_positions();
   append<uint16_t>(buffer, {0, 1, 9, 0});  // index 9 of 4 vertices
-  Json doc = {{"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
-              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-                             {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
-              {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 8}}}}};
+  Json doc = {
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 8}}}}};
   ImportError error;
   CHECK_FALSE(import(write_gltf("bad-index.gltf", buffer, doc), error));
   CHECK_THAT(error.message, Catch::Contains("element 2 is 9, but there are only 4 vertices"));

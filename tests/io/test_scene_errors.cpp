@@ -87,7 +87,8 @@ TEST_CASE("wrong types name the pointer, the expected type and the value found",
   CHECK(b.first().message == "expected a number >= 0, found the string \"x\"");
   j = valid_scene();
   j["nodes"] = Json::object();
-  CHECK_THAT(line(load_json("nodes-object.json", j)), Catch::Contains("/nodes: expected an array of nodes, found an empty object"));
+  CHECK_THAT(line(load_json("nodes-object.json", j)),
+             Catch::Contains("/nodes: expected an array of nodes, found an empty object"));
 }
 
 TEST_CASE("missing required keys", "[io][errors]") {
@@ -138,9 +139,12 @@ TEST_CASE("unreadable glTF files", "[io][errors][gltf]") {
   Attempt a = load_json("missing-gltf.json", j);
   REQUIRE_FALSE(a.loaded);
   CHECK(a.first().pointer == "/nodes/0/mesh/file");
-  CHECK_THAT(a.first().message, Catch::Contains("expected a readable glTF 2.0 file") && Catch::Contains("file not found"));
+  CHECK_THAT(a.first().message,
+             Catch::Contains("expected a readable glTF 2.0 file") && Catch::Contains("file not found"));
   write_file("garbage.glb", std::string("glTF\x02\0\0\0\xff\xff\xff\x7fnot really", 24));
-  write_file("garbage.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 7}}]}]}");
+  write_file(
+      "garbage.gltf",
+      "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 7}}]}]}");
   for (const char* file : {"garbage.glb", "garbage.gltf"}) {
     j["nodes"][0]["mesh"]["file"] = file;
     a = load_json("corrupt-gltf.json", j);
@@ -209,7 +213,8 @@ TEST_CASE("camera that cannot look anywhere", "[io][errors]") {
 }
 
 TEST_CASE("duplicate keys and duplicate node names", "[io][errors]") {
-  const std::string text = R"({"camera": {"position": [0,0,5], "look_at": [0,0,0], "fov": 30, "fov": 40}, "nodes": []})";
+  const std::string text =
+      R"({"camera": {"position": [0,0,5], "look_at": [0,0,0], "fov": 30, "fov": 40}, "nodes": []})";
   Attempt a = load_text("duplicate-key.json", text);
   REQUIRE_FALSE(a.loaded);
   CHECK(a.first().pointer == "/camera/fov");
@@ -244,7 +249,9 @@ TEST_CASE("binary files and bytes that are not text never reach the terminal raw
   CHECK(a.first().message == "expected a JSON scene, found binary data");
   a = load_text("glb.json", std::string("glTF\x02\0\0\0", 8));
   CHECK_THAT(a.first().message, Catch::Contains("name it .glb"));
-  a = load_text("bad-bytes.json", "{\"camera\": {\"fov\": \"\x01" "caf\xc3\xa9\xff\"}}");
+  a = load_text("bad-bytes.json",
+                "{\"camera\": {\"fov\": \"\x01"
+                "caf\xc3\xa9\xff\"}}");
   REQUIRE_FALSE(a.loaded);
   for (const Diagnostic& d : a.diags.all())
     for (const char c : d.message + d.excerpt) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t'));

@@ -25,7 +25,8 @@ TriangleMesh make_benchmark_mesh(size_t min_triangles) {
   for (size_t i = 0; i < rings; ++i) {
     for (size_t j = 0; j < segments; ++j) {
       if (i != 0) mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i, j + 1), vertex(i + 1, j)});
-      if (i + 1 != rings) mesh.indices.insert(mesh.indices.end(), {vertex(i, j + 1), vertex(i + 1, j + 1), vertex(i + 1, j)});
+      if (i + 1 != rings)
+        mesh.indices.insert(mesh.indices.end(), {vertex(i, j + 1), vertex(i + 1, j + 1), vertex(i + 1, j)});
     }
   }
   return mesh;

@@ -61,7 +61,8 @@ RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, unsigned threads
   for (int repeat = 0; repeat < kRepeats; ++repeat) {
     const auto build_start = Clock::now();
     bvh = Bvh(prims, BvhBuildOptions{threads});
-    result.build_seconds = std::min(result.build_seconds, std::chrono::duration<double>(Clock::now() - build_start).count());
+    result.build_seconds =
+        std::min(result.build_seconds, std::chrono::duration<double>(Clock::now() - build_start).count());
   }
   const BvhStats stats = bvh.stats();
   result.bvh_nodes = stats.nodes;
@@ -75,7 +76,8 @@ RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, unsigned threads
   std::vector<Vec3> hit_points(pixels, Vec3(kInfinity));
   std::vector<Vec3> hit_normals(pixels);
   auto [primary_s, primary_hits] = parallel_trace(pixels, threads, [&](size_t i) {
-    Ray ray = camera.generate_ray(static_cast<float>(i % kWidth) + 0.5f, static_cast<float>(i / kWidth) + 0.5f, kWidth, kHeight);
+    Ray ray = camera.generate_ray(static_cast<float>(i % kWidth) + 0.5f, static_cast<float>(i / kWidth) + 0.5f, kWidth,
+                                  kHeight);
     Hit hit;
     if (!bvh.intersect(ray, hit)) return false;
     hit_points[i] = ray.at(hit.t);
@@ -114,7 +116,8 @@ RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, unsigned threads
     return bvh.occluded(ray);
   });
   result.shadow_mrays = shadow_pixels.empty() ? 0.0 : static_cast<double>(shadow_pixels.size()) / shadow_s / 1e6;
-  result.shadow_occluded_fraction = shadow_pixels.empty() ? 0.0 : static_cast<double>(occluded) / static_cast<double>(shadow_pixels.size());
+  result.shadow_occluded_fraction =
+      shadow_pixels.empty() ? 0.0 : static_cast<double>(occluded) / static_cast<double>(shadow_pixels.size());
   return result;
 }
 

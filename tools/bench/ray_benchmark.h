@@ -10,7 +10,7 @@ namespace rt {
 struct RayBenchmarkResult {
   unsigned threads = 1;
   double build_seconds = 0.0;
-  double primary_mrays = 0.0;     // million rays per second
+  double primary_mrays = 0.0;  // million rays per second
   double incoherent_mrays = 0.0;
   double shadow_mrays = 0.0;
   double primary_hit_fraction = 0.0;

@@ -9,9 +9,9 @@ namespace rt {
 
 struct ImageDifference {
   bool same_size = true;
-  int max_channel = 0;          // largest absolute difference of any channel, in levels of 255
-  double mean_channel = 0.0;    // mean absolute channel difference
-  size_t pixels_over = 0;       // pixels with any channel differing by more than the threshold
+  int max_channel = 0;        // largest absolute difference of any channel, in levels of 255
+  double mean_channel = 0.0;  // mean absolute channel difference
+  size_t pixels_over = 0;     // pixels with any channel differing by more than the threshold
 };
 
 ImageDifference compare_images(const Rgb8Image& a, const Rgb8Image& b, int threshold);
