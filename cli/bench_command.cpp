@@ -5,25 +5,17 @@
 
 #include "cli/exit_codes.h"
 #include "cli/report.h"
-#include "core/render/renderer.h"
+#include "cli/scene_loading.h"
+#include "core/bench/generated_mesh.h"
+#include "core/bench/ray_benchmark.h"
+#include "core/bench/render_benchmark.h"
+#include "core/thread_count.h"
 #include "io/scene_loader.h"
-#include "tools/bench/generated_mesh.h"
-#include "tools/bench/ray_benchmark.h"
 
 namespace rt {
 namespace {
 
 constexpr size_t kGeneratedTriangles = 300'000;
-
-// Best of three renders.
-double render_seconds(const LoadedScene& loaded, unsigned threads) {
-  RenderSettings settings = loaded.description.render;
-  settings.threads = threads;
-  Image image;
-  double best = kInfinity;
-  for (int repeat = 0; repeat < 3; ++repeat) best = std::min(best, render(loaded.scene, settings, image).seconds);
-  return best;
-}
 
 }  // namespace
 
@@ -35,7 +27,7 @@ int run_bench(const BenchCommand& cmd) {
     what = "generated displaced sphere";
   } else {
     Diagnostics diags;
-    const auto loaded = load_scene(cmd.model, LoadOptions{}, diags);
+    const auto loaded = load_scene(cmd.model, cli_load_options(), diags);
     print_diagnostics(stderr, diags);
     if (!loaded) return kExitBadInput;
     prims = make_primitive_set(loaded->scene.meshes, loaded->scene.bvh.shapes());
@@ -75,7 +67,7 @@ int run_bench(const BenchCommand& cmd) {
 
   if (cmd.scene.empty()) return kExitSuccess;
   Diagnostics diags;
-  const auto scene = load_scene(cmd.scene, LoadOptions{}, diags);
+  const auto scene = load_scene(cmd.scene, cli_load_options(), diags);
   if (!scene) {
     print_diagnostics(stderr, diags);
     std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
@@ -85,7 +77,7 @@ int run_bench(const BenchCommand& cmd) {
               scene->description.render.width, scene->description.render.height);
   std::vector<double> seconds;
   for (const unsigned t : thread_counts) {
-    seconds.push_back(render_seconds(*scene, t));
+    seconds.push_back(best_render_seconds(scene->scene, scene->description.render, t));
     std::printf("  %u thread%s %.3f s", t, t == 1 ? "" : "s", seconds.back());
   }
   if (seconds.size() > 1) std::printf("  (%.2fx)", seconds.front() / seconds.back());

@@ -9,8 +9,9 @@
 #include "cli/exit_codes.h"
 #include "cli/progress_bar.h"
 #include "cli/report.h"
+#include "cli/scene_loading.h"
 #include "core/render/renderer.h"
-#include "io/image_writer.h"
+#include "io/png_file.h"
 #include "io/scene_loader.h"
 
 namespace rt {
@@ -57,7 +58,7 @@ int run_render(const RenderCommand& cmd) {
 
   const auto load_start = std::chrono::steady_clock::now();
   Diagnostics diags;
-  std::optional<LoadedScene> loaded = load_scene(cmd.scene, LoadOptions{cmd.threads.value_or(0)}, diags);
+  std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0)), diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
@@ -76,7 +77,7 @@ int run_render(const RenderCommand& cmd) {
              show_progress ? [&](const RenderProgress& p) { bar.update(p); } : ProgressCallback{});
   bar.clear();
 
-  if (!write_png(output, image, error)) {
+  if (!write_png(output, encode_srgb8(image), error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitFailure;
   }

@@ -1,36 +1,25 @@
 #include "io/rgb8_image.h"
 
-#include <stb_image.h>
-#include <stb_image_write.h>
-
-#include "io/image_writer.h"
+#include <algorithm>
+#include <cmath>
 
 namespace rt {
 
-std::optional<Rgb8Image> read_rgb8(const std::string& path, std::string& error) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!data) {
-    error = std::string("cannot read image: ") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
-    return std::nullopt;
-  }
-  Rgb8Image image{w, h, std::vector<uint8_t>(data, data + static_cast<size_t>(w) * static_cast<size_t>(h) * 3)};
-  stbi_image_free(data);
-  return image;
+uint8_t encode_srgb8(float linear) {
+  const float c = std::isnan(linear) ? 0.0f : std::clamp(linear, 0.0f, 1.0f);
+  const float encoded = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+  return static_cast<uint8_t>(std::lround(encoded * 255.0f));
 }
 
-bool write_png(const std::string& path, const Rgb8Image& image, std::string& error) {
-  std::vector<uint8_t> png;
-  const auto append = [](void* context, void* data, int size) {
-    auto* out = static_cast<std::vector<uint8_t>*>(context);
-    const auto* bytes = static_cast<const uint8_t*>(data);
-    out->insert(out->end(), bytes, bytes + size);
-  };
-  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, image.rgb.data(), image.width * 3)) {
-    error = "PNG encoding failed";
-    return false;
+Rgb8Image encode_srgb8(const Image& image) {
+  Rgb8Image out{image.width, image.height, {}};
+  out.rgb.reserve(image.pixels.size() * 3);
+  for (const Vec3& p : image.pixels) {
+    out.rgb.push_back(encode_srgb8(p.x));
+    out.rgb.push_back(encode_srgb8(p.y));
+    out.rgb.push_back(encode_srgb8(p.z));
   }
-  return write_file_atomically(path, png, error);
+  return out;
 }
 
 }  // namespace rt

@@ -3,9 +3,9 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <string>
 #include <vector>
+
+#include "core/image.h"
 
 namespace rt {
 
@@ -15,10 +15,9 @@ struct Rgb8Image {
   std::vector<uint8_t> rgb;  // row-major, 3 bytes per pixel, row 0 at the top
 };
 
-// Reads PNG (or any format stb_image reads) as 8-bit RGB.
-std::optional<Rgb8Image> read_rgb8(const std::string& path, std::string& error);
-
-// Writes a PNG through a temporary file and an atomic rename.
-bool write_png(const std::string& path, const Rgb8Image& image, std::string& error);
+// Tone mapping rule for 8-bit output: each linear channel is clamped to [0, 1] (NaN counts as 0),
+// encoded with the sRGB transfer function and rounded to the nearest of 256 levels.
+uint8_t encode_srgb8(float linear);
+Rgb8Image encode_srgb8(const Image& image);
 
 }  // namespace rt

@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "core/render/renderer.h"
+#include "core/thread_count.h"
 #include "io/gltf_loader.h"
 #include "io/json_reader.h"
 
@@ -37,7 +37,7 @@ class Builder {
     }
   }
 
-  Scene finish(const BuildOptions& options) {
+  Scene finish(const LoadOptions& options) {
     Scene scene;
     scene.camera =
         Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
@@ -134,7 +134,7 @@ class Builder {
 
 }  // namespace
 
-std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const BuildOptions& options,
+std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options,
                                  Diagnostics& diags) {
   const size_t errors_before = diags.error_count();
   Builder builder(desc, source, diags);

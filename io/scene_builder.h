@@ -9,16 +9,13 @@
 #include "core/scene.h"
 #include "io/diagnostics.h"
 #include "io/json_document.h"
+#include "io/load_options.h"
 #include "io/scene_description.h"
 
 namespace rt {
 
-struct BuildOptions {
-  unsigned threads = 0;  // for the BVH build; 0 = all hardware threads
-};
-
 // `source` is the scene file the description came from, for error positions (may be null).
-std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const BuildOptions& options,
+std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options,
                                  Diagnostics& diags);
 
 }  // namespace rt

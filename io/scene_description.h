@@ -10,7 +10,7 @@
 
 #include "core/lights/light.h"
 #include "core/material.h"
-#include "core/render/render_settings.h"
+#include "core/render_settings.h"
 #include "core/shapes/analytic_shape.h"
 
 namespace rt {

@@ -26,7 +26,7 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   NodeDescription node;
   node.mesh = MeshReference{path, path, std::nullopt, ""};
   desc.nodes.push_back(std::move(node));
-  std::optional<Scene> scene = build_scene(desc, nullptr, BuildOptions{options.threads}, diags);
+  std::optional<Scene> scene = build_scene(desc, nullptr, options, diags);
   if (!scene) return std::nullopt;
   const float aspect = static_cast<float>(desc.render.width) / static_cast<float>(desc.render.height);
   scene->camera = Camera::framing(scene->bvh.bounds(), 40.0f, aspect);
@@ -50,9 +50,9 @@ std::optional<LoadedScene> load_scene(const std::string& path, const LoadOptions
   if (is_gltf_path(path)) return load_gltf_model(path, options, diags);
   std::optional<JsonDocument> doc = read_json_file(path, diags);
   if (!doc) return std::nullopt;
-  std::optional<SceneDescription> desc = parse_scene(*doc, diags);
+  std::optional<SceneDescription> desc = parse_scene(*doc, options, diags);
   if (!desc) return std::nullopt;
-  std::optional<Scene> scene = build_scene(*desc, &*doc, BuildOptions{options.threads}, diags);
+  std::optional<Scene> scene = build_scene(*desc, &*doc, options, diags);
   if (!scene) return std::nullopt;
   return LoadedScene{std::move(*desc), std::move(*scene)};
 }

@@ -10,13 +10,10 @@
 
 #include "core/scene.h"
 #include "io/diagnostics.h"
+#include "io/load_options.h"
 #include "io/scene_description.h"
 
 namespace rt {
-
-struct LoadOptions {
-  unsigned threads = 0;  // for the BVH build; 0 = all hardware threads
-};
 
 struct LoadedScene {
   SceneDescription description;  // render settings and what the file said

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 
-#include "core/render/integrator.h"
 #include "io/json_locate.h"
 #include "io/node_parser.h"
 
@@ -15,15 +14,14 @@ constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53:
 constexpr NumberRule kSamplesPerAxis{1, 16, false, false, true};
 constexpr NumberRule kFieldOfView{0, 180, true, true, false};
 
-void parse_render(const JsonReader& r, const Json& v, RenderSettings& s) {
+void parse_render(const JsonReader& r, const Json& v, const std::vector<std::string>& integrators, RenderSettings& s) {
   ObjectReader o(r, v, "/render");
   if (const auto w = o.number("width", kImageSize)) s.width = static_cast<int>(*w);
   if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
   if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
   if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
   if (const Json* i = o.get("integrator")) {
-    const std::vector<std::string> names = integrator_names();
-    if (const auto k = read_choice(r, *i, o.child("integrator"), names)) s.integrator = names[*k];
+    if (const auto k = read_choice(r, *i, o.child("integrator"), integrators)) s.integrator = integrators[*k];
   }
   if (const Json* aa = o.get("antialias")) {
     ObjectReader a(r, *aa, o.child("antialias"));
@@ -112,14 +110,14 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
 
 }  // namespace
 
-std::optional<SceneDescription> parse_scene(const JsonDocument& doc, Diagnostics& diags) {
+std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
   const size_t errors_before = diags.error_count();
   const JsonReader r(doc, diags);
   SceneDescription scene;
   scene.path = doc.path;
   ObjectReader top(r, doc.root, "");
   top.get("$schema");  // editors use it to find the schema; we don't need it
-  if (const Json* v = top.get("render")) parse_render(r, *v, scene.render);
+  if (const Json* v = top.get("render")) parse_render(r, *v, options.integrators, scene.render);
   if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
     parse_camera(r, *v, scene.camera);
   if (const auto bg = top.colour("background")) scene.background = *bg;

@@ -6,10 +6,11 @@
 #include <optional>
 
 #include "io/json_document.h"
+#include "io/load_options.h"
 #include "io/scene_description.h"
 
 namespace rt {
 
-std::optional<SceneDescription> parse_scene(const JsonDocument& doc, Diagnostics& diags);
+std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags);
 
 }  // namespace rt

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/render/ray_counters.h"
-#include "core/render/render_settings.h"
+#include "core/render_settings.h"
 #include "core/rng.h"
 #include "core/scene.h"
 

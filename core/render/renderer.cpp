@@ -12,11 +12,6 @@
 
 namespace rt {
 
-unsigned resolve_thread_count(unsigned requested) {
-  if (requested > 0) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
-}
-
 RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const ProgressCallback& progress,
                    uint32_t frame) {
   const auto start = std::chrono::steady_clock::now();

@@ -8,8 +8,9 @@
 
 #include "core/image.h"
 #include "core/render/ray_counters.h"
-#include "core/render/render_settings.h"
+#include "core/render_settings.h"
 #include "core/scene.h"
+#include "core/thread_count.h"
 
 namespace rt {
 
@@ -27,9 +28,6 @@ struct RenderStats {
 };
 
 using ProgressCallback = std::function<void(const RenderProgress&)>;
-
-// Threads actually used for a requested count (0 = all hardware threads).
-unsigned resolve_thread_count(unsigned requested);
 
 // Renders frame `frame` into `image` (resized to settings.width x settings.height). The progress
 // callback, if any, is called from the calling thread about ten times a second and once at the

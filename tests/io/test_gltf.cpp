@@ -8,6 +8,7 @@
 #include "io/gltf_loader.h"
 #include "io/json_document.h"
 #include "io/scene_loader.h"
+#include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
@@ -134,7 +135,7 @@ TEST_CASE("glTF samples: a model renders directly, framed by the default camera"
     return;
   }
   Diagnostics diags;
-  const auto loaded = load_scene(rt::test::sample_model("Avocado/glTF/Avocado.gltf"), LoadOptions{1}, diags);
+  const auto loaded = load_scene(rt::test::sample_model("Avocado/glTF/Avocado.gltf"), rt::test::load_options(), diags);
   REQUIRE(loaded);
   const Aabb b = loaded->scene.bvh.bounds();
   CHECK(glm::length(b.extent()) < 0.2f);  // the avocado is ~6 cm: the camera must come close

@@ -4,6 +4,7 @@
 
 #include "io/json_document.h"
 #include "io/scene_loader.h"
+#include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
@@ -30,7 +31,7 @@ struct Attempt {
 
 Attempt load_path(const std::string& path) {
   Attempt a;
-  a.loaded = load_scene(path, LoadOptions{1}, a.diags).has_value();
+  a.loaded = load_scene(path, rt::test::load_options(), a.diags).has_value();
   return a;
 }
 

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/lights/light.h"
-#include "io/image_writer.h"
+#include "io/rgb8_image.h"
 #include "materials/phong.h"
 
 using namespace rt;

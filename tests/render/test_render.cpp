@@ -5,8 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
-#include "io/image_writer.h"
+#include "io/png_file.h"
 #include "io/scene_loader.h"
+#include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 #include "tools/imagediff/image_compare.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 LoadedScene load(const std::string& path) {
   Diagnostics diags;
-  auto loaded = load_scene(path, LoadOptions{1}, diags);
+  auto loaded = load_scene(path, rt::test::load_options(), diags);
   for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
   REQUIRE(loaded);
   return std::move(*loaded);
@@ -77,7 +78,7 @@ TEST_CASE("golden image: tiny scene with every shape and a glTF mesh", "[render]
     WARN("golden image rewritten: " << golden);
     return;
   }
-  const auto expected = read_rgb8(golden, error);
+  const auto expected = read_png(golden, error);
   REQUIRE(expected);
   const ImageDifference d = compare_images(actual, *expected, 2);
   const size_t pixels = static_cast<size_t>(actual.width) * static_cast<size_t>(actual.height);

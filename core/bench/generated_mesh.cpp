@@ -1,4 +1,4 @@
-#include "tools/bench/generated_mesh.h"
+#include "core/bench/generated_mesh.h"
 
 #include <cmath>
 

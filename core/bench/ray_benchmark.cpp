@@ -1,4 +1,4 @@
-#include "tools/bench/ray_benchmark.h"
+#include "core/bench/ray_benchmark.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,0 +1,11 @@
+// How every subcommand asks io for a scene: with the names the render pipeline offers.
+#pragma once
+
+#include "core/render/integrator.h"
+#include "io/load_options.h"
+
+namespace rt {
+
+inline LoadOptions cli_load_options(unsigned threads = 0) { return LoadOptions{threads, integrator_names()}; }
+
+}  // namespace rt

@@ -1,0 +1,17 @@
+// PNG files: the one module that reads and writes them (stb_image / stb_image_write).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "io/rgb8_image.h"
+
+namespace rt {
+
+// Reads a PNG (or any format stb_image reads) as 8-bit RGB.
+std::optional<Rgb8Image> read_png(const std::string& path, std::string& error);
+
+// Writes a PNG through a temporary file and an atomic rename (io/atomic_file.h).
+bool write_png(const std::string& path, const Rgb8Image& image, std::string& error);
+
+}  // namespace rt
