@@ -1,6 +1,9 @@
-// Reading glTF accessors safely. tinygltf parses the file but does not check that an accessor's
-// bytes lie inside its buffer; these functions check every offset before reading, handle every
-// component type glTF allows (normalised integers included) and apply sparse substitutions.
+// Reading glTF accessors safely. tinygltf parses the file but checks neither bufferViews against
+// their buffers nor accessors against their views. These functions do, in forms that cannot
+// overflow (no `offset + length` on untrusted 64-bit values), and they check an accessor's count
+// against its data and the caller's limit before anything is allocated. They handle every
+// component type glTF allows (normalised integers as the specification converts them) and
+// sparse substitution. Every failure is a sentence in `error`.
 #pragma once
 
 #include <cstdint>
@@ -13,13 +16,17 @@ class Model;
 
 namespace rt {
 
-// Accessor `index` as count x `components` values, converted to double (exact for every
-// integer type). Fails, with a sentence in `error`, on any inconsistency.
-bool read_accessor(const tinygltf::Model& model, int index, int components, std::vector<double>& out,
-                   std::string& error);
+// Every bufferView lies inside its buffer and has a stride glTF allows. Once per file, after
+// loading; the readers below check again what they read, so they are safe on their own too.
+bool check_buffer_views(const tinygltf::Model& model, std::string& error);
 
-// An index accessor (SCALAR, unsigned byte / short / int), each index checked < vertex_count.
-bool read_indices(const tinygltf::Model& model, int index, size_t vertex_count, std::vector<uint32_t>& out,
-                  std::string& error);
+// Accessor `index` as count x `components` floats, count at most max_elements.
+bool read_float_accessor(const tinygltf::Model& model, int index, int components, uint64_t max_elements,
+                         std::vector<float>& out, std::string& error);
+
+// An index accessor: SCALAR, unsigned byte, short or int (glTF allows no other), at most
+// max_elements, each index < vertex_count.
+bool read_index_accessor(const tinygltf::Model& model, int index, uint64_t max_elements, uint64_t vertex_count,
+                         std::vector<uint32_t>& out, std::string& error);
 
 }  // namespace rt

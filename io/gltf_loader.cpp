@@ -1,37 +1,21 @@
 #include "io/gltf_loader.h"
 
 #include <filesystem>
-#include <fstream>
-#include <functional>
 
-#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
 
 #include "io/gltf_accessor.h"
-#include "io/json_document.h"
+#include "io/gltf_file.h"
+#include "io/input_file.h"
 #include "io/pbr_to_phong.h"
 
 namespace rt {
 namespace {
 
-// Textures are not decoded here (texture mapping loads its own images); accept every image.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;
-}
-
-bool is_binary_gltf(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  in.read(magic, 4);
-  return in.gcount() == 4 && std::string(magic, 4) == "glTF";
-}
-
-std::string trim(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  return s;
-}
+using std::to_string;
 
 Mat4 node_matrix(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
@@ -56,10 +40,13 @@ Mat4 node_matrix(const tinygltf::Node& node) {
 // Triangle list from a primitive's index stream in triangle, strip or fan mode, in the vertex
 // order the glTF 2.0 specification gives (3.7.2.1): strip triangle k is (v_k, v_{k+1+k%2},
 // v_{k+2-k%2}), which keeps one winding; fan triangle k is (v_{k+1}, v_{k+2}, v_0).
-std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& v, int mode) {
-  if (mode == TINYGLTF_MODE_TRIANGLES)
-    return std::vector<uint32_t>(v.begin(), v.begin() + static_cast<long>(v.size() / 3 * 3));
+std::vector<uint32_t> to_triangle_list(std::vector<uint32_t> v, int mode) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    v.resize(v.size() / 3 * 3);
+    return v;
+  }
   std::vector<uint32_t> out;
+  out.reserve(v.size() >= 2 ? 3 * (v.size() - 2) : 0);
   for (size_t k = 0; k + 2 < v.size(); ++k) {
     if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) out.insert(out.end(), {v[k], v[k + 1 + k % 2], v[k + 2 - k % 2]});
     else out.insert(out.end(), {v[k + 1], v[k + 2], v[0]});
@@ -67,107 +54,182 @@ std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& v, int mode)
   return out;
 }
 
-bool import_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const std::string& where,
-                      ImportedModel& out_model, std::vector<ImportedPrimitive>& out, std::string& error) {
-  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    out_model.warnings.push_back(where + ": points and lines are not rendered; primitive skipped");
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, const LoadLimits& limits, ImportedModel& out, std::string& error)
+      : model_(model), limits_(limits), out_(out), error_(error), imported_(model.meshes.size(), false) {
+    out_.meshes.resize(model.meshes.size());
+  }
+
+  // Imports mesh `index` once (the first time it is placed) and places it.
+  bool place(size_t index, const Mat4& to_file) {
+    if (!imported_[index]) {
+      imported_[index] = true;
+      const tinygltf::Mesh& mesh = model_.meshes[index];
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const std::string where = "mesh " + to_string(index) + (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") +
+                                  " primitive " + to_string(p);
+        if (!import_primitive(mesh.primitives[p], where, out_.meshes[index])) return false;
+      }
+    }
+    out_.instances.push_back(MeshInstance{index, to_file});
     return true;
   }
-  const auto pos_it = prim.attributes.find("POSITION");
-  if (pos_it == prim.attributes.end()) {
-    out_model.warnings.push_back(where + ": no POSITION attribute; primitive skipped");
-    return true;
-  }
-  ImportedPrimitive ip;
-  ip.material = prim.material;
-  if (prim.material >= static_cast<int>(model.materials.size())) {
-    error = where + ": material " + std::to_string(prim.material) + " does not exist";
+
+ private:
+  bool fail(const std::string& message) {
+    error_ = message;
     return false;
   }
-  std::vector<double> raw;
-  if (!read_accessor(model, pos_it->second, 3, raw, error)) return (error = where + " POSITION: " + error), false;
-  const size_t n = raw.size() / 3;
-  ip.mesh.positions.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    ip.mesh.positions[i] =
-        Vec3(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]), static_cast<float>(raw[3 * i + 2]));
-    if (!is_finite(ip.mesh.positions[i])) {
-      error = where + " POSITION: vertex " + std::to_string(i) + " is not a finite point";
-      return false;
+
+  bool import_primitive(const tinygltf::Primitive& prim, const std::string& where,
+                        std::vector<ImportedPrimitive>& out) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      out_.warnings.push_back(where + ": points and lines are not rendered; primitive skipped");
+      return true;
     }
-  }
-  if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-    if (!read_accessor(model, it->second, 3, raw, error)) return (error = where + " NORMAL: " + error), false;
-    if (raw.size() / 3 != n) return (error = where + ": NORMAL and POSITION counts differ"), false;
-    ip.mesh.normals.resize(n);
+    const auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) {
+      out_.warnings.push_back(where + ": no POSITION attribute; primitive skipped");
+      return true;
+    }
+    ImportedPrimitive ip;
+    ip.material = prim.material;
+    if (prim.material >= static_cast<int>(model_.materials.size()))
+      return fail(where + ": material " + to_string(prim.material) + " does not exist");
+    std::vector<float> raw;
+    if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, error_))
+      return fail(where + " POSITION: " + error_);
+    const size_t n = raw.size() / 3;
+    ip.mesh.positions.resize(n);
     for (size_t i = 0; i < n; ++i) {
-      const Vec3 v(static_cast<float>(raw[3 * i]), static_cast<float>(raw[3 * i + 1]),
-                   static_cast<float>(raw[3 * i + 2]));
-      const float len = glm::length(v);
-      ip.mesh.normals[i] = (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);  // zero: use the face normal
+      ip.mesh.positions[i] = Vec3(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
+      if (!is_finite(ip.mesh.positions[i]))
+        return fail(where + " POSITION: vertex " + to_string(i) + " is not a finite point in single precision");
     }
-  }
-  if (const auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-    if (!read_accessor(model, it->second, 2, raw, error)) return (error = where + " TEXCOORD_0: " + error), false;
-    if (raw.size() / 2 != n) return (error = where + ": TEXCOORD_0 and POSITION counts differ"), false;
-    ip.mesh.uvs.resize(n);
-    for (size_t i = 0; i < n; ++i)
-      ip.mesh.uvs[i] = Vec2(static_cast<float>(raw[2 * i]), static_cast<float>(raw[2 * i + 1]));
-  }
-  std::vector<uint32_t> indices;
-  if (prim.indices >= 0) {
-    if (!read_indices(model, prim.indices, n, indices, error)) return (error = where + " indices: " + error), false;
-  } else {
-    indices.resize(n);
-    for (size_t i = 0; i < n; ++i) indices[i] = static_cast<uint32_t>(i);
-  }
-  ip.mesh.indices = to_triangle_list(indices, mode);
-  if (ip.mesh.indices.empty()) {
-    out_model.warnings.push_back(where + ": no complete triangle; primitive skipped");
+    if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+      if (!read_float_accessor(model_, it->second, 3, limits_.vertices, raw, error_))
+        return fail(where + " NORMAL: " + error_);
+      if (raw.size() / 3 != n) return fail(where + ": NORMAL and POSITION counts differ");
+      ip.mesh.normals.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3 v(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
+        const float len = glm::length(v);
+        ip.mesh.normals[i] = (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);  // zero: use the face normal
+      }
+    }
+    if (const auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+      if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, error_))
+        return fail(where + " TEXCOORD_0: " + error_);
+      if (raw.size() / 2 != n) return fail(where + ": TEXCOORD_0 and POSITION counts differ");
+      ip.mesh.uvs.resize(n);
+      for (size_t i = 0; i < n; ++i) ip.mesh.uvs[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
+    }
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+      // A strip or fan of k indices makes k - 2 triangles; a list, k / 3.
+      const uint64_t max_indices = mode == TINYGLTF_MODE_TRIANGLES ? 3 * limits_.triangles : limits_.triangles + 2;
+      if (!read_index_accessor(model_, prim.indices, max_indices, n, indices, error_))
+        return fail(where + " indices: " + error_);
+    } else {
+      indices.resize(n);
+      for (size_t i = 0; i < n; ++i) indices[i] = static_cast<uint32_t>(i);
+    }
+    ip.mesh.indices = to_triangle_list(std::move(indices), mode);
+    if (ip.mesh.indices.empty()) {
+      out_.warnings.push_back(where + ": no complete triangle; primitive skipped");
+      return true;
+    }
+    out.push_back(std::move(ip));
     return true;
   }
-  out.push_back(std::move(ip));
-  return true;
-}
 
-bool import_mesh(const tinygltf::Model& model, size_t mesh_index, ImportedModel& out, std::string& error) {
-  const tinygltf::Mesh& mesh = model.meshes[mesh_index];
-  std::vector<ImportedPrimitive>& prims = out.meshes[mesh_index];
-  for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-    const std::string where = "mesh " + std::to_string(mesh_index) +
-                              (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") + " primitive " + std::to_string(p);
-    if (!import_primitive(model, mesh.primitives[p], where, out, prims, error)) return false;
+  const tinygltf::Model& model_;
+  const LoadLimits& limits_;
+  ImportedModel& out_;
+  std::string& error_;
+  std::vector<bool> imported_;
+};
+
+// The default scene's node forest, walked without recursion. glTF requires the nodes to form
+// disjoint trees: no node with two parents, no cycles, roots that are nobody's child. Checking
+// that first bounds the walk by the number of nodes (a node listed twice as a child would
+// otherwise double the work at every level).
+bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
+                 Importer& importer, std::string& error) {
+  const size_t count = model.nodes.size();
+  if (count > limits.nodes) {
+    error = "it has " + to_string(count) + " nodes, more than the " + to_string(limits.nodes) + " rtcli accepts";
+    return false;
+  }
+  std::vector<int> parent(count, -1);
+  for (size_t i = 0; i < count; ++i) {
+    for (const int child : model.nodes[i].children) {
+      if (child < 0 || static_cast<size_t>(child) >= count) {
+        error = "node " + to_string(i) + " lists child " + to_string(child) + ", which does not exist";
+        return false;
+      }
+      if (static_cast<size_t>(child) == i || parent[static_cast<size_t>(child)] >= 0) {
+        error = "node " + to_string(child) + " is a child of node " + to_string(i) +
+                (static_cast<size_t>(child) == i ? " itself"
+                                                 : " and of node " + to_string(parent[static_cast<size_t>(child)])) +
+                "; glTF requires every node to have at most one parent";
+        return false;
+      }
+      parent[static_cast<size_t>(child)] = static_cast<int>(i);
+    }
+  }
+  std::vector<bool> is_root(count, false);
+  for (const int root : scene.nodes) {
+    if (root < 0 || static_cast<size_t>(root) >= count) {
+      error = "the scene lists node " + to_string(root) + ", which does not exist";
+      return false;
+    }
+    if (parent[static_cast<size_t>(root)] >= 0 || is_root[static_cast<size_t>(root)]) {
+      error = "the scene lists node " + to_string(root) +
+              (is_root[static_cast<size_t>(root)] ? " twice" : ", which is a child of node " +
+                                                                  to_string(parent[static_cast<size_t>(root)])) +
+              "; glTF requires the scene's nodes to be distinct roots";
+      return false;
+    }
+    is_root[static_cast<size_t>(root)] = true;
+  }
+  // Every node is reached at most once: from its only parent, or as a root without one. Nodes in
+  // a cycle have their parents inside the cycle, so no root reaches them.
+  struct Item {
+    int node;
+    Mat4 parent;
+  };
+  std::vector<Item> stack;
+  for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) stack.push_back(Item{*it, Mat4(1.0f)});
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    const tinygltf::Node& node = model.nodes[static_cast<size_t>(item.node)];
+    const Mat4 world = item.parent * node_matrix(node);
+    if (node.mesh >= static_cast<int>(model.meshes.size())) {
+      error = "node " + to_string(item.node) + " uses mesh " + to_string(node.mesh) + ", which does not exist";
+      return false;
+    }
+    if (node.mesh >= 0 && !importer.place(static_cast<size_t>(node.mesh), world)) return false;
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, world});
   }
   return true;
 }
 
 }  // namespace
 
-std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         ImportError& import_error) {
+std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
+                                               const std::optional<std::string>& mesh_name, const LoadLimits& limits,
+                                               ImportError& import_error) {
   std::string& error = import_error.message;
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) {
-    error = "file not found";
-    return std::nullopt;
-  }
-  if (std::filesystem::is_directory(path, ec)) {
-    error = "is a directory, not a file";
-    return std::nullopt;
-  }
-  tinygltf::Model model;
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
-  std::string err, warn;
-  const bool ok = is_binary_gltf(path) ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                                       : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  if (!ok) {
-    error = err.empty() ? "not a readable glTF file" : clean_parser_message(trim(err));
-    return std::nullopt;
-  }
+  GltfFile file = parse_gltf(bytes, base_dir, limits, error);
   ImportedModel out;
-  if (!warn.empty()) out.warnings.push_back(trim(warn));
+  out.files = std::move(file.files);
+  out.warnings = std::move(file.warnings);
+  if (!file.model) return std::nullopt;
+  const tinygltf::Model& model = *file.model;
   for (const tinygltf::Material& m : model.materials) {
     const auto& pbr = m.pbrMetallicRoughness;
     const Vec3 base = pbr.baseColorFactor.size() >= 3
@@ -177,58 +239,45 @@ std::optional<ImportedModel> import_gltf(const std::string& path, const std::opt
     out.materials.push_back(
         pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor)));
   }
-  out.meshes.resize(model.meshes.size());
+  Importer importer(model, limits, out, error);
 
   if (mesh_name) {
     std::string names;
     for (size_t i = 0; i < model.meshes.size(); ++i) {
       if (model.meshes[i].name == *mesh_name) {
-        if (!import_mesh(model, i, out, error)) return std::nullopt;
-        out.instances.push_back(MeshInstance{i, Mat4(1.0f)});
+        if (!importer.place(i, Mat4(1.0f))) return std::nullopt;
         return out;
       }
-      names += (names.empty() ? "\"" : ", \"") + model.meshes[i].name + "\"";
+      if (i < 20) names += (names.empty() ? "\"" : ", \"") + model.meshes[i].name + "\"";
     }
+    if (model.meshes.size() > 20) names += ", ...";
     import_error.unknown_mesh = true;
     error = "its meshes are " + (names.empty() ? std::string("none") : names);
     return std::nullopt;
   }
 
-  std::vector<bool> imported(model.meshes.size(), false);
-  const auto place = [&](size_t mesh, const Mat4& m) -> bool {
-    if (!imported[mesh] && !import_mesh(model, mesh, out, error)) return false;
-    imported[mesh] = true;
-    out.instances.push_back(MeshInstance{mesh, m});
-    return true;
-  };
   const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
-  if (scene < 0 || scene >= static_cast<int>(model.scenes.size())) {
+  if (scene >= static_cast<int>(model.scenes.size())) {
+    error = "its default scene " + to_string(scene) + " does not exist";
+    return std::nullopt;
+  }
+  if (scene < 0) {
     for (size_t i = 0; i < model.meshes.size(); ++i)
-      if (!place(i, Mat4(1.0f))) return std::nullopt;
+      if (!importer.place(i, Mat4(1.0f))) return std::nullopt;
     return out;
   }
-  // Depth-first over the node tree; the depth limit also stops cycles in malformed files.
-  std::function<bool(int, const Mat4&, int)> visit = [&](int node_index, const Mat4& parent, int depth) -> bool {
-    if (node_index < 0 || node_index >= static_cast<int>(model.nodes.size()) || depth > 256) {
-      error =
-          "node " + std::to_string(node_index) + (depth > 256 ? " is nested too deeply (a cycle?)" : " does not exist");
-      return false;
-    }
-    const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
-    const Mat4 world = parent * node_matrix(node);
-    if (node.mesh >= static_cast<int>(model.meshes.size())) {
-      error =
-          "node " + std::to_string(node_index) + " uses mesh " + std::to_string(node.mesh) + ", which does not exist";
-      return false;
-    }
-    if (node.mesh >= 0 && !place(static_cast<size_t>(node.mesh), world)) return false;
-    for (const int child : node.children)
-      if (!visit(child, world, depth + 1)) return false;
-    return true;
-  };
-  for (const int root : model.scenes[static_cast<size_t>(scene)].nodes)
-    if (!visit(root, Mat4(1.0f), 0)) return std::nullopt;
+  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, error)) return std::nullopt;
   return out;
+}
+
+std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
+                                         const LoadLimits& limits, ImportError& error) {
+  auto bytes = read_input_bytes(path, limits.gltf_total_bytes, error.message);
+  if (!bytes) return std::nullopt;
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, error);
+  if (model) model->files.insert(model->files.begin(), path);
+  return model;
 }
 
 }  // namespace rt

@@ -1,7 +1,8 @@
 // Triangle meshes from a glTF 2.0 file (.gltf with external or embedded buffers, or .glb).
 // Every primitive in triangle, strip or fan mode is imported; points and lines are skipped
 // with a warning. Positions stay in the glTF file's own space; instances say where each mesh
-// goes, so a mesh used by several nodes is read once.
+// goes, so a mesh used by several nodes is read once. Everything a file says is checked against
+// the specification and the limits before it is used (io/gltf_file.h, io/gltf_accessor.h).
 #pragma once
 
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "core/material.h"
 #include "core/mesh.h"
+#include "io/load_options.h"
 
 namespace rt {
 
@@ -28,6 +30,7 @@ struct ImportedModel {
   std::vector<MeshInstance> instances;
   std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong
   std::vector<std::string> warnings;
+  std::vector<std::string> files;  // every file read: the model and its external buffers
 };
 
 struct ImportError {
@@ -38,6 +41,11 @@ struct ImportError {
 // With mesh_name: that mesh only, with an identity transform. Without: every mesh the file's
 // default scene places, at its node transforms (or every mesh once if the file has no scene).
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         ImportError& error);
+                                         const LoadLimits& limits, ImportError& error);
+
+// The same from the file's bytes already in memory; external buffers resolve against base_dir.
+std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
+                                               const std::optional<std::string>& mesh_name, const LoadLimits& limits,
+                                               ImportError& error);
 
 }  // namespace rt

@@ -1,13 +1,9 @@
 #include "io/json_document.h"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <vector>
 
+#include "io/input_file.h"
 #include "io/json_locate.h"
 
 namespace rt {
@@ -70,7 +66,7 @@ class TrackingSax {
   };
   const std::optional<Error>& error() const { return error_; }
   bool nesting_exceeded() const { return nesting_exceeded_; }
-  static constexpr size_t kMaxNesting = 512;
+  static constexpr size_t kMaxNesting = kMaxJsonNesting;
   const std::vector<std::string>& duplicates() const { return duplicates_; }
 
  private:
@@ -81,8 +77,6 @@ class TrackingSax {
     std::set<std::string> keys;
   };
 
-  // Scenes are a few levels deep; refusing absurd nesting keeps every later recursive walk of
-  // the tree (error location, destruction) far from the stack limit.
   bool too_deep() {
     if (frames_.size() < kMaxNesting) return false;
     nesting_exceeded_ = true;
@@ -109,6 +103,25 @@ class TrackingSax {
 
 }  // namespace
 
+bool json_nesting_within(std::string_view text, size_t max_depth) {
+  size_t depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) return false;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return true;
+}
+
 // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 3, column 8: ";
 // we print our own position, so keep only what follows.
 std::string clean_parser_message(std::string what) {
@@ -133,34 +146,9 @@ Diagnostic at_offset(const std::string& path, const std::string& text, size_t of
 
 }  // namespace
 
-std::optional<std::string> read_text_file(const std::string& path, std::string& error) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) {
-    error = "file not found";
-    return std::nullopt;
-  }
-  if (std::filesystem::is_directory(status)) {
-    error = "is a directory, not a file";
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return std::nullopt;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    error = std::string("cannot read: ") + std::strerror(errno);
-    return std::nullopt;
-  }
-  return buffer.str();
-}
-
-std::optional<JsonDocument> read_json_file(const std::string& path, Diagnostics& diags) {
+std::optional<JsonDocument> read_json_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags) {
   std::string error;
-  std::optional<std::string> text = read_text_file(path, error);
+  std::optional<std::string> text = read_input_text(path, max_bytes, error);
   if (!text) {
     diags.file_error(path, error);
     return std::nullopt;

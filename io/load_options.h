@@ -1,15 +1,30 @@
-// What the caller tells the loaders: threads for the BVH build, and the names the render
-// pipeline offers (io does not link the renderer; cli passes integrator_names()).
+// What the caller tells the loaders: threads for the BVH build, the names the render pipeline
+// offers (io does not link the renderer; cli passes integrator_names()), and the limits on what
+// a file may ask for. The limits keep a hostile or broken file from exhausting memory or time:
+// everything is checked against them before it is allocated. README.md ("Limits") documents
+// the defaults; the fuzzers run with smaller ones.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace rt {
 
+struct LoadLimits {
+  uint64_t scene_file_bytes = uint64_t{64} << 20;  // a JSON scene file
+  uint64_t gltf_json_bytes = uint64_t{64} << 20;   // a .gltf file, or the JSON chunk of a .glb
+  uint64_t gltf_total_bytes = uint64_t{1} << 30;   // a model's files together: .glb or .gltf plus its .bin files
+  uint64_t vertices = uint64_t{1} << 25;           // in one glTF primitive (33,554,432)
+  uint64_t triangles = uint64_t{1} << 25;          // in the whole scene, every instance counted
+  uint64_t instances = uint64_t{1} << 20;          // analytic shapes plus placed mesh primitives
+  uint64_t nodes = uint64_t{1} << 20;              // scene-file nodes, and glTF nodes per file
+};
+
 struct LoadOptions {
-  unsigned threads = 0;                              // for the BVH build; 0 = all hardware threads
+  unsigned threads = 0;                             // for the BVH build; 0 = all hardware threads
   std::vector<std::string> integrators{"whitted"};  // valid values of /render/integrator
+  LoadLimits limits;
 };
 
 }  // namespace rt

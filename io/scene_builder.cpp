@@ -9,26 +9,28 @@
 namespace rt {
 namespace {
 
+bool is_finite(const Aabb& box) { return rt::is_finite(box.lo) && rt::is_finite(box.hi); }
+
 class Builder {
  public:
   // The scene's own materials come first, so their indices stay those of the description;
   // glTF files append theirs as they are loaded.
-  Builder(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags)
-      : desc_(desc), source_(source), diags_(diags) {
+  Builder(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options, Diagnostics& diags)
+      : desc_(desc), source_(source), options_(options), diags_(diags) {
     for (const MaterialDescription& m : desc_.materials) materials_.push_back(m.material);
   }
 
   void add_nodes(const std::vector<NodeDescription>& nodes, const Mat4& parent) {
     for (const NodeDescription& node : nodes) {
+      if (over_limit_) return;
       const Mat4 world = parent * node.local;
       if (node.shape || node.mesh) {
         const auto transform = make_transform(world);
         if (!transform) {
-          error(node.pointer,
-                "expected an invertible world transform, found a singular one (the transforms above this "
-                "node multiply to a flattening scale)");
+          error(node.pointer, "expected an invertible world transform, found a singular one (the transforms above this "
+                              "node multiply to a flattening scale)");
         } else if (node.shape) {
-          shapes_.push_back(AnalyticShape{*node.shape, node.material.value_or(0), *transform});
+          add_shape(AnalyticShape{*node.shape, node.material.value_or(0), *transform}, node.pointer);
         } else {
           add_mesh(*node.mesh, world, node.material);
         }
@@ -37,7 +39,7 @@ class Builder {
     }
   }
 
-  Scene finish(const LoadOptions& options) {
+  Scene finish() {
     Scene scene;
     scene.camera =
         Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
@@ -50,19 +52,41 @@ class Builder {
       scene.mesh_first_triangle.push_back(first);
       first += static_cast<uint32_t>(m.triangle_count());
     }
-    scene.bvh =
-        Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options.threads)});
+    scene.bvh = Bvh(make_primitive_set(meshes_, std::move(shapes_)),
+                    BvhBuildOptions{resolve_thread_count(options_.threads)});
     scene.meshes = std::move(meshes_);
     return scene;
   }
 
+  std::vector<std::string> take_files() { return std::move(files_); }
+
  private:
+  // Shapes and placed mesh primitives together; one error when the limit is passed, then stop.
+  bool take_instance(const std::string& pointer) {
+    if (++instances_ <= options_.limits.instances) return true;
+    limit_error(pointer, "expected at most " + std::to_string(options_.limits.instances) +
+                             " shapes and placed mesh primitives in a scene, found more");
+    return false;
+  }
+
+  void add_shape(const AnalyticShape& shape, const std::string& pointer) {
+    if (!take_instance(pointer)) return;
+    const Aabb bounds = world_bounds(shape);
+    if (!is_finite(bounds)) {
+      error(pointer, "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found "
+                     "one that reaches infinity");
+      return;
+    }
+    shapes_.push_back(shape);
+  }
+
   void add_mesh(const MeshReference& ref, const Mat4& world, std::optional<uint32_t> material_override) {
     const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
     auto it = models_.find(key);
     if (it == models_.end()) {
       ImportError why;
-      auto model = import_gltf(ref.resolved_path, ref.mesh_name, why);
+      auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, why);
+      if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
       if (!model && why.unknown_mesh) {
         error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
                                          "), found \"" + *ref.mesh_name + "\"");
@@ -84,8 +108,23 @@ class Builder {
       const auto transform = make_transform(world * inst.to_file);
       if (!transform) continue;  // a node of the file scaled to nothing: it has no visible surface
       for (const ImportedPrimitive& p : loaded.model.meshes[inst.mesh]) {
+        if (!take_instance(ref.pointer)) return;
+        // Counted before the copy is made, so that instancing cannot exhaust memory.
+        triangles_ += p.mesh.triangle_count();
+        if (triangles_ > options_.limits.triangles) {
+          limit_error(ref.pointer, "expected at most " + std::to_string(options_.limits.triangles) +
+                                       " triangles in a scene (every instance counted), found more");
+          return;
+        }
         TriangleMesh mesh = transformed(p.mesh, *transform);
-        mesh.material = material_override ? *material_override
+        for (const Vec3& v : mesh.positions) {
+          if (!rt::is_finite(v)) {
+            error(ref.pointer, "expected \"" + ref.file + "\" within the single-precision range (|x| < 3.4e38) after "
+                               "the transforms that place it, found vertices that reach infinity");
+            return;
+          }
+        }
+        mesh.material = material_override              ? *material_override
                         : p.material >= 0 ? loaded.first_material + static_cast<uint32_t>(p.material)
                                           : default_material();
         meshes_.push_back(std::move(mesh));
@@ -104,6 +143,10 @@ class Builder {
     return *default_material_;
   }
 
+  void limit_error(const std::string& pointer, const std::string& message) {
+    over_limit_ = true;
+    error(pointer, message + " (a limit that keeps memory bounded; see README, \"Limits\")");
+  }
   void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
   void warning(const std::string& pointer, std::string message) {
     report(Severity::kWarning, pointer, std::move(message));
@@ -124,23 +167,29 @@ class Builder {
 
   const SceneDescription& desc_;
   const JsonDocument* source_;
+  const LoadOptions& options_;
   Diagnostics& diags_;
   std::vector<Material> materials_;
   std::vector<AnalyticShape> shapes_;
   std::vector<TriangleMesh> meshes_;
   std::map<std::string, LoadedModel> models_;
   std::optional<uint32_t> default_material_;
+  std::vector<std::string> files_;
+  uint64_t instances_ = 0;
+  uint64_t triangles_ = 0;
+  bool over_limit_ = false;
 };
 
 }  // namespace
 
 std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options,
-                                 Diagnostics& diags) {
+                                 Diagnostics& diags, std::vector<std::string>* files) {
   const size_t errors_before = diags.error_count();
-  Builder builder(desc, source, diags);
+  Builder builder(desc, source, options, diags);
   builder.add_nodes(desc.nodes, Mat4(1.0f));
+  if (files) *files = builder.take_files();
   if (diags.error_count() > errors_before) return std::nullopt;
-  return builder.finish(options);
+  return builder.finish();
 }
 
 }  // namespace rt

@@ -1,7 +1,8 @@
 // SceneDescription -> the immutable Scene: loads each glTF file once, composes node transforms
 // down the tree, turns shapes and meshes into world-space primitives and builds the BVH.
-// Problems (an unreadable glTF file, a world transform that became singular) are recorded
-// against the scene file at the node's JSON pointer.
+// Problems (an unreadable glTF file, a world transform that became singular, a shape beyond
+// the float range, more triangles or instances than the limits allow) are recorded against the
+// scene file at the node's JSON pointer.
 #pragma once
 
 #include <optional>
@@ -15,7 +16,8 @@
 namespace rt {
 
 // `source` is the scene file the description came from, for error positions (may be null).
+// `files`, if given, receives every file read (glTF models and their buffers).
 std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options,
-                                 Diagnostics& diags);
+                                 Diagnostics& diags, std::vector<std::string>* files = nullptr);
 
 }  // namespace rt

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <new>
 
 #include "io/json_document.h"
 #include "io/scene_builder.h"
@@ -26,17 +27,39 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   NodeDescription node;
   node.mesh = MeshReference{path, path, std::nullopt, ""};
   desc.nodes.push_back(std::move(node));
-  std::optional<Scene> scene = build_scene(desc, nullptr, options, diags);
+  std::vector<std::string> files;
+  std::optional<Scene> scene = build_scene(desc, nullptr, options, diags, &files);
   if (!scene) return std::nullopt;
   const float aspect = static_cast<float>(desc.render.width) / static_cast<float>(desc.render.height);
-  scene->camera = Camera::framing(scene->bvh.bounds(), 40.0f, aspect);
+  // A model without triangles still gets a camera and a light: it renders the background.
+  const Aabb bounds = scene->bvh.bounds().empty() ? Aabb{Vec3(-1.0f), Vec3(1.0f)} : scene->bvh.bounds();
+  scene->camera = Camera::framing(bounds, 40.0f, aspect);
   // A light up and to the right of the camera: shading shows the form, shadows fall behind.
-  const float reach = glm::length(scene->camera.position - scene->bvh.bounds().centre());
+  const float reach = glm::length(scene->camera.position - bounds.centre());
   PointLight light;
   light.position = scene->camera.position + reach * (0.5f * scene->camera.right + 0.6f * scene->camera.up);
+  if (!is_finite(scene->camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
+    diags.file_error(path, "expected a model small enough to frame in single precision, found one whose extent ("
+                           "from " + std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
+                               " in x) puts the camera at infinity");
+    return std::nullopt;
+  }
   scene->lights = {light};
-  desc.camera = CameraDescription{scene->camera.position, scene->bvh.bounds().centre(), Vec3(0.0f, 1.0f, 0.0f), 40.0f};
-  return LoadedScene{std::move(desc), std::move(*scene)};
+  desc.camera = CameraDescription{scene->camera.position, bounds.centre(), Vec3(0.0f, 1.0f, 0.0f), 40.0f};
+  return LoadedScene{std::move(desc), std::move(*scene), std::move(files)};
+}
+
+std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
+  std::optional<JsonDocument> doc = read_json_file(path, options.limits.scene_file_bytes, diags);
+  if (!doc) return std::nullopt;
+  std::optional<SceneDescription> desc = parse_scene(*doc, options, diags);
+  if (!desc) return std::nullopt;
+  std::vector<std::string> files{path};
+  std::vector<std::string> models;
+  std::optional<Scene> scene = build_scene(*desc, &*doc, options, diags, &models);
+  if (!scene) return std::nullopt;
+  files.insert(files.end(), models.begin(), models.end());
+  return LoadedScene{std::move(*desc), std::move(*scene), std::move(files)};
 }
 
 }  // namespace
@@ -47,14 +70,14 @@ bool is_gltf_path(const std::string& path) {
 }
 
 std::optional<LoadedScene> load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
-  if (is_gltf_path(path)) return load_gltf_model(path, options, diags);
-  std::optional<JsonDocument> doc = read_json_file(path, diags);
-  if (!doc) return std::nullopt;
-  std::optional<SceneDescription> desc = parse_scene(*doc, options, diags);
-  if (!desc) return std::nullopt;
-  std::optional<Scene> scene = build_scene(*desc, &*doc, options, diags);
-  if (!scene) return std::nullopt;
-  return LoadedScene{std::move(*desc), std::move(*scene)};
+  try {
+    return is_gltf_path(path) ? load_gltf_model(path, options, diags) : load_json_scene(path, options, diags);
+  } catch (const std::bad_alloc&) {
+    diags.file_error(path, "ran out of memory while loading: the file asks for more than this machine has");
+  } catch (const std::exception& e) {
+    diags.file_error(path, std::string("could not be loaded: ") + e.what());
+  }
+  return std::nullopt;
 }
 
 }  // namespace rt

@@ -2,11 +2,13 @@
 //   .json        a scene file (schemas/scene.schema.json)
 //   .gltf/.glb   a model on its own: the whole file's default scene, framed by a default camera
 //                from the front and above, lit by a point light beside the camera
-// Every problem goes into `diags`; nothing comes back if any of them is an error.
+// Every problem goes into `diags`; nothing comes back if any of them is an error. Loading never
+// throws: running out of memory or any other exception on the way becomes an error about the file.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/scene.h"
 #include "io/diagnostics.h"
@@ -18,6 +20,7 @@ namespace rt {
 struct LoadedScene {
   SceneDescription description;  // render settings and what the file said
   Scene scene;
+  std::vector<std::string> inputs;  // every file read: the scene, glTF models, their buffers
 };
 
 std::optional<LoadedScene> load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags);

@@ -23,7 +23,7 @@ size_t triangle_count(const ImportedModel& m) {
 }
 
 std::optional<ImportedModel> import(const std::string& path, ImportError& error, std::optional<std::string> mesh = {}) {
-  return import_gltf(path, mesh, error);
+  return import_gltf(path, mesh, LoadLimits{}, error);
 }
 
 std::string base64(const std::string& bytes) {
@@ -218,7 +218,7 @@ TEST_CASE("glTF: out-of-bounds accessors and indices are errors, not crashes", "
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 8}}}}};
   ImportError error;
   CHECK_FALSE(import(write_gltf("bad-index.gltf", buffer, doc), error));
-  CHECK_THAT(error.message, Catch::Contains("element 2 is 9, but there are only 4 vertices"));
+  CHECK_THAT(error.message, Catch::Contains("element 2 is index 9, but there are only 4 vertices"));
 
   doc["accessors"][0]["count"] = 400;  // reads far past the 48-byte view
   CHECK_FALSE(import(write_gltf("overrun.gltf", buffer, doc), error));

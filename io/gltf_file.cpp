@@ -1,0 +1,151 @@
+#include "io/gltf_file.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include <tiny_gltf.h>
+
+#include "io/gltf_accessor.h"
+#include "io/input_file.h"
+#include "io/json_document.h"
+
+namespace rt {
+namespace {
+
+// What the file-system callbacks share: the budget left for external buffers, and the files read.
+struct FileAccess {
+  uint64_t budget = 0;
+  std::vector<std::string> files;
+};
+
+bool file_exists(const std::string& path, void*) {
+  // Anything that is there counts, so that read_file() reports what is wrong with it (a FIFO, a
+  // link loop) instead of tinygltf's "file not found".
+  struct stat st {};
+  return ::lstat(path.c_str(), &st) == 0;
+}
+
+std::string expand_path(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  auto* access = static_cast<FileAccess*>(user);
+  std::string error;
+  auto bytes = read_input_bytes(path, access->budget, error);
+  if (!bytes) {
+    if (err) *err = error;
+    return false;
+  }
+  access->budget -= bytes->size();
+  access->files.push_back(path);
+  *out = std::move(*bytes);
+  return true;
+}
+
+bool write_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err = "rtcli never writes glTF files";
+  return false;
+}
+
+// Textures are not decoded here (texture mapping loads its own images); accept every image.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// tinygltf's messages end lines with "\n" and may repeat a prefix; one line per message, joined.
+std::string clean(const std::string& text) {
+  std::string out, line;
+  for (const char c : text + "\n") {
+    if (c != '\n') {
+      line.push_back(c);
+      continue;
+    }
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (!line.empty()) out += (out.empty() ? "" : "; ") + clean_parser_message(line);
+    line.clear();
+  }
+  return out;
+}
+
+uint32_t read_u32(const unsigned char* p) {
+  uint32_t v;
+  std::memcpy(&v, p, 4);  // GLB is little-endian, as is every machine rtcli builds on
+  return v;
+}
+
+}  // namespace
+
+const std::vector<std::string>& supported_gltf_extensions() {
+  // Quantized attributes are read like any other component type (io/gltf_accessor.cpp).
+  static const std::vector<std::string> names{"KHR_mesh_quantization"};
+  return names;
+}
+
+GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& base_dir, const LoadLimits& limits,
+                    std::string& error) {
+  GltfFile result;
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  // The JSON part: its size and nesting are checked before tinygltf builds a tree of it (which
+  // it walks recursively).
+  std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (binary) {
+    if (bytes.size() < 20) {
+      error = "a .glb file of " + std::to_string(bytes.size()) + " bytes is shorter than its 20-byte header";
+      return result;
+    }
+    const uint32_t json_length = read_u32(bytes.data() + 12);
+    if (json_length > bytes.size() - 20) {
+      error = "the .glb header announces " + std::to_string(json_length) + " bytes of JSON, but the file has only " +
+              std::to_string(bytes.size() - 20) + " after the header: the file is truncated";
+      return result;
+    }
+    json = json.substr(20, json_length);
+  }
+  if (json.size() > limits.gltf_json_bytes) {
+    error = "its JSON is " + format_bytes(json.size()) + ", more than the " + format_bytes(limits.gltf_json_bytes) +
+            " a glTF file's JSON may have (store large buffers in .bin files or a .glb)";
+    return result;
+  }
+  if (!json_nesting_within(json, kMaxJsonNesting)) {
+    error = "expected JSON nested at most " + std::to_string(kMaxJsonNesting) + " levels deep, found deeper nesting";
+    return result;
+  }
+
+  FileAccess access{limits.gltf_total_bytes - std::min<uint64_t>(limits.gltf_total_bytes, bytes.size()), {}};
+  auto model = std::make_shared<tinygltf::Model>();
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});
+  loader.SetImageLoader(&skip_image, nullptr);
+  std::string err, warn;
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(model.get(), &err, &warn, bytes.data(),
+                                              static_cast<unsigned int>(bytes.size()), base_dir)
+                : loader.LoadASCIIFromString(model.get(), &err, &warn, json.data(),
+                                             static_cast<unsigned int>(json.size()), base_dir);
+  } catch (const std::bad_alloc&) {
+    throw;  // the caller reports memory exhaustion
+  } catch (const std::exception& e) {
+    ok = false;
+    err = e.what();
+  }
+  result.files = std::move(access.files);
+  if (!warn.empty()) result.warnings.push_back(clean(warn));
+  if (!ok) {
+    error = err.empty() ? "not a readable glTF file" : clean(err);
+    return result;
+  }
+  for (const std::string& name : model->extensionsRequired) {
+    const auto& supported = supported_gltf_extensions();
+    if (std::find(supported.begin(), supported.end(), name) == supported.end()) {
+      error = "it requires the extension \"" + name + "\", which rtcli does not implement (extensionsRequired)";
+      return result;
+    }
+  }
+  if (!check_buffer_views(*model, error)) return result;
+  result.model = std::move(model);
+  return result;
+}
+
+}  // namespace rt
