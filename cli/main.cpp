@@ -1,5 +1,7 @@
 // rtcli: command-line parsing and dispatch only; each subcommand lives in its own file.
 #include <cstdio>
+#include <exception>
+#include <new>
 
 #include <CLI/CLI.hpp>
 
@@ -41,7 +43,16 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);  // prints help, version or the parse error
     return code == 0 ? kExitSuccess : kExitBadInput;
   }
-  if (render_cmd->parsed()) return run_render(render);
-  if (bench_cmd->parsed()) return run_bench(bench);
+  // Loading never throws (bad input is a diagnostic); what escapes is a runtime failure.
+  try {
+    if (render_cmd->parsed()) return run_render(render);
+    if (bench_cmd->parsed()) return run_bench(bench);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "rtcli: error: out of memory\n");
+    return kExitFailure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rtcli: error: %s\n", e.what());
+    return kExitFailure;
+  }
   return kExitBadInput;
 }

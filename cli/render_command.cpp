@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "cli/exit_codes.h"
+#include "cli/interrupt.h"
 #include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
@@ -46,6 +47,20 @@ bool check_output(const std::string& path, std::string& error) {
   return true;
 }
 
+// The image must not replace a file the scene was read from (the same file, links resolved).
+bool output_is_an_input(const std::string& output, const std::vector<std::string>& inputs, std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::exists(output, ec)) return false;
+  for (const std::string& input : inputs) {
+    if (std::filesystem::equivalent(output, input, ec)) {
+      error = "refusing to write the image to \"" + output + "\": it is the input file \"" + input +
+              "\" (choose another name with -o)";
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
@@ -61,6 +76,10 @@ int run_render(const RenderCommand& cmd) {
   std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0)), diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
+  if (output_is_an_input(output, loaded->inputs, error)) {
+    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+    return kExitBadInput;
+  }
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
 
   RenderSettings settings = loaded->description.render;
@@ -68,18 +87,42 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.height) settings.height = *cmd.height;
   if (cmd.seed) settings.seed = *cmd.seed;
   if (cmd.threads) settings.threads = *cmd.threads;
+  if (cmd.width || cmd.height) {
+    if (pixel_count(settings) > kMaxPixels) {
+      std::fprintf(stderr,
+                   "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders (README, \"Limits\")\n",
+                   settings.width, settings.height, static_cast<unsigned long long>(pixel_count(settings)),
+                   static_cast<unsigned long long>(kMaxPixels));
+      return kExitBadInput;
+    }
+    if (camera_rays_per_frame(settings) > kCameraRaysWarning)
+      std::fprintf(stderr, "rtcli: warning: this render traces %llu camera rays; expect it to take a long time\n",
+                   static_cast<unsigned long long>(camera_rays_per_frame(settings)));
+  }
 
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
   Image image;
-  const RenderStats stats =
-      render(loaded->scene, settings, image,
-             show_progress ? [&](const RenderProgress& p) { bar.update(p); } : ProgressCallback{});
-  bar.clear();
+  RenderStats stats;
+  {
+    const InterruptWatch interrupt;
+    RenderControl control;
+    if (show_progress) control.progress = [&](const RenderProgress& p) { bar.update(p); };
+    control.cancel = &interrupt.flag();
+    stats = render(loaded->scene, settings, image, control);
+    bar.clear();
+    if (stats.cancelled) {
+      std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", stats.seconds);
+      return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
+    }
+  }
 
-  if (!write_png(output, encode_srgb8(image), error)) {
-    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-    return kExitFailure;
+  {
+    const SignalBlock block;  // the temporary file is always renamed or removed
+    if (!write_png(output, encode_srgb8(image), error)) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return kExitFailure;
+    }
   }
   if (!cmd.quiet) {
     const double rate = stats.seconds > 0 ? static_cast<double>(stats.rays.total()) / stats.seconds : 0.0;

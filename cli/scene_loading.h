@@ -6,6 +6,8 @@
 
 namespace rt {
 
-inline LoadOptions cli_load_options(unsigned threads = 0) { return LoadOptions{threads, integrator_names()}; }
+inline LoadOptions cli_load_options(unsigned threads = 0) {
+  return LoadOptions{threads, integrator_names(), LoadLimits{}};
+}
 
 }  // namespace rt

@@ -21,4 +21,22 @@ struct RenderSettings {
   int tile_size = 32;        // pixels per tile side; the image never depends on it
 };
 
+// Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel
+// (linear RGB floats), so the pixel count bounds memory: 2^26 pixels (8192 x 8192) is 768 MiB.
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
+inline constexpr int kMaxSamplesPerAxis = 16;
+inline constexpr int kMaxRecursionDepth = 64;
+// Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
+inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
+
+inline uint64_t pixel_count(const RenderSettings& s) {
+  return static_cast<uint64_t>(s.width) * static_cast<uint64_t>(s.height);
+}
+// Camera rays one frame traces: pixels times samples per pixel.
+inline uint64_t camera_rays_per_frame(const RenderSettings& s) {
+  const auto n = static_cast<uint64_t>(s.sampler == PixelSamplerKind::kUniform ? s.samples_per_axis : 1);
+  return pixel_count(s) * n * n;
+}
+
 }  // namespace rt

@@ -15,6 +15,8 @@ struct NodeParseContext {
   std::string scene_folder;  // mesh files resolve against it
   const std::vector<MaterialDescription>& materials;
   std::map<std::string, std::string> names;  // node name -> pointer of its first use
+  uint64_t max_nodes = 0;                    // LoadLimits::nodes
+  uint64_t nodes = 0;                        // parsed so far
 };
 
 // depth: how many node levels enclose this array (0 for the top-level "nodes").

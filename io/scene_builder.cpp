@@ -1,5 +1,7 @@
 #include "io/scene_builder.h"
 
+#include <cstdio>
+#include <limits>
 #include <map>
 
 #include "core/thread_count.h"
@@ -10,6 +12,15 @@ namespace rt {
 namespace {
 
 bool is_finite(const Aabb& box) { return rt::is_finite(box.lo) && rt::is_finite(box.hi); }
+
+// Half the float range: the difference of two such coordinates (a triangle's edge) is finite.
+constexpr float kMaxVertexCoordinate = std::numeric_limits<float>::max() / 2;
+
+std::string format_point(Vec3 p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "[%g, %g, %g]", p.x, p.y, p.z);
+  return buf;
+}
 
 class Builder {
  public:
@@ -27,8 +38,9 @@ class Builder {
       if (node.shape || node.mesh) {
         const auto transform = make_transform(world);
         if (!transform) {
-          error(node.pointer, "expected an invertible world transform, found a singular one (the transforms above this "
-                              "node multiply to a flattening scale)");
+          error(node.pointer,
+                "expected an invertible world transform, found a singular one (the transforms above this "
+                "node multiply to a flattening scale)");
         } else if (node.shape) {
           add_shape(AnalyticShape{*node.shape, node.material.value_or(0), *transform}, node.pointer);
         } else {
@@ -52,8 +64,8 @@ class Builder {
       scene.mesh_first_triangle.push_back(first);
       first += static_cast<uint32_t>(m.triangle_count());
     }
-    scene.bvh = Bvh(make_primitive_set(meshes_, std::move(shapes_)),
-                    BvhBuildOptions{resolve_thread_count(options_.threads)});
+    scene.bvh =
+        Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options_.threads)});
     scene.meshes = std::move(meshes_);
     return scene;
   }
@@ -73,8 +85,9 @@ class Builder {
     if (!take_instance(pointer)) return;
     const Aabb bounds = world_bounds(shape);
     if (!is_finite(bounds)) {
-      error(pointer, "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found "
-                     "one that reaches infinity");
+      error(pointer,
+            "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found "
+            "one that reaches infinity");
       return;
     }
     shapes_.push_back(shape);
@@ -118,13 +131,15 @@ class Builder {
         }
         TriangleMesh mesh = transformed(p.mesh, *transform);
         for (const Vec3& v : mesh.positions) {
-          if (!rt::is_finite(v)) {
-            error(ref.pointer, "expected \"" + ref.file + "\" within the single-precision range (|x| < 3.4e38) after "
-                               "the transforms that place it, found vertices that reach infinity");
+          if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
+            error(ref.pointer, "expected \"" + ref.file +
+                                   "\" within +-1.7e38 after the transforms that place it "
+                                   "(half the single-precision range, so that edges stay finite), found a vertex at " +
+                                   format_point(v));
             return;
           }
         }
-        mesh.material = material_override              ? *material_override
+        mesh.material = material_override ? *material_override
                         : p.material >= 0 ? loaded.first_material + static_cast<uint32_t>(p.material)
                                           : default_material();
         meshes_.push_back(std::move(mesh));

@@ -8,10 +8,10 @@
 namespace rt {
 namespace {
 
-constexpr NumberRule kImageSize{1, 16384, false, false, true};
-constexpr NumberRule kMaxDepth{0, 64, false, false, true};
+constexpr NumberRule kImageSize{1, kMaxImageSide, false, false, true};
+constexpr NumberRule kMaxDepth{0, kMaxRecursionDepth, false, false, true};
 constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53: exact in a double
-constexpr NumberRule kSamplesPerAxis{1, 16, false, false, true};
+constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
 constexpr NumberRule kFieldOfView{0, 180, true, true, false};
 
 void parse_render(const JsonReader& r, const Json& v, const std::vector<std::string>& integrators, RenderSettings& s) {
@@ -33,6 +33,18 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
     a.finish();
   }
   o.finish();
+  if (pixel_count(s) > kMaxPixels) {
+    r.error("/render",
+            "expected at most " + std::to_string(kMaxPixels) + " pixels (width x height), found " +
+                std::to_string(s.width) + " x " + std::to_string(s.height) + " = " + std::to_string(pixel_count(s)) +
+                " (README, \"Limits\")",
+            Anchor::kKey);
+  } else if (camera_rays_per_frame(s) > kCameraRaysWarning) {
+    r.warning("/render",
+              "this render traces " + std::to_string(camera_rays_per_frame(s)) +
+                  " camera rays per frame (width x height x samples^2); expect it to take a long time",
+              Anchor::kKey);
+  }
 }
 
 void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
@@ -125,7 +137,8 @@ std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadO
   if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v);
   if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
   if (const Json* v = top.get("nodes", true, "an array of nodes")) {
-    NodeParseContext ctx{r, std::filesystem::path(doc.path).parent_path().string(), scene.materials, {}};
+    NodeParseContext ctx{
+        r, std::filesystem::path(doc.path).parent_path().string(), scene.materials, {}, options.limits.nodes, 0};
     scene.nodes = parse_nodes(ctx, *v, "/nodes");
   }
   top.finish();

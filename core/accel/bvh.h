@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/accel/primitives.h"
@@ -67,9 +68,15 @@ class Bvh {
   uint32_t root() const { return root_; }
   Aabb bounds() const { return bounds_; }
   BvhStats stats() const;
+  // Checks the tree against its primitives: every primitive in exactly one leaf, every child box
+  // inside the box that refers to it, nothing deeper than the traversal stack allows. Empty when
+  // sound, else what is wrong. For tests and the fuzzer (core/accel/bvh_check.cpp).
+  std::string check_structure() const;
 
   // Deepest binary tree the builder makes; the 4-wide traversal stack is sized from it.
   static constexpr int kMaxDepth = 64;
+  // A constructor argument with bounds that are not finite throws std::invalid_argument; io
+  // checks scenes first and reports such objects with their location.
 
  private:
   template <bool kAnyHit>

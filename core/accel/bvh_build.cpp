@@ -18,6 +18,14 @@ namespace rt {
 namespace {
 
 constexpr int kBins = 32;
+
+// Half the surface area of a box, in double (see Box4::half_area); 0 for an empty box.
+double half_area(float lo_x, float hi_x, float lo_y, float hi_y, float lo_z, float hi_z) {
+  if (!(lo_x <= hi_x)) return 0.0;
+  const double x = double(hi_x) - lo_x, y = double(hi_y) - lo_y, z = double(hi_z) - lo_z;
+  return x * y + y * z + z * x;
+}
+double half_area(const Aabb& b) { return half_area(b.lo.x, b.hi.x, b.lo.y, b.hi.y, b.lo.z, b.hi.z); }
 constexpr float kTraversalCost = 1.0f;        // cost of a node visit relative to one primitive test
 constexpr uint32_t kMaxLeafSize = 8;          // larger leaves are always split (<= BvhRef::kMaxLeafCount)
 constexpr int kSahDepthLimit = 32;            // deeper nodes use median splits, so depth < Bvh::kMaxDepth
@@ -50,7 +58,8 @@ struct alignas(32) BuildPrim {
     std::memcpy(&bits, reinterpret_cast<const char*>(&lo) + 12, 4);
     return bits - kIdBias;
   }
-  Float4 centroid2() const { return lo + hi; }  // twice the centre: one add, and scale-invariant for binning
+  // Half of each corner, added: lo + hi would overflow to infinity for boxes near the float limit.
+  Float4 centroid() const { return splat4(0.5f) * lo + splat4(0.5f) * hi; }
 };
 
 typedef int32_t Int4 __attribute__((vector_size(16)));
@@ -64,36 +73,38 @@ struct Box4 {
     hi = max4(hi, h);
   }
   void extend(const Box4& b) { extend(b.lo, b.hi); }
-  float half_area() const {
-    const Float4 e = hi - lo;
-    return e[0] < 0.0f ? 0.0f : e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
-  }
+  // In double: extents up to 2 x 3.4e38 and their products stay finite, so SAH costs stay
+  // comparable for any finite scene.
+  double half_area() const { return rt::half_area(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]); }
   Aabb aabb() const { return Aabb{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
 };
 
 struct Range {
   uint32_t begin = 0, end = 0;
-  Box4 bounds = Box4::empty(), centroids = Box4::empty();  // centroids doubled (BuildPrim::centroid2)
+  Box4 bounds = Box4::empty(), centroids = Box4::empty();
   uint32_t count() const { return end - begin; }
 };
 
-// Maps doubled centroids to bins: bin = min(count - 1, (c - lo) * scale), per axis at once.
-// Small nodes get fewer bins: with a handful of primitives, more bins than primitives only
-// costs time.
+// Maps centroids to bins: bin = min(count - 1, (c/2 - lo/2) * scale), per axis at once. Halved
+// coordinates make every difference finite (|c/2 - lo/2| <= 3.4e38) for any finite input, so
+// the product is a finite number in [0, count] and the clamp happens before the conversion to
+// int: no NaN or infinity can become an out-of-range bin. An axis whose centroids (nearly)
+// coincide gets scale 0: everything lands in bin 0 and the axis is not split. Small nodes get
+// fewer bins: with a handful of primitives, more bins than primitives only costs time.
 struct Binner {
-  Float4 lo, scale;
+  Float4 half_lo, scale, last;
   int count;
   Binner(const Box4& centroids, uint32_t prims)
-      : lo(centroids.lo), count(static_cast<int>(std::clamp<uint32_t>(prims, 4, kBins))) {
-    const Float4 extent = centroids.hi - centroids.lo;
-    for (int a = 0; a < 3; ++a) scale[a] = extent[a] > 0.0f ? static_cast<float>(count) / extent[a] : 0.0f;
+      : half_lo(splat4(0.5f) * centroids.lo), count(static_cast<int>(std::clamp<uint32_t>(prims, 4, kBins))) {
+    const Float4 half_extent = splat4(0.5f) * centroids.hi - half_lo;
+    for (int a = 0; a < 3; ++a) {
+      const float s = half_extent[a] > 0.0f ? static_cast<float>(count) / half_extent[a] : 0.0f;
+      scale[a] = std::isfinite(s) ? s : 0.0f;
+    }
     scale[3] = 0.0f;
+    last = splat4(static_cast<float>(count - 1));
   }
-  Int4 bins(Float4 c2) const {
-    const Int4 k = __builtin_convertvector((c2 - lo) * scale, Int4);
-    const Int4 last{count - 1, count - 1, count - 1, count - 1};
-    return k < last ? k : last;
-  }
+  Int4 bins(Float4 c) const { return __builtin_convertvector(min4((splat4(0.5f) * c - half_lo) * scale, last), Int4); }
   bool usable(int axis) const { return scale[axis] > 0.0f; }
 };
 
@@ -105,7 +116,7 @@ struct Bin {
 struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin) go left
-  float cost = kInfinity;
+  double cost = kInfinity;
   Box4 left_bounds = Box4::empty(), right_bounds = Box4::empty();
 };
 
@@ -123,7 +134,7 @@ class BinaryBuilder {
     const uint32_t n = range.count();
     Split split;
     if (n > 1 && depth < kSahDepthLimit) split = find_split(range);
-    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= static_cast<float>(n);
+    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= static_cast<double>(n);
     if (n == 1 || (n <= kMaxLeafSize && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
       out[index].count = n;
       return;
@@ -159,7 +170,7 @@ class BinaryBuilder {
       for (int k = 0; k < nb; ++k) bins[a][k] = Bin{Box4::empty(), 0};
     for (uint32_t i = range.begin; i < range.end; ++i) {
       const BuildPrim& p = prims_[i];
-      const Int4 k = binner.bins(p.centroid2());
+      const Int4 k = binner.bins(p.centroid());
       for (int a = 0; a < 3; ++a) {
         Bin& b = bins[a][k[a]];
         b.bounds.extend(p.lo, p.hi);
@@ -167,7 +178,7 @@ class BinaryBuilder {
       }
     }
     Split best;
-    const float inv_area = 1.0f / std::max(range.bounds.half_area(), 1e-30f);
+    const double inv_area = 1.0 / std::max(range.bounds.half_area(), 1e-300);
     for (int a = 0; a < 3; ++a) {
       if (!binner.usable(a)) continue;  // all centroids share this coordinate
       // Sweep from the right, keeping the bounds of everything right of each plane.
@@ -187,9 +198,9 @@ class BinaryBuilder {
         acc.extend(bins[a][k - 1].bounds);
         count += bins[a][k - 1].count;
         if (count == 0 || right_count[k] == 0) continue;
-        const float cost = kTraversalCost + (acc.half_area() * static_cast<float>(count) +
-                                             right_bounds[k].half_area() * static_cast<float>(right_count[k])) *
-                                                inv_area;
+        const double cost = kTraversalCost + (acc.half_area() * static_cast<double>(count) +
+                                              right_bounds[k].half_area() * static_cast<double>(right_count[k])) *
+                                                 inv_area;
         if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
       }
     }
@@ -199,13 +210,13 @@ class BinaryBuilder {
   // Hoare-style partition by bin; gathers each side's centroid bounds on the way.
   void partition(const Range& range, const Split& split, Range& left, Range& right) const {
     const Binner binner(range.centroids, range.count());
-    const auto goes_left = [&](const BuildPrim& p) { return binner.bins(p.centroid2())[split.axis] < split.bin; };
+    const auto goes_left = [&](const BuildPrim& p) { return binner.bins(p.centroid())[split.axis] < split.bin; };
     Box4 left_centroids = Box4::empty(), right_centroids = Box4::empty();
     uint32_t i = range.begin, j = range.end;
     while (true) {
-      for (; i < j && goes_left(prims_[i]); ++i) left_centroids.extend(prims_[i].centroid2(), prims_[i].centroid2());
+      for (; i < j && goes_left(prims_[i]); ++i) left_centroids.extend(prims_[i].centroid(), prims_[i].centroid());
       for (; i < j && !goes_left(prims_[j - 1]); --j)
-        right_centroids.extend(prims_[j - 1].centroid2(), prims_[j - 1].centroid2());
+        right_centroids.extend(prims_[j - 1].centroid(), prims_[j - 1].centroid());
       if (i >= j) break;
       std::swap(prims_[i], prims_[j - 1]);
     }
@@ -221,7 +232,7 @@ class BinaryBuilder {
     const uint32_t mid = range.begin + range.count() / 2;
     std::nth_element(prims_.begin() + range.begin, prims_.begin() + mid, prims_.begin() + range.end,
                      [&](const BuildPrim& x, const BuildPrim& y) {
-                       const float cx = x.centroid2()[a], cy = y.centroid2()[a];
+                       const float cx = x.centroid()[a], cy = y.centroid()[a];
                        return cx < cy || (cx == cy && x.id() < y.id());
                      });
     left = Range{range.begin, mid, {}, {}};
@@ -229,7 +240,7 @@ class BinaryBuilder {
     for (Range* r : {&left, &right})
       for (uint32_t k = r->begin; k < r->end; ++k) {
         r->bounds.extend(prims_[k].lo, prims_[k].hi);
-        r->centroids.extend(prims_[k].centroid2(), prims_[k].centroid2());
+        r->centroids.extend(prims_[k].centroid(), prims_[k].centroid());
       }
   }
 
@@ -254,10 +265,10 @@ class BinaryBuilder {
 };
 
 double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
-  const double root_area = std::max(nodes[0].bounds.surface_area(), 1e-30f);
+  const double root_area = std::max(half_area(nodes[0].bounds), 1e-300);
   double cost = 0.0;
   for (const BinaryNode& n : nodes)
-    cost += n.bounds.surface_area() / root_area * (n.count ? static_cast<double>(n.count) : kTraversalCost);
+    cost += half_area(n.bounds) / root_area * (n.count ? static_cast<double>(n.count) : kTraversalCost);
   return cost;
 }
 
@@ -279,12 +290,12 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
   int k = 2;
   while (k < 4) {
     int widest = -1;
-    float widest_area = -1.0f;
+    double widest_area = -1.0;
     for (int i = 0; i < k; ++i) {
       const BinaryNode& c = bin[kids[i]];
-      if (c.count == 0 && c.bounds.surface_area() > widest_area) {
+      if (c.count == 0 && half_area(c.bounds) > widest_area) {
         widest = i;
-        widest_area = c.bounds.surface_area();
+        widest_area = half_area(c.bounds);
       }
     }
     if (widest < 0) break;
@@ -313,9 +324,14 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   std::vector<BuildPrim> build_prims(n);
   Range root{0, n, {}, {}};
   for (uint32_t id = 0; id < n; ++id) {
-    const BuildPrim& p = build_prims[id] = BuildPrim::make(prims.bounds(id), id);
+    const Aabb box = prims.bounds(id);
+    // Callers check their input (io reports a located error); this is the last line of defence.
+    const bool finite_triangle = !prims.is_triangle(id) || prims.triangles[id].is_finite();
+    if (!finite_triangle || !is_finite(box.lo) || !is_finite(box.hi) || box.empty())
+      throw std::invalid_argument("primitive " + std::to_string(id) + " has bounds that are not finite");
+    const BuildPrim& p = build_prims[id] = BuildPrim::make(box, id);
     root.bounds.extend(p.lo, p.hi);
-    root.centroids.extend(p.centroid2(), p.centroid2());
+    root.centroids.extend(p.centroid(), p.centroid());
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n) / 3 + 1);

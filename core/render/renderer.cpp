@@ -12,7 +12,7 @@
 
 namespace rt {
 
-RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const ProgressCallback& progress,
+RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control,
                    uint32_t frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -29,6 +29,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
 
   std::atomic<int> next_tile{0};
   std::atomic<uint64_t> pixels_done{0}, rays_done{0};
+  std::atomic<bool> stopped{false};
+  const auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
   std::vector<RayCounters> counters(threads);
   std::mutex mutex;
   std::condition_variable finished;
@@ -39,12 +41,19 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
     PixelContext ctx{scene, settings, *integrator, mine, frame};
-    for (int t = next_tile++; t < tile_count; t = next_tile++) {
+    for (int t = next_tile++; t < tile_count && !stopped; t = next_tile++) {
       const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
       const int x1 = std::min(x0 + tile, settings.width), y1 = std::min(y0 + tile, settings.height);
       const uint64_t rays_before = mine.total();
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) image.at(x, y) = sampler->pixel(x, y, ctx);
+      // Checked before every pixel, so that a cancel is seen within one pixel's work.
+      for (int y = y0; y < y1 && !stopped; ++y)
+        for (int x = x0; x < x1; ++x) {
+          if (cancelled()) {
+            stopped = true;
+            break;
+          }
+          image.at(x, y) = sampler->pixel(x, y, ctx);
+        }
       pixels_done += static_cast<uint64_t>((x1 - x0) * (y1 - y0));
       rays_done += mine.total() - rays_before;
     }
@@ -57,9 +66,9 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
   pool.reserve(threads);
   for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker, i);
   const auto report = [&] {
-    if (progress)
-      progress(RenderProgress{pixels_done.load(), static_cast<uint64_t>(settings.width) * settings.height,
-                              rays_done.load(), elapsed()});
+    if (control.progress)
+      control.progress(RenderProgress{pixels_done.load(), static_cast<uint64_t>(settings.width) * settings.height,
+                                      rays_done.load(), elapsed()});
   };
   {
     std::unique_lock lock(mutex);
@@ -75,6 +84,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
   RenderStats stats;
   stats.seconds = elapsed();
   stats.threads = threads;
+  stats.cancelled = stopped;
   for (const RayCounters& c : counters) stats.rays += c;
   return stats;
 }

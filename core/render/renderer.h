@@ -3,6 +3,7 @@
 // is the same for any thread count and any tile order.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 
@@ -25,14 +26,21 @@ struct RenderStats {
   double seconds = 0.0;
   RayCounters rays;
   unsigned threads = 1;
+  bool cancelled = false;  // stopped by RenderControl::cancel: the image is incomplete
 };
 
 using ProgressCallback = std::function<void(const RenderProgress&)>;
 
-// Renders frame `frame` into `image` (resized to settings.width x settings.height). The progress
-// callback, if any, is called from the calling thread about ten times a second and once at the
-// end. Throws std::invalid_argument for an unknown integrator name.
-RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image,
-                   const ProgressCallback& progress = {}, uint32_t frame = 0);
+struct RenderControl {
+  // Called from the calling thread about ten times a second and once at the end.
+  ProgressCallback progress;
+  // When it becomes true, every worker stops before its next pixel (Ctrl-C in the CLI).
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+// Renders frame `frame` into `image` (resized to settings.width x settings.height).
+// Throws std::invalid_argument for an unknown integrator name.
+RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control = {},
+                   uint32_t frame = 0);
 
 }  // namespace rt

@@ -14,6 +14,8 @@ struct PackedTriangle {
   Vec3 e2;  // v2 - v0
 
   static PackedTriangle from_vertices(Vec3 a, Vec3 b, Vec3 c) { return {a, b - a, c - a}; }
+  // False when a vertex or an edge overflowed (vertices beyond +-1.7e38 can have infinite edges).
+  bool is_finite() const { return rt::is_finite(v0) && rt::is_finite(e1) && rt::is_finite(e2); }
   Aabb bounds() const {
     Aabb b;
     b.extend(v0);

@@ -1,4 +1,7 @@
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <stdexcept>
 
 #include <catch2/catch.hpp>
 
@@ -50,6 +53,7 @@ TEST_CASE("BVH closest hits equal brute force on thousands of random rays", "[bv
   const PrimitiveSet prims = random_scene(42);
   for (unsigned threads : {1u, 2u}) {
     const Bvh bvh(prims, BvhBuildOptions{threads});
+    REQUIRE(bvh.check_structure() == "");
     const BruteForce brute(prims);
     Rng rng(7);
     int hits = 0;
@@ -123,6 +127,7 @@ TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives"
   PrimitiveSet same;  // coincident centroids: no SAH split exists, median splits must terminate
   for (int i = 0; i < 1000; ++i) same.triangles.push_back(one.triangles[0]);
   const Bvh bvh(same, {});
+  CHECK(bvh.check_structure() == "");
   CHECK(bvh.stats().max_depth < Bvh::kMaxDepth);
   Ray copy = r;
   CHECK(bvh.intersect(copy, h));
@@ -136,4 +141,58 @@ TEST_CASE("BVH quality: far fewer node visits than primitives", "[bvh]") {
   CHECK(s.nodes < prims.size());
   CHECK(s.max_depth < 20);
   CHECK(s.sah_cost < 0.1 * prims.size());  // a linear list would cost prims.size()
+}
+
+// Coordinates near the float limit: centroid sums, extents and surface areas overflow in single
+// precision. The build must still give a sound tree (it once indexed its bins with INT_MIN).
+TEST_CASE("BVH over finite boxes at the edge of the float range", "[bvh]") {
+  constexpr float kFar = 2e38f, kMax = std::numeric_limits<float>::max(), kHalf = kMax / 2;
+  PrimitiveSet prims;
+  AnalyticShape sphere;
+  sphere.transform = *make_transform(compose_trs(Vec3(kFar, 0, 0), Vec3(0), Vec3(1)));
+  prims.shapes.push_back(sphere);
+  for (const float x : {0.0f, 3.0f}) {
+    AnalyticShape cube;
+    cube.kind = ShapeKind::kCube;
+    cube.transform = *make_transform(compose_trs(Vec3(x, 0, 0), Vec3(0), Vec3(1)));
+    prims.shapes.push_back(cube);
+  }
+  // Triangles spanning the whole range (edges stay finite up to half the float limit), and some
+  // at both extremes.
+  prims.triangles.push_back(PackedTriangle::from_vertices({-kHalf, -kHalf, -kHalf}, {kHalf, 0, 0}, {0, kHalf, kHalf}));
+  for (int i = 0; i < 100; ++i) {
+    const float x = (i % 2 ? kMax : -kMax) * (1.0f - 1e-6f * static_cast<float>(i));
+    prims.triangles.push_back(PackedTriangle::from_vertices({x, 0, 0}, {x, 1, 0}, {x, 0, 1}));
+  }
+  for (unsigned threads : {1u, 2u}) {
+    const Bvh bvh(prims, BvhBuildOptions{threads});
+    CHECK(bvh.check_structure() == "");
+    Ray r;
+    r.origin = Vec3(0.5f, 0.5f, 10.0f);
+    r.direction = Vec3(0, 0, -1);
+    Hit hit;
+    REQUIRE(bvh.intersect(r, hit));
+    CHECK(hit.t == Approx(9.0f));  // the cube at the origin, not the huge triangle behind it
+  }
+}
+
+TEST_CASE("BVH refuses primitives whose bounds are not finite", "[bvh]") {
+  PrimitiveSet prims;
+  const float inf = std::numeric_limits<float>::infinity();
+  prims.triangles.push_back(PackedTriangle::from_vertices({0, 0, 0}, {inf, 0, 0}, {0, 1, 0}));
+  CHECK_THROWS_AS(Bvh(prims, {}), std::invalid_argument);
+  prims.triangles[0] = PackedTriangle::from_vertices({0, 0, 0}, {std::nanf(""), 0, 0}, {0, 1, 0});
+  CHECK_THROWS_AS(Bvh(prims, {}), std::invalid_argument);
+  prims.triangles[0] = PackedTriangle::from_vertices({-3e38f, 0, 0}, {3e38f, 0, 0}, {0, 1, 0});  // edge overflows
+  CHECK_THROWS_AS(Bvh(prims, {}), std::invalid_argument);
+}
+
+TEST_CASE("BVH structure check notices a broken tree", "[bvh]") {
+  const PrimitiveSet prims = random_scene(4);
+  const Bvh bvh(prims, {});
+  REQUIRE(bvh.check_structure() == "");
+  Bvh broken = bvh;
+  auto& node = const_cast<BvhNode4&>(broken.nodes()[0]);
+  node.bounds[1][0] = node.bounds[0][0];  // shrink child 0 to a slab in x: its primitives stick out
+  CHECK_FALSE(broken.check_structure().empty());
 }

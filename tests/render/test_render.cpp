@@ -51,10 +51,10 @@ TEST_CASE("render statistics count camera and shadow rays", "[render]") {
   RenderSettings settings = s.description.render;
   Image image;
   int progress_calls = 0;
-  const RenderStats stats = render(s.scene, settings, image, [&](const RenderProgress& p) {
-    ++progress_calls;
-    CHECK(p.pixels_done <= p.pixels_total);
-  });
+  const RenderStats stats = render(s.scene, settings, image, RenderControl{[&](const RenderProgress& p) {
+                                     ++progress_calls;
+                                     CHECK(p.pixels_done <= p.pixels_total);
+                                   }});
   CHECK(stats.rays.camera == 96u * 64u * 4u);  // 2 x 2 samples per pixel
   CHECK(stats.rays.shadow > 0);
   CHECK(stats.rays.shadow <= stats.rays.camera);  // one light

@@ -6,6 +6,6 @@
 
 namespace rt::test {
 
-inline LoadOptions load_options(unsigned threads = 1) { return LoadOptions{threads, integrator_names()}; }
+inline LoadOptions load_options(unsigned threads = 1) { return LoadOptions{threads, integrator_names(), LoadLimits{}}; }
 
 }  // namespace rt::test

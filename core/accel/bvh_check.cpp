@@ -1,0 +1,69 @@
+// Bvh::check_structure: the invariants traversal relies on, checked the slow, obvious way.
+#include <vector>
+
+#include "core/accel/bvh.h"
+
+namespace rt {
+namespace {
+
+bool contains(const Aabb& outer, const Aabb& inner) {
+  return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z && inner.hi.x <= outer.hi.x &&
+         inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
+}
+
+Aabb child_box(const BvhNode4& node, int slot) {
+  return Aabb{Vec3(node.bounds[0][slot], node.bounds[2][slot], node.bounds[4][slot]),
+              Vec3(node.bounds[1][slot], node.bounds[3][slot], node.bounds[5][slot])};
+}
+
+}  // namespace
+
+std::string Bvh::check_structure() const {
+  const uint32_t n = primitive_count();
+  if (n == 0) return nodes_.empty() ? "" : "nodes without primitives";
+  if (slots_.size() != n) return "slot count differs from the primitive count";
+  std::vector<int> seen(n, 0);
+  std::vector<bool> visited(nodes_.size(), false);
+  struct Item {
+    uint32_t ref;
+    Aabb box;  // the box the parent holds for this entry
+    int depth;
+  };
+  std::vector<Item> stack{{root_, bounds_, 0}};
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    if (item.depth > kMaxDepth) return "deeper than kMaxDepth";
+    if (BvhRef::is_leaf(item.ref)) {
+      const uint32_t first = BvhRef::first(item.ref), count = BvhRef::count(item.ref);
+      if (count == 0 || first + count > n) return "leaf outside the slot array";
+      for (uint32_t slot = first; slot < first + count; ++slot) {
+        const uint32_t id = slots_[slot].id;
+        if (id >= n) return "slot " + std::to_string(slot) + " holds an invalid id";
+        if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
+        const Aabb box = is_triangle(id) ? slots_[slot].triangle.bounds() : world_bounds(shape(id));
+        if (!contains(item.box, box)) return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
+      }
+      continue;
+    }
+    if (item.ref >= nodes_.size())
+      return "reference to node " + std::to_string(item.ref) + " of " + std::to_string(nodes_.size());
+    if (visited[item.ref]) return "node " + std::to_string(item.ref) + " is reached twice";
+    visited[item.ref] = true;
+    const BvhNode4& node = nodes_[item.ref];
+    int children = 0;
+    for (int slot = 0; slot < 4; ++slot) {
+      const Aabb box = child_box(node, slot);
+      if (box.empty()) continue;  // an unused slot
+      ++children;
+      if (!contains(item.box, box)) return "a child box of node " + std::to_string(item.ref) + " sticks out";
+      stack.push_back(Item{node.child[slot], box, item.depth + 1});
+    }
+    if (children < 2) return "node " + std::to_string(item.ref) + " has fewer than two children";
+  }
+  for (uint32_t id = 0; id < n; ++id)
+    if (seen[id] != 1) return "primitive " + std::to_string(id) + " is in no leaf";
+  return "";
+}
+
+}  // namespace rt
