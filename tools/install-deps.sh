@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rtcli needs, if any are missing: with apt-get as root, through
-# sudo otherwise. If neither works it lists the packages to install and fails.
+# sudo otherwise. If neither works it lists the packages to install and fails. Extra package
+# names given as arguments are installed too (tools/fuzz.sh and --sanitize add clang's).
 set -euo pipefail
 
 packages=(g++ cmake ninja-build pkg-config
           libtinygltf-dev nlohmann-json3-dev libglm-dev libstb-dev libcli11-dev
-          catch2 libvalijson-dev)
+          catch2 libvalijson-dev "$@")
 
 missing=()
 for p in "${packages[@]}"; do

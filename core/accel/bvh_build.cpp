@@ -235,8 +235,10 @@ class BinaryBuilder {
                        const float cx = x.centroid()[a], cy = y.centroid()[a];
                        return cx < cy || (cx == cy && x.id() < y.id());
                      });
-    left = Range{range.begin, mid, {}, {}};
-    right = Range{mid, range.end, {}, {}};
+    // Box4 has no default member initialisers: `{}` would be a zero box, which extend() would
+    // stretch to include the origin.
+    left = Range{range.begin, mid, Box4::empty(), Box4::empty()};
+    right = Range{mid, range.end, Box4::empty(), Box4::empty()};
     for (Range* r : {&left, &right})
       for (uint32_t k = r->begin; k < r->end; ++k) {
         r->bounds.extend(prims_[k].lo, prims_[k].hi);

@@ -128,6 +128,15 @@ TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives"
   for (int i = 0; i < 1000; ++i) same.triangles.push_back(one.triangles[0]);
   const Bvh bvh(same, {});
   CHECK(bvh.check_structure() == "");
+  // Median splits away from the origin: their boxes once grew to include it (found by fuzzing).
+  PrimitiveSet far;
+  for (int i = 0; i < 100; ++i)
+    far.triangles.push_back(PackedTriangle::from_vertices({5, 5, 5}, {6, 5, 5}, {5, 6, 5 + 0.01f * (i % 2)}));
+  const Bvh far_bvh(far, {});
+  CHECK(far_bvh.check_structure() == "");
+  for (const BvhNode4& node : far_bvh.nodes())
+    for (int slot = 0; slot < 4; ++slot)
+      if (node.bounds[0][slot] <= node.bounds[1][slot]) CHECK(node.bounds[0][slot] == 5.0f);
   CHECK(bvh.stats().max_depth < Bvh::kMaxDepth);
   Ray copy = r;
   CHECK(bvh.intersect(copy, h));

@@ -1,0 +1,140 @@
+#include "tests/fuzz/fuzz_targets.h"
+
+#include <cstring>
+#include <vector>
+
+#include "core/accel/brute_force.h"
+#include "core/accel/bvh.h"
+#include "core/render/integrator.h"
+#include "core/render/renderer.h"
+#include "io/gltf_loader.h"
+#include "io/json_document.h"
+#include "io/scene_builder.h"
+#include "io/scene_parser.h"
+
+namespace rt::fuzz {
+namespace {
+
+// Small limits keep each input fast, so the fuzzer explores instead of allocating.
+LoadOptions fuzz_options() {
+  LoadOptions options{1, integrator_names(), LoadLimits{}};
+  options.limits.scene_file_bytes = 1 << 20;
+  options.limits.gltf_json_bytes = 1 << 20;
+  options.limits.gltf_total_bytes = 4 << 20;
+  options.limits.vertices = 1 << 16;
+  options.limits.triangles = 1 << 16;
+  options.limits.instances = 1 << 12;
+  options.limits.nodes = 1 << 12;
+  return options;
+}
+
+// Whether a hit that brute force found at distance t on `tri` is one the BVH must find too.
+// Moller-Trumbore's rounding error grows with the coordinates involved, so with huge or thin
+// triangles it reports points outside the triangle's own box, which the BVH rightly culls. A hit
+// counts when its point is inside the box by more than that error on every axis (so hits on
+// triangles thinner than the error in some axis are not checked here; tests/core/test_bvh.cpp
+// covers ordinary ones).
+bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) {
+  const Aabb box = tri.bounds();
+  const Vec3 p = ray.at(t);
+  const float margin = 1e-5f * std::max({max_abs_component(box.lo), max_abs_component(box.hi),
+                                         max_abs_component(ray.origin), max_abs_component(p), 1e-30f});
+  for (int a = 0; a < 3; ++a)
+    if (!(p[a] >= box.lo[a] + margin && p[a] <= box.hi[a] - margin)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string scene_json(const uint8_t* data, size_t size) {
+  const LoadOptions options = fuzz_options();
+  if (size > options.limits.scene_file_bytes) return "";
+  Diagnostics diags;
+  // Relative mesh paths resolve against scenes/, where the example models are.
+  auto doc = parse_json_text(std::string(RTCLI_SOURCE_DIR) + "/scenes/fuzz.json",
+                             std::string(reinterpret_cast<const char*>(data), size), diags);
+  if (!doc) return diags.has_errors() ? "" : "a rejected document came with no error";
+  auto desc = parse_scene(*doc, options, diags);
+  if (!desc) return diags.has_errors() ? "" : "a rejected scene came with no error";
+  auto scene = build_scene(*desc, &*doc, options, diags);
+  if (!scene) return diags.has_errors() ? "" : "a scene that failed to build came with no error";
+  if (const std::string problem = scene->bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  RenderSettings settings = desc->render;
+  settings.width = settings.height = 4;
+  settings.samples_per_axis = 1;
+  settings.threads = 1;
+  Image image;
+  render(*scene, settings, image);
+  return "";
+}
+
+std::string gltf_model(const uint8_t* data, size_t size) {
+  const LoadOptions options = fuzz_options();
+  ImportError error;
+  const std::vector<unsigned char> bytes(data, data + size);
+  auto model =
+      import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt, options.limits, error);
+  if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
+  std::vector<TriangleMesh> meshes;
+  size_t triangles = 0;
+  for (const MeshInstance& instance : model->instances) {
+    const auto transform = make_transform(instance.to_file);
+    if (!transform) continue;
+    for (const ImportedPrimitive& p : model->meshes[instance.mesh]) {
+      for (const uint32_t i : p.mesh.indices)
+        if (i >= p.mesh.positions.size()) return "an index past the vertices survived the import";
+      triangles += p.mesh.triangle_count();
+      if (triangles > options.limits.triangles) return "";  // the builder refuses this; so do we
+      meshes.push_back(transformed(p.mesh, *transform));
+    }
+  }
+  PrimitiveSet prims = make_primitive_set(meshes, {});
+  std::erase_if(prims.triangles, [](const PackedTriangle& t) { return !t.is_finite(); });  // the builder refuses these
+  const Bvh bvh(prims, BvhBuildOptions{1});
+  const std::string problem = bvh.check_structure();
+  return problem.empty() ? "" : "BVH: " + problem;
+}
+
+std::string bvh_build(const uint8_t* data, size_t size) {
+  if (size < 1) return "";
+  const unsigned threads = 1 + data[0] % 2;
+  std::vector<float> values((size - 1) / 4);
+  if (!values.empty()) std::memcpy(values.data(), data + 1, values.size() * 4);
+  // The last 48 bytes (12 floats) describe two rays; everything before them, triangles.
+  const size_t ray_floats = std::min<size_t>(values.size(), 12);
+  const size_t triangle_floats = values.size() - ray_floats;
+  PrimitiveSet prims;
+  for (size_t i = 0; i + 9 <= triangle_floats && prims.triangles.size() < 20000; i += 9) {
+    const float* v = &values[i];
+    const auto t =
+        PackedTriangle::from_vertices(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]));
+    if (t.is_finite()) prims.triangles.push_back(t);
+  }
+  const Bvh bvh(prims, BvhBuildOptions{threads});
+  if (std::string problem = bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  const BruteForce brute(prims);
+  for (size_t r = 0; r + 6 <= ray_floats; r += 6) {
+    const float* v = &values[triangle_floats + r];
+    Ray a;
+    a.origin = Vec3(v[0], v[1], v[2]);
+    const Vec3 d(v[3], v[4], v[5]);
+    const float length = glm::length(d);
+    if (!is_finite(a.origin) || !(length > 1e-6f) || !std::isfinite(length)) continue;
+    a.direction = d / length;
+    const Ray original = a;
+    Ray b = a;
+    Hit ha, hb;
+    const bool found_a = bvh.intersect(a, ha), found_b = brute.intersect(b, hb);
+    const bool occluded = bvh.occluded(original);
+    // The BVH tests a subset of what brute force tests, with the same triangle test.
+    if (found_a && (!found_b || ha.t < hb.t)) return "the BVH found a hit brute force did not";
+    if (occluded && !found_b) return "occluded() found a hit brute force did not";
+    if (found_b && robust_hit(prims.triangles[hb.prim], original, hb.t)) {
+      if (!found_a || ha.t != hb.t) return "the BVH missed the closest hit brute force found";
+      if (!occluded) return "occluded() missed a hit brute force found";
+    }
+  }
+  return "";
+}
+
+}  // namespace rt::fuzz

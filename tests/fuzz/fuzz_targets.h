@@ -1,0 +1,22 @@
+// What each fuzzer does with one input, as plain functions: the libFuzzer entry points
+// (tests/fuzz/fuzz_*.cpp, built with clang by tools/fuzz.sh) call them, and so does the normal
+// test suite, which replays every input in tests/fuzz/regressions/ without needing clang.
+// Each returns an empty string, or what invariant the input broke (a loader must never crash,
+// hang or exhaust memory; a BVH must stay sound). Rejecting an input is not a failure.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace rt::fuzz {
+
+// A JSON scene file: parse, check, build (glTF references resolve against scenes/), render 4x4.
+std::string scene_json(const uint8_t* data, size_t size);
+// A glTF model, .gltf text or .glb bytes: import, place every instance, build a BVH, check it.
+std::string gltf_model(const uint8_t* data, size_t size);
+// Triangles with arbitrary float coordinates (raw bits: extremes, denormals; non-finite ones
+// dropped): build a BVH, check its structure and trace rays against brute force.
+std::string bvh_build(const uint8_t* data, size_t size);
+
+}  // namespace rt::fuzz

@@ -1,0 +1,32 @@
+// Replays every input in tests/fuzz/regressions/ through the fuzz targets' code: each once found
+// a crash, a sanitizer report or a broken invariant. Runs in the plain suite (no clang needed) and
+// under the sanitizers (tools/test.sh --sanitize).
+#include <filesystem>
+
+#include <catch2/catch.hpp>
+
+#include "tests/fuzz/fuzz_targets.h"
+#include "tests/support/test_paths.h"
+
+namespace {
+
+template <class Target>
+int replay(const std::string& folder, const Target& target) {
+  int count = 0;
+  const std::string path = rt::test::source_path("tests/fuzz/regressions/" + folder);
+  if (!std::filesystem::is_directory(path)) return 0;
+  for (const auto& entry : std::filesystem::directory_iterator(path)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string bytes = rt::test::read_file(entry.path().string());
+    INFO(entry.path().string());
+    CHECK(target(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()) == "");
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("fuzz regressions: scene files", "[fuzz]") { replay("scene", rt::fuzz::scene_json); }
+TEST_CASE("fuzz regressions: glTF models", "[fuzz]") { replay("gltf", rt::fuzz::gltf_model); }
+TEST_CASE("fuzz regressions: BVH builds", "[fuzz]") { CHECK(replay("bvh", rt::fuzz::bvh_build) >= 1); }

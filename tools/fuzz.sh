@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, with AddressSanitizer and UndefinedBehaviorSanitizer) in
+# build-fuzz/ and runs one of them:
+#
+#   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]      TARGET: scene | gltf | bvh
+#
+#   scene  JSON scene files: parse, check, build, render a few pixels
+#   gltf   glTF models (.gltf text and .glb): import, place, build a BVH
+#   bvh    the BVH builder and traversal on triangles with extreme coordinates
+#
+# The corpus lives in build-fuzz/corpus/TARGET, seeded on the first run from scenes/, tests/,
+# ../shared/gltf and tests/fuzz/regressions/TARGET. An input that crashes, leaks, hangs (10 s),
+# runs out of memory (2 GiB) or breaks an invariant is saved in build-fuzz/artifacts/TARGET/.
+# Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ $# -lt 2 ] || ! [[ "$1" =~ ^(scene|gltf|bvh)$ ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
+  echo "usage: tools/fuzz.sh scene|gltf|bvh SECONDS [libFuzzer options...]" >&2
+  exit 2
+fi
+target="$1" seconds="$2"
+shift 2
+
+"$root/tools/install-deps.sh" clang libclang-rt-14-dev
+build="$root/build-fuzz"
+CXX=clang++ CC=clang cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRTCLI_FUZZ=ON -DRTCLI_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" --target "fuzz_$target"
+
+corpus="$build/corpus/$target" artifacts="$build/artifacts/$target"
+mkdir -p "$corpus" "$artifacts"
+seed() {  # copies files (up to 256 KiB each) into the corpus, named by content
+  for f in "$@"; do
+    [ -f "$f" ] && [ "$(stat -c %s "$f")" -le 262144 ] || continue
+    cp "$f" "$corpus/seed-$(sha1sum "$f" | cut -c1-16)"
+  done
+}
+if [ -z "$(ls -A "$corpus")" ]; then
+  shopt -s nullglob globstar
+  case "$target" in
+    scene) seed "$root"/scenes/*.json "$root"/tests/data/**/*.json ;;
+    gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
+    bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
+  esac
+  seed "$root"/tests/fuzz/regressions/"$target"/*
+fi
+echo "fuzzing $target for $seconds s; corpus $(ls "$corpus" | wc -l) files" >&2
+cd "$build"  # libFuzzer writes crash-* files relative to -artifact_prefix
+dict=()
+[ -f "$root/tests/fuzz/$target.dict" ] && dict=(-dict="$root/tests/fuzz/$target.dict")
+exec "$build/fuzz_$target" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  -max_len=262144 "${dict[@]}" -artifact_prefix="$artifacts/" -print_final_stats=1 "$@"
