@@ -8,6 +8,7 @@
 #include "cli/bench_command.h"
 #include "cli/exit_codes.h"
 #include "cli/render_command.h"
+#include "cli/validate_command.h"
 
 int main(int argc, char** argv) {
   using namespace rt;
@@ -29,6 +30,13 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
+  ValidateCommand validate;
+  CLI::App* validate_cmd = app.add_subcommand(
+      "validate", "Check scene files (.json) and glTF models (.gltf/.glb) without rendering: every problem, located");
+  validate_cmd->add_option("files", validate.files, "Files to check")->required();
+  validate_cmd->add_flag("--json", validate.json,
+                         "Print the problems as a JSON array (file, line, column, pointer, severity, message)");
+
   BenchCommand bench;
   bench.scene = std::string(RTCLI_SOURCE_DIR) + "/scenes/primitives.json";
   CLI::App* bench_cmd = app.add_subcommand("bench", "Measure BVH build time, ray throughput and render time");
@@ -46,6 +54,7 @@ int main(int argc, char** argv) {
   // Loading never throws (bad input is a diagnostic); what escapes is a runtime failure.
   try {
     if (render_cmd->parsed()) return run_render(render);
+    if (validate_cmd->parsed()) return run_validate(validate);
     if (bench_cmd->parsed()) return run_bench(bench);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "rtcli: error: out of memory\n");

@@ -9,15 +9,24 @@ std::optional<Transform> make_transform(const Mat4& to_world) {
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(to_world[c][r])) return std::nullopt;
   const Mat3 linear(to_world);
-  const float det = glm::determinant(linear);
   // Relative test: compare the determinant with the product of the column lengths, so that a
-  // uniformly tiny (but valid) object is not called singular while a flattened one is.
-  const float scale = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
-  if (!(scale > 0.0f) || !(std::fabs(det) > 1e-6f * scale)) return std::nullopt;
+  // uniformly tiny (but valid) object is not called singular while a flattened one is. In
+  // double, where neither a scale of 1e38 nor one of 1e-20 cubed overflows or underflows.
+  const glm::dmat3 d(linear);
+  const double det = glm::determinant(d);
+  const double scale = glm::length(d[0]) * glm::length(d[1]) * glm::length(d[2]);
+  if (!(scale > 0.0) || !(std::fabs(det) > 1e-6 * scale)) return std::nullopt;
   Transform t;
   t.to_world = to_world;
-  t.to_object = glm::inverse(to_world);
-  t.normal_to_world = glm::transpose(glm::inverse(linear));
+  // Inverted in double: a float 4x4 inverse forms determinants of products of four entries,
+  // which overflow for scales near 1e38 or underflow for 1e-20, and is less accurate anyway.
+  t.to_object = Mat4(glm::inverse(glm::dmat4(to_world)));
+  t.normal_to_world = Mat3(glm::transpose(glm::inverse(d)));
+  // A valid matrix whose inverse leaves single precision (a scale of 1e-39) is no use either.
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(t.to_object[c][r]) || (c < 3 && r < 3 && !std::isfinite(t.normal_to_world[c][r])))
+        return std::nullopt;
   return t;
 }
 

@@ -36,6 +36,9 @@ class Diagnostics {
     add(Diagnostic{Severity::kError, file, 0, 0, "", std::move(message), ""});
   }
 
+  // In order of position in the file: file-level problems (no line) first, then by line:column.
+  void sort_by_position();
+
   bool has_errors() const;
   size_t error_count() const;
   const std::vector<Diagnostic>& all() const { return items_; }

@@ -1,6 +1,7 @@
 #include "io/json_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "io/json_locate.h"
@@ -133,6 +134,11 @@ bool NumberRule::accepts(double v) const {
 std::optional<double> read_number(const JsonReader& r, const Json& v, const std::string& ptr, const NumberRule& rule) {
   if (!v.is_number() || !rule.accepts(v.get<double>())) {
     r.expected(ptr, rule.describe(), v);
+    return std::nullopt;
+  }
+  // Non-integer values are stored as floats: one that overflows would become an infinity.
+  if (!rule.integer && !std::isfinite(static_cast<float>(v.get<double>()))) {
+    r.expected(ptr, "a number that fits in single precision (|x| < 3.4e38)", v);
     return std::nullopt;
   }
   return v.get<double>();

@@ -25,6 +25,7 @@ struct LoadOptions {
   unsigned threads = 0;                             // for the BVH build; 0 = all hardware threads
   std::vector<std::string> integrators{"whitted"};  // valid values of /render/integrator
   LoadLimits limits;
+  bool build_bvh = true;  // false: check everything, build no acceleration structure (validate)
 };
 
 }  // namespace rt

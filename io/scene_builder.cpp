@@ -64,8 +64,9 @@ class Builder {
       scene.mesh_first_triangle.push_back(first);
       first += static_cast<uint32_t>(m.triangle_count());
     }
-    scene.bvh =
-        Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options_.threads)});
+    if (options_.build_bvh)
+      scene.bvh =
+          Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options_.threads)});
     scene.meshes = std::move(meshes_);
     return scene;
   }

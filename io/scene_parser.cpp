@@ -124,6 +124,12 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
 
 std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
   const size_t errors_before = diags.error_count();
+  SceneDescription scene = parse_scene_partial(doc, options, diags);
+  if (diags.error_count() > errors_before) return std::nullopt;
+  return scene;
+}
+
+SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
   const JsonReader r(doc, diags);
   SceneDescription scene;
   scene.path = doc.path;
@@ -142,7 +148,6 @@ std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadO
     scene.nodes = parse_nodes(ctx, *v, "/nodes");
   }
   top.finish();
-  if (diags.error_count() > errors_before) return std::nullopt;
   return scene;
 }
 

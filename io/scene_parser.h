@@ -13,4 +13,9 @@ namespace rt {
 
 std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags);
 
+// Everything that could be read, even where there were errors (a value in error keeps its
+// default): for `rtcli validate`, which goes on to check files and transforms so that one run
+// reports every problem. Never rendered.
+SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags);
+
 }  // namespace rt

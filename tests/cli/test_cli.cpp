@@ -6,33 +6,18 @@
 
 #include <catch2/catch.hpp>
 
+#include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
 
 namespace fs = std::filesystem;
 using rt::test::output_path;
 using rt::test::read_file;
+using rt::test::rtcli;
+using rt::test::Run;
 using rt::test::source_path;
 using rt::test::write_file;
 
 namespace {
-
-struct Run {
-  int code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-// Runs rtcli with `args` (shell syntax) from `cwd`.
-Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_DIR) {
-  const std::string command = "cd '" + cwd + "' && '" + RTCLI_BINARY + "' " + args + " 2>&1";
-  Run run;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[4096];
-  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
 
 std::string small(const std::string& extra = "") { return "--width 40 --height 24 " + extra; }
 

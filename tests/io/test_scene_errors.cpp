@@ -142,7 +142,8 @@ TEST_CASE("unreadable glTF files", "[io][errors][gltf]") {
   CHECK(a.first().pointer == "/nodes/0/mesh/file");
   CHECK_THAT(a.first().message,
              Catch::Contains("expected a readable glTF 2.0 file") && Catch::Contains("file not found"));
-  write_file("garbage.glb", std::string("glTF\x02\0\0\0\xff\xff\xff\x7fnot really", 24));
+  const char garbage[] = "glTF\x02\0\0\0\xff\xff\xff\x7fnot really";  // a header announcing 2 GiB
+  write_file("garbage.glb", std::string(garbage, sizeof garbage - 1));
   write_file(
       "garbage.gltf",
       "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 7}}]}]}");

@@ -1,0 +1,42 @@
+#include "cli/validate_command.h"
+
+#include <cstdio>
+
+#include "cli/exit_codes.h"
+#include "cli/report.h"
+#include "cli/scene_loading.h"
+#include "io/json_document.h"
+#include "io/scene_validator.h"
+
+namespace rt {
+namespace {
+
+Json to_json(const Diagnostic& d) {
+  return Json{{"file", d.file},
+              {"line", d.line ? Json(d.line) : Json(nullptr)},
+              {"column", d.column ? Json(d.column) : Json(nullptr)},
+              {"pointer", d.pointer},
+              {"severity", d.severity == Severity::kError ? "error" : "warning"},
+              {"message", d.message}};
+}
+
+}  // namespace
+
+int run_validate(const ValidateCommand& cmd) {
+  bool all_valid = true;
+  Json list = Json::array();
+  for (const std::string& file : cmd.files) {
+    const Diagnostics diags = validate_file(file, cli_load_options());
+    all_valid = all_valid && !diags.has_errors();
+    if (cmd.json) {
+      for (const Diagnostic& d : diags.all()) list.push_back(to_json(d));
+      continue;
+    }
+    print_diagnostics(stderr, diags);
+    if (!diags.has_errors()) std::printf("%s: valid\n", printable(file).c_str());
+  }
+  if (cmd.json) std::printf("%s\n", list.dump(2, ' ', false, Json::error_handler_t::replace).c_str());
+  return all_valid ? kExitSuccess : kExitBadInput;
+}
+
+}  // namespace rt

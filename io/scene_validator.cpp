@@ -1,0 +1,55 @@
+#include "io/scene_validator.h"
+
+#include <algorithm>
+#include <new>
+
+#include "io/json_reader.h"
+#include "io/scene_builder.h"
+#include "io/scene_loader.h"
+#include "io/scene_parser.h"
+#include "io/scene_schema.h"
+
+namespace rt {
+namespace {
+
+bool related(const std::string& a, const std::string& b) {
+  const auto under = [](const std::string& p, const std::string& of) {
+    return p.size() > of.size() && p.compare(0, of.size(), of) == 0 && p[of.size()] == '/';
+  };
+  return a == b || under(a, b) || under(b, a);
+}
+
+void validate_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
+  std::optional<JsonDocument> doc = read_json_file(path, options.limits.scene_file_bytes, diags);
+  if (!doc) return;
+  const SceneDescription desc = parse_scene_partial(*doc, options, diags);
+  build_scene(desc, &*doc, options, diags);
+  const JsonReader reader(*doc, diags);
+  const std::vector<Diagnostic> loader = diags.all();
+  for (const SchemaError& e : check_scene_schema(doc->root)) {
+    const bool reported = std::any_of(loader.begin(), loader.end(), [&](const Diagnostic& d) {
+      return d.severity == Severity::kError && (d.pointer.empty() || related(d.pointer, e.pointer));
+    });
+    if (!reported) reader.error(e.pointer, "schema: " + e.message);
+  }
+}
+
+}  // namespace
+
+Diagnostics validate_file(const std::string& path, const LoadOptions& options_in) {
+  LoadOptions options = options_in;
+  options.build_bvh = false;
+  Diagnostics diags;
+  try {
+    if (is_gltf_path(path)) load_scene(path, options, diags);
+    else validate_json_scene(path, options, diags);
+  } catch (const std::bad_alloc&) {
+    diags.file_error(path, "ran out of memory while checking: the file asks for more than this machine has");
+  } catch (const std::exception& e) {
+    diags.file_error(path, std::string("could not be checked: ") + e.what());
+  }
+  diags.sort_by_position();
+  return diags;
+}
+
+}  // namespace rt
