@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
-# Configures and builds rtcli (Release) in build/. Extra arguments go to CMake's configure step.
+# Configures and builds rtcli in build/ (Release unless told otherwise).
+#   tools/build.sh [--dir FOLDER] [CMake options...]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$root/build" --parallel
+dir=build
+if [ "${1:-}" = "--dir" ]; then
+  dir="$2"
+  shift 2
+fi
+cmake -S "$root" -B "$root/$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$root/$dir" --parallel

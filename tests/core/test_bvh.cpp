@@ -97,8 +97,16 @@ TEST_CASE("BVH occlusion equals brute force, with finite segments", "[bvh]") {
 }
 
 TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
-  const PrimitiveSet prims = random_scene(3);
+  // Enough primitives that subtrees go to spare threads (past 4096 in a node).
+  PrimitiveSet prims = random_scene(3);
+  Rng rng(8);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 c = random_in(rng, -10.0f, 10.0f);
+    prims.triangles.push_back(
+        PackedTriangle::from_vertices(c, c + random_in(rng, 0, 0.3f), c + random_in(rng, 0, 0.3f)));
+  }
   const Bvh one(prims, BvhBuildOptions{1}), four(prims, BvhBuildOptions{4});
+  CHECK(four.check_structure() == "");
   REQUIRE(one.nodes().size() == four.nodes().size());
   for (size_t i = 0; i < one.nodes().size(); ++i)
     REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode4)) == 0);
@@ -131,7 +139,8 @@ TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives"
   // Median splits away from the origin: their boxes once grew to include it (found by fuzzing).
   PrimitiveSet far;
   for (int i = 0; i < 100; ++i)
-    far.triangles.push_back(PackedTriangle::from_vertices({5, 5, 5}, {6, 5, 5}, {5, 6, 5 + 0.01f * (i % 2)}));
+    far.triangles.push_back(
+        PackedTriangle::from_vertices({5, 5, 5}, {6, 5, 5}, {5, 6, 5 + 0.01f * static_cast<float>(i % 2)}));
   const Bvh far_bvh(far, {});
   CHECK(far_bvh.check_structure() == "");
   for (const BvhNode4& node : far_bvh.nodes())

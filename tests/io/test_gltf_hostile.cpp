@@ -188,7 +188,9 @@ TEST_CASE("glTF hostile: buffers must be regular files, and the JSON sane", "[io
   CHECK_THAT(o.error, Catch::Contains("nested at most 512 levels"));
 
   // A .glb whose header announces more JSON than the file holds, and one too short for a header.
-  std::string glb("glTF\x02\0\0\0\x40\0\0\0\xff\xff\x00\x00JSON{}", 26);
+  // magic, version 2, total length 64, JSON chunk length 65535, chunk type, then 2 bytes of JSON.
+  const char header[] = "glTF\x02\0\0\0\x40\0\0\0\xff\xff\0\0JSON{}";
+  const std::string glb(header, sizeof header - 1);
   o = import_file(rt::test::write_file("short-json.glb", glb));
   CHECK_FALSE(o.loaded);
   CHECK_THAT(o.error, Catch::Contains("the file is truncated"));

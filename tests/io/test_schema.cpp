@@ -3,39 +3,23 @@
 #include <filesystem>
 
 #include <catch2/catch.hpp>
-#include <valijson/adapters/nlohmann_json_adapter.hpp>
-#include <valijson/schema.hpp>
-#include <valijson/schema_parser.hpp>
-#include <valijson/validator.hpp>
 
 #include "io/json_document.h"
+#include "io/scene_schema.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
 
 namespace {
 
+// The io layer's schema check (the schema compiled into the binary); empty when valid, else the
+// first complaint.
 class SchemaChecker {
  public:
-  SchemaChecker() {
-    const Json schema_json = Json::parse(rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
-    valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
-    parser.populateSchema(valijson::adapters::NlohmannJsonAdapter(schema_json), schema_);
-  }
-  // Empty when valid, else the validator's first complaint.
   std::string check(const Json& doc) const {
-    valijson::Validator validator;
-    valijson::ValidationResults results;
-    if (validator.validate(schema_, valijson::adapters::NlohmannJsonAdapter(doc), &results)) return "";
-    valijson::ValidationResults::Error error;
-    results.popError(error);
-    std::string where;
-    for (const std::string& p : error.context) where += p;
-    return where + ": " + error.description;
+    const auto errors = check_scene_schema(doc);
+    return errors.empty() ? "" : errors.front().pointer + ": " + errors.front().message;
   }
-
- private:
-  valijson::Schema schema_;
 };
 
 Json base() {
@@ -98,4 +82,8 @@ TEST_CASE("schema: rejects what the loader rejects for its shape", "[schema]") {
   j = base();
   j.erase("nodes");
   CHECK(rejects(j));
+}
+
+TEST_CASE("schema: the copy compiled into the binary is schemas/scene.schema.json", "[schema]") {
+  CHECK(scene_schema_text() == rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
 }
