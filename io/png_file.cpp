@@ -4,12 +4,16 @@
 #include <stb_image_write.h>
 
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace rt {
 
 std::optional<Rgb8Image> read_png(const std::string& path, std::string& error) {
+  constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
+  const auto bytes = read_input_bytes(path, kMaxFileBytes, error);
+  if (!bytes) return std::nullopt;
   int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+  unsigned char* data = stbi_load_from_memory(bytes->data(), static_cast<int>(bytes->size()), &w, &h, &channels, 3);
   if (!data) {
     error = std::string("cannot read image: ") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
     return std::nullopt;

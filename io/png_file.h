@@ -8,7 +8,8 @@
 
 namespace rt {
 
-// Reads a PNG (or any format stb_image reads) as 8-bit RGB.
+// Reads a PNG (or any format stb_image reads) as 8-bit RGB: a regular file of at most 256 MiB
+// (io/input_file.h).
 std::optional<Rgb8Image> read_png(const std::string& path, std::string& error);
 
 // Writes a PNG through a temporary file and an atomic rename (io/atomic_file.h).
