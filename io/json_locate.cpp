@@ -123,6 +123,11 @@ std::string pointer_child(const std::string& pointer, std::string_view key) {
 }
 std::string pointer_child(const std::string& pointer, size_t index) { return pointer + "/" + std::to_string(index); }
 
+bool pointer_is_inside(std::string_view pointer, std::string_view ancestor) {
+  return pointer.size() > ancestor.size() && pointer.substr(0, ancestor.size()) == ancestor &&
+         pointer[ancestor.size()] == '/';
+}
+
 std::vector<std::string> pointer_tokens(std::string_view pointer) {
   std::vector<std::string> tokens;
   size_t i = 0;

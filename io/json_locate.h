@@ -14,6 +14,12 @@ namespace rt {
 std::string pointer_child(const std::string& pointer, std::string_view key);
 std::string pointer_child(const std::string& pointer, size_t index);
 std::vector<std::string> pointer_tokens(std::string_view pointer);
+// Whether `pointer` names a value strictly inside the one `ancestor` names ("/a/b" is inside "/a").
+bool pointer_is_inside(std::string_view pointer, std::string_view ancestor);
+// The same value, or one inside the other: two reports about the same part of a document.
+inline bool pointers_related(std::string_view a, std::string_view b) {
+  return a == b || pointer_is_inside(a, b) || pointer_is_inside(b, a);
+}
 
 struct JsonLocation {
   size_t value_offset = 0;  // first byte of the value

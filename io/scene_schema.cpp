@@ -53,10 +53,6 @@ bool is_propagation(const std::string& message) {
   return false;
 }
 
-bool is_descendant(const std::string& pointer, const std::string& of) {
-  return pointer.size() > of.size() && pointer.compare(0, of.size(), of) == 0 && pointer[of.size()] == '/';
-}
-
 }  // namespace
 
 std::vector<SchemaError> check_scene_schema(const Json& document) {
@@ -69,8 +65,8 @@ std::vector<SchemaError> check_scene_schema(const Json& document) {
   // Where a value fails below a point (one branch of a oneOf), the deeper failure says more.
   std::vector<SchemaError> specific;
   for (const SchemaError& e : all) {
-    const bool deeper_exists =
-        std::any_of(all.begin(), all.end(), [&](const SchemaError& o) { return is_descendant(o.pointer, e.pointer); });
+    const bool deeper_exists = std::any_of(
+        all.begin(), all.end(), [&](const SchemaError& o) { return pointer_is_inside(o.pointer, e.pointer); });
     const bool repeated = std::any_of(specific.begin(), specific.end(), [&](const SchemaError& o) {
       return o.pointer == e.pointer && o.message == e.message;
     });

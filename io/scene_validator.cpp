@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <new>
 
+#include "io/json_locate.h"
 #include "io/json_reader.h"
 #include "io/scene_builder.h"
 #include "io/scene_loader.h"
@@ -11,13 +12,6 @@
 
 namespace rt {
 namespace {
-
-bool related(const std::string& a, const std::string& b) {
-  const auto under = [](const std::string& p, const std::string& of) {
-    return p.size() > of.size() && p.compare(0, of.size(), of) == 0 && p[of.size()] == '/';
-  };
-  return a == b || under(a, b) || under(b, a);
-}
 
 void validate_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
   std::optional<JsonDocument> doc = read_json_file(path, options.limits.scene_file_bytes, diags);
@@ -28,7 +22,7 @@ void validate_json_scene(const std::string& path, const LoadOptions& options, Di
   const std::vector<Diagnostic> loader = diags.all();
   for (const SchemaError& e : check_scene_schema(doc->root)) {
     const bool reported = std::any_of(loader.begin(), loader.end(), [&](const Diagnostic& d) {
-      return d.severity == Severity::kError && (d.pointer.empty() || related(d.pointer, e.pointer));
+      return d.severity == Severity::kError && (d.pointer.empty() || pointers_related(d.pointer, e.pointer));
     });
     if (!reported) reader.error(e.pointer, "schema: " + e.message);
   }

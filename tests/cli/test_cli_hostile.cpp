@@ -116,14 +116,15 @@ TEST_CASE("cli: Ctrl-C stops a render within a second and writes nothing", "[cli
   fs::create_directories(output_path("interrupted"));
   const std::string out = output_path("interrupted/long.png");
   fs::remove(out);
-  // About a minute of work on one thread; SIGINT after half a second.
+  // About a minute of work on one thread; SIGINT after two seconds, well into the render even on
+  // a loaded machine (a Ctrl-C while loading ends the process at once, with no message).
   const auto start = std::chrono::steady_clock::now();
   const Run r = rtcli("render scenes/primitives.json --threads 1 --width 4000 --height 3000 -o '" + out + "'",
-                      RTCLI_SOURCE_DIR, "timeout --preserve-status -s INT 0.5");
+                      RTCLI_SOURCE_DIR, "timeout --preserve-status -s INT 2");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(r.code == 130);
-  CHECK_THAT(r.output, Catch::Contains("interrupted") && Catch::Contains("nothing written"));
-  CHECK(seconds < 1.5);
+  CHECK_THAT(r.output, Catch::Contains("interrupted after") && Catch::Contains("nothing written"));
+  CHECK(seconds < 3.0);  // stopped within a second of the signal
   CHECK_FALSE(fs::exists(out));
   CHECK_FALSE(has_temporary_files(output_path("interrupted")));
 }

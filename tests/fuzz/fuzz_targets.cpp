@@ -1,5 +1,7 @@
 #include "tests/fuzz/fuzz_targets.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -45,6 +47,12 @@ bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) {
 }
 
 }  // namespace
+
+int abort_on_problem(const std::string& problem) {
+  if (problem.empty()) return 0;
+  std::fprintf(stderr, "invariant broken: %s\n", problem.c_str());
+  std::abort();
+}
 
 std::string scene_json(const uint8_t* data, size_t size) {
   const LoadOptions options = fuzz_options();

@@ -19,4 +19,7 @@ std::string gltf_model(const uint8_t* data, size_t size);
 // dropped): build a BVH, check its structure and trace rays against brute force.
 std::string bvh_build(const uint8_t* data, size_t size);
 
+// For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.
+int abort_on_problem(const std::string& problem);
+
 }  // namespace rt::fuzz

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "io/json_document.h"
+#include "io/json_locate.h"
 #include "io/scene_loader.h"
 #include "io/scene_schema.h"
 #include "io/scene_validator.h"
@@ -16,13 +17,6 @@
 using namespace rt;
 
 namespace {
-
-bool related(const std::string& a, const std::string& b) {
-  const auto under = [](const std::string& p, const std::string& of) {
-    return p.size() > of.size() && p.compare(0, of.size(), of) == 0 && p[of.size()] == '/';
-  };
-  return a == b || under(a, b) || under(b, a);
-}
 
 // Whether some error sits at `pointer` with `message` in its text.
 bool reports(const Diagnostics& diags, const std::string& pointer, const std::string& message) {
@@ -71,7 +65,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
       bool found = false;
       for (const SchemaError& e : errors) {
         said += e.pointer + ": " + e.message + "\n";
-        found = found || related(e.pointer, pointer);
+        found = found || pointers_related(e.pointer, pointer);
       }
       INFO("schema said:\n" << said);
       CHECK(found);
