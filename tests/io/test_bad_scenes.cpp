@@ -71,7 +71,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
       CHECK(found);
     }
   }
-  CHECK(schema_cases >= 30);
+  CHECK(schema_cases >= 40);
 }
 
 TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint", "[io][schema]") {
