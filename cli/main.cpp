@@ -9,6 +9,7 @@
 #include "cli/exit_codes.h"
 #include "cli/render_command.h"
 #include "cli/validate_command.h"
+#include "core/render_settings.h"
 
 int main(int argc, char** argv) {
   using namespace rt;
@@ -24,9 +25,9 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, kMaxImageSide));
   render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, kMaxImageSide));
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
