@@ -27,6 +27,6 @@ int replay(const std::string& folder, const Target& target) {
 
 }  // namespace
 
-TEST_CASE("fuzz regressions: scene files", "[fuzz]") { replay("scene", rt::fuzz::scene_json); }
-TEST_CASE("fuzz regressions: glTF models", "[fuzz]") { replay("gltf", rt::fuzz::gltf_model); }
+TEST_CASE("fuzz regressions: scene files", "[fuzz]") { CHECK(replay("scene", rt::fuzz::scene_json) >= 1); }
+TEST_CASE("fuzz regressions: glTF models", "[fuzz]") { CHECK(replay("gltf", rt::fuzz::gltf_model) >= 5); }
 TEST_CASE("fuzz regressions: BVH builds", "[fuzz]") { CHECK(replay("bvh", rt::fuzz::bvh_build) >= 1); }
