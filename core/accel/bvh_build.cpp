@@ -73,9 +73,13 @@ struct Box4 {
     hi = max4(hi, h);
   }
   void extend(const Box4& b) { extend(b.lo, b.hi); }
-  // In double: extents up to 2 x 3.4e38 and their products stay finite, so SAH costs stay
-  // comparable for any finite scene.
-  double half_area() const { return rt::half_area(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]); }
+  float half_area() const {
+    const Float4 e = hi - lo;
+    return e[0] < 0.0f ? 0.0f : e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+  }
+  // In double: extents up to 2 x 3.4e38 and their products stay finite. For nodes whose float
+  // area overflows (extents beyond ~1.8e19), so that SAH costs stay comparable there too.
+  double half_area_wide() const { return rt::half_area(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]); }
   Aabb aabb() const { return Aabb{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
 };
 
@@ -178,7 +182,10 @@ class BinaryBuilder {
       }
     }
     Split best;
-    const double inv_area = 1.0 / std::max(range.bounds.half_area(), 1e-300);
+    // Every box below is inside the node's: if its float area is finite, so are theirs.
+    const bool wide = !std::isfinite(range.bounds.half_area());
+    const float inv_area = 1.0f / std::max(range.bounds.half_area(), 1e-30f);
+    const double inv_area_wide = 1.0 / std::max(range.bounds.half_area_wide(), 1e-300);
     for (int a = 0; a < 3; ++a) {
       if (!binner.usable(a)) continue;  // all centroids share this coordinate
       // Sweep from the right, keeping the bounds of everything right of each plane.
@@ -198,9 +205,13 @@ class BinaryBuilder {
         acc.extend(bins[a][k - 1].bounds);
         count += bins[a][k - 1].count;
         if (count == 0 || right_count[k] == 0) continue;
-        const double cost = kTraversalCost + (acc.half_area() * static_cast<double>(count) +
-                                              right_bounds[k].half_area() * static_cast<double>(right_count[k])) *
-                                                 inv_area;
+        const double cost =
+            wide ? kTraversalCost + (acc.half_area_wide() * static_cast<double>(count) +
+                                     right_bounds[k].half_area_wide() * static_cast<double>(right_count[k])) *
+                                        inv_area_wide
+                 : kTraversalCost + (acc.half_area() * static_cast<float>(count) +
+                                     right_bounds[k].half_area() * static_cast<float>(right_count[k])) *
+                                        inv_area;
         if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
       }
     }
