@@ -1,5 +1,7 @@
 #include "cli/interrupt.h"
 
+#include <csignal>
+
 namespace rt {
 namespace {
 
@@ -10,9 +12,16 @@ std::atomic<int> g_signal{0};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
               "a signal handler may only touch lock-free atomics");
 
+// The first signal raises the flag; a second one gets the default action (terminate) at once.
+// (Not SA_RESETHAND: ThreadSanitizer, which defers handlers, then applies the default action to
+// the first signal too.)
 extern "C" void on_signal(int sig) {
+  if (g_interrupted.exchange(true)) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    return;
+  }
   g_signal.store(sig);
-  g_interrupted.store(true);
 }
 
 }  // namespace
@@ -23,7 +32,7 @@ InterruptWatch::InterruptWatch() {
   struct sigaction action {};
   action.sa_handler = &on_signal;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND;  // the second Ctrl-C gets the default action: terminate now
+  action.sa_flags = 0;
   sigaction(SIGINT, &action, &previous_int_);
   sigaction(SIGTERM, &action, &previous_term_);
 }

@@ -1,7 +1,7 @@
 // Ctrl-C (SIGINT) and SIGTERM while rendering. The handler only raises a flag; the renderer
 // checks it before every pixel, so a render stops well within a second and the command exits
 // without writing anything (no temporary file exists before the render is complete). A second
-// Ctrl-C kills the process at once (the handler is reset after the first).
+// Ctrl-C kills the process at once.
 #pragma once
 
 #include <signal.h>
