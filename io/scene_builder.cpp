@@ -107,8 +107,9 @@ class Builder {
         return;
       }
       if (!model) {
-        error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\" (" +
-                                         ref.resolved_path + "): " + why.message);
+        error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
+                                         (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") + ": " +
+                                         why.message);
         return;
       }
       for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
