@@ -47,7 +47,7 @@ void Diagnostics::add(Diagnostic d) {
 
 void Diagnostics::sort_by_position() {
   std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return a.file != b.file ? false : a.line != b.line ? a.line < b.line : a.column < b.column;
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
   });
 }
 

@@ -36,7 +36,8 @@ class Diagnostics {
     add(Diagnostic{Severity::kError, file, 0, 0, "", std::move(message), ""});
   }
 
-  // In order of position in the file: file-level problems (no line) first, then by line:column.
+  // In order of position in the file (for the diagnostics of one file): file-level problems (no
+  // line) first, then by line:column; equal positions keep their order.
   void sort_by_position();
 
   bool has_errors() const;

@@ -22,7 +22,7 @@ void validate_json_scene(const std::string& path, const LoadOptions& options, Di
   const std::vector<Diagnostic> loader = diags.all();
   for (const SchemaError& e : check_scene_schema(doc->root)) {
     const bool reported = std::any_of(loader.begin(), loader.end(), [&](const Diagnostic& d) {
-      return d.severity == Severity::kError && (d.pointer.empty() || pointers_related(d.pointer, e.pointer));
+      return d.severity == Severity::kError && pointers_related(d.pointer, e.pointer);  // "" contains every pointer
     });
     if (!reported) reader.error(e.pointer, "schema: " + e.message);
   }
