@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "cli/exit_codes.h"
+#include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
 #include "core/bench/generated_mesh.h"
@@ -75,13 +76,15 @@ int run_bench(const BenchCommand& cmd) {
   }
   std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(),
               scene->description.render.width, scene->description.render.height);
-  std::vector<double> seconds;
+  std::vector<RenderStats> renders;
   for (const unsigned t : thread_counts) {
-    seconds.push_back(best_render_seconds(scene->scene, scene->description.render, t));
-    std::printf("  %u thread%s %.3f s", t, t == 1 ? "" : "s", seconds.back());
+    renders.push_back(best_render(scene->scene, scene->description.render, t));
+    const RenderStats& r = renders.back();
+    std::printf("  %u thread%s %.3f s (%.2f Mrays/s)", t, t == 1 ? "" : "s", r.seconds,
+                static_cast<double>(r.rays.total()) / r.seconds / 1e6);
   }
-  if (seconds.size() > 1) std::printf("  (%.2fx)", seconds.front() / seconds.back());
-  std::printf("\n");
+  if (renders.size() > 1) std::printf("  (%.2fx)", renders.front().seconds / renders.back().seconds);
+  std::printf("\nrays: %s\n", format_ray_counts(renders.front().rays).c_str());
   return kExitSuccess;
 }
 

@@ -21,6 +21,17 @@ std::string format_count(double count) {
   return buf;
 }
 
+std::string format_ray_counts(const RayCounters& rays) {
+  std::string out;
+  for (size_t k = 0; k < kRayKindCount; ++k) {
+    if (k > 0) out += ", ";
+    std::string n = format_count(static_cast<double>(rays.count[k]));
+    if (n.back() == ' ') n.pop_back();
+    out += n + " " + kRayKindNames[k];
+  }
+  return out;
+}
+
 void ProgressBar::update(const RenderProgress& p) {
   constexpr int kWidth = 30;
   const double fraction =

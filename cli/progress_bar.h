@@ -24,5 +24,7 @@ class ProgressBar {
 std::string format_duration(double seconds);
 // "3.41 M", "512.0 k", "12": a count with an SI prefix.
 std::string format_count(double count);
+// Every ray kind with its count: "1.23 M camera, 2.40 M shadow, 0 reflection, ...".
+std::string format_ray_counts(const RayCounters& rays);
 
 }  // namespace rt

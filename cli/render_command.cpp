@@ -126,13 +126,10 @@ int run_render(const RenderCommand& cmd) {
   }
   if (!cmd.quiet) {
     const double rate = stats.seconds > 0 ? static_cast<double>(stats.rays.total()) / stats.seconds : 0.0;
-    std::fprintf(stderr,
-                 "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%scamera, %sshadow), %.2f Mrays/s, %u thread%s\n",
+    std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s\n",
                  cmd.scene.c_str(), settings.width, settings.height, stats.seconds, load_seconds,
-                 format_count(static_cast<double>(stats.rays.total())).c_str(),
-                 format_count(static_cast<double>(stats.rays.camera)).c_str(),
-                 format_count(static_cast<double>(stats.rays.shadow)).c_str(), rate / 1e6, stats.threads,
-                 stats.threads == 1 ? "" : "s");
+                 format_count(static_cast<double>(stats.rays.total())).c_str(), format_ray_counts(stats.rays).c_str(),
+                 rate / 1e6, stats.threads, stats.threads == 1 ? "" : "s");
     std::printf("wrote %s\n", output.c_str());
   }
   return kExitSuccess;

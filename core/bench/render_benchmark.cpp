@@ -1,16 +1,16 @@
 #include "core/bench/render_benchmark.h"
 
-#include <algorithm>
-
-#include "core/render/renderer.h"
-
 namespace rt {
 
-double best_render_seconds(const Scene& scene, RenderSettings settings, unsigned threads, int repeats) {
+RenderStats best_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats) {
   settings.threads = threads;
   Image image;
-  double best = kInfinity;
-  for (int repeat = 0; repeat < repeats; ++repeat) best = std::min(best, render(scene, settings, image).seconds);
+  RenderStats best;
+  best.seconds = kInfinity;
+  for (int repeat = 0; repeat < repeats; ++repeat) {
+    const RenderStats stats = render(scene, settings, image);
+    if (stats.seconds < best.seconds) best = stats;
+  }
   return best;
 }
 

@@ -1,12 +1,13 @@
-// The time of a whole render (camera rays, shading, shadows), as `rtcli bench` reports it.
+// The time of a whole render (camera rays, shading, shadows, secondary rays), as `rtcli bench`
+// reports it.
 #pragma once
 
-#include "core/render_settings.h"
-#include "core/scene.h"
+#include "core/render/renderer.h"
 
 namespace rt {
 
-// Best of `repeats` renders of `scene` with `settings` on `threads` threads, in seconds.
-double best_render_seconds(const Scene& scene, RenderSettings settings, unsigned threads, int repeats = 3);
+// The fastest of `repeats` renders of `scene` with `settings` on `threads` threads: its time and
+// rays by kind (the same for every repeat: the image is deterministic).
+RenderStats best_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats = 3);
 
 }  // namespace rt

@@ -10,7 +10,7 @@ Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContex
   const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
   Rng rng = Rng::for_sample(s.seed, ctx.frame, pixel_index, sample);
   TraceContext trace{ctx.scene, s, ctx.counters, rng};
-  ++ctx.counters.camera;
+  ++ctx.counters[RayKind::kCamera];
   return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height), 0, trace);
 }
 

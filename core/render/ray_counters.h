@@ -2,20 +2,30 @@
 // so counting costs no synchronisation.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace rt {
 
-struct RayCounters {
-  uint64_t camera = 0;
-  uint64_t shadow = 0;
-  uint64_t secondary = 0;  // reflection, refraction, glossy
+enum class RayKind : uint8_t { kCamera, kShadow, kReflection, kRefraction, kGlossy };
+inline constexpr size_t kRayKindCount = 5;
+// Names as printed in summaries and `rtcli bench`, in RayKind order.
+inline constexpr std::array<const char*, kRayKindCount> kRayKindNames = {"camera", "shadow", "reflection", "refraction",
+                                                                         "glossy"};
 
-  uint64_t total() const { return camera + shadow + secondary; }
+struct RayCounters {
+  std::array<uint64_t, kRayKindCount> count{};
+
+  uint64_t& operator[](RayKind k) { return count[static_cast<size_t>(k)]; }
+  uint64_t operator[](RayKind k) const { return count[static_cast<size_t>(k)]; }
+  uint64_t total() const {
+    uint64_t sum = 0;
+    for (const uint64_t c : count) sum += c;
+    return sum;
+  }
   RayCounters& operator+=(const RayCounters& o) {
-    camera += o.camera;
-    shadow += o.shadow;
-    secondary += o.secondary;
+    for (size_t i = 0; i < kRayKindCount; ++i) count[i] += o.count[i];
     return *this;
   }
 };

@@ -17,7 +17,7 @@ Vec3 direct_lighting(const SurfaceInteraction& si, Vec3 n, Vec3 ng, Vec3 v, Trac
     shadow.direction = ls.direction;
     // Stop just short of the light so a surface the light sits on does not shadow it.
     shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
-    ++ctx.counters.shadow;
+    ++ctx.counters[RayKind::kShadow];
     if (scene.occluded(shadow)) continue;
     sum += ls.radiance * phong_reflectance(m, n, ls.direction, v);
   }

@@ -97,7 +97,7 @@ TEST_CASE("tracing and shading allocate nothing per ray", "[bvh][alloc]") {
   const long after = g_allocations.load();
 
   CHECK(hits > 1000);
-  CHECK(counters.shadow > 0);
+  CHECK(counters[RayKind::kShadow] > 0);
   CHECK(sum.x > 0.0f);
   CHECK(after - before == 0);
 }

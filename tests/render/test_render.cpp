@@ -55,9 +55,9 @@ TEST_CASE("render statistics count camera and shadow rays", "[render]") {
                                      ++progress_calls;
                                      CHECK(p.pixels_done <= p.pixels_total);
                                    }});
-  CHECK(stats.rays.camera == 96u * 64u * 4u);  // 2 x 2 samples per pixel
-  CHECK(stats.rays.shadow > 0);
-  CHECK(stats.rays.shadow <= stats.rays.camera);  // one light
+  CHECK(stats.rays[RayKind::kCamera] == 96u * 64u * 4u);  // 2 x 2 samples per pixel
+  CHECK(stats.rays[RayKind::kShadow] > 0);
+  CHECK(stats.rays[RayKind::kShadow] <= stats.rays[RayKind::kCamera]);  // one light
   CHECK(progress_calls >= 1);
   CHECK(image.width == 96);
 }
