@@ -1,4 +1,5 @@
-// Tests every primitive. The reference the BVH is checked against; same interface as Bvh.
+// Tests every primitive. The reference the BVH is checked against; same interface as Bvh, and
+// the same per-primitive crossing visitors (core/accel/primitives.h).
 #pragma once
 
 #include "core/accel/primitives.h"
@@ -15,10 +16,16 @@ class BruteForce {
     return found;
   }
   bool occluded(const Ray& ray) const {
-    Ray r = ray;
-    Hit h;
-    for (uint32_t id = 0; id < prims_->size(); ++id)
-      if (intersect_primitive(*prims_, id, r, h)) return true;
+    return for_each_hit(ray, [](const Hit&) { return true; });
+  }
+  // As Bvh::for_each_hit: every crossing in the ray's interval, until visit returns true.
+  template <class Visitor>
+  bool for_each_hit(const Ray& ray, Visitor&& visit) const {
+    const uint32_t triangles = static_cast<uint32_t>(prims_->triangles.size());
+    for (uint32_t id = 0; id < triangles; ++id)
+      if (visit_triangle_crossing(prims_->triangles[id], id, ray, visit)) return true;
+    for (uint32_t id = triangles; id < prims_->size(); ++id)
+      if (visit_shape_crossings(prims_->shape(id), id, ray, visit)) return true;
     return false;
   }
 

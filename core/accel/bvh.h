@@ -57,6 +57,11 @@ class Bvh {
   bool intersect(Ray& ray, Hit& hit) const;
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const;
+  // Any-hit with a visitor: calls visit(const Hit&) for every crossing in (ray.tmin, ray.tmax)
+  // (both crossings of a sphere, say) in no particular order, until it returns true ("stop").
+  // Returns whether it was stopped. Defined in core/accel/bvh_traversal.h; include that to use it.
+  template <class Visitor>
+  bool for_each_hit(const Ray& ray, Visitor&& visit) const;
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
   // BVH holds its own copy in leaf order).
@@ -79,8 +84,8 @@ class Bvh {
   // checks scenes first and reports such objects with their location.
 
  private:
-  template <bool kAnyHit>
-  bool traverse(Ray& ray, Hit& hit) const;
+  template <class LeafVisitor>
+  bool traverse(Ray& ray, LeafVisitor&& visit_leaf) const;
 
   uint32_t triangle_count_ = 0;
   std::vector<AnalyticShape> shapes_;

@@ -35,4 +35,33 @@ inline bool intersect_primitive(const PrimitiveSet& prims, uint32_t id, Ray& ray
   return found;
 }
 
+// Crossings of one primitive, for visitors that see every hit along a ray (shadow rays through
+// glass now; alpha masks and CSG later). A triangle is crossed at most once; a convex analytic
+// shape at most twice (the plane once). The loop re-intersects past the last crossing, so it
+// needs no "all roots" routine per shape; the cap only guards against rounding surprises.
+inline constexpr int kMaxShapeCrossings = 4;
+
+// Calls visit(hit) for the crossing of triangle `id` in (ray.tmin, ray.tmax), with hit.prim set.
+// Returns true when the visitor asked to stop.
+template <class Visitor>
+bool visit_triangle_crossing(const PackedTriangle& triangle, uint32_t id, const Ray& ray, Visitor& visit) {
+  Hit hit;
+  if (!intersect_triangle(triangle, ray, hit)) return false;
+  hit.prim = id;
+  return visit(static_cast<const Hit&>(hit));
+}
+
+// Calls visit(hit) for each crossing of shape `id` in (ray.tmin, ray.tmax), nearest first.
+template <class Visitor>
+bool visit_shape_crossings(const AnalyticShape& shape, uint32_t id, const Ray& ray, Visitor& visit) {
+  Ray rest = ray;
+  Hit hit;
+  for (int i = 0; i < kMaxShapeCrossings && intersect_shape(shape, rest, hit); ++i) {
+    hit.prim = id;
+    if (visit(static_cast<const Hit&>(hit))) return true;
+    rest.tmin = hit.t;
+  }
+  return false;
+}
+
 }  // namespace rt

@@ -1,12 +1,16 @@
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
+#include "core/accel/bvh_traversal.h"
 #include "core/rng.h"
 
 using namespace rt;
@@ -94,6 +98,39 @@ TEST_CASE("BVH occlusion equals brute force, with finite segments", "[bvh]") {
   }
   CHECK(blocked > 2000);
   CHECK(blocked < 18000);
+}
+
+TEST_CASE("BVH any-hit visitor sees every crossing brute force sees, and can stop early", "[bvh]") {
+  const PrimitiveSet prims = random_scene(9);
+  const Bvh bvh(prims, BvhBuildOptions{1});
+  const BruteForce brute(prims);
+  Rng rng(13);
+  size_t crossings = 0, shapes_crossed_twice = 0;
+  for (int i = 0; i < 5000; ++i) {
+    Ray r;
+    r.origin = random_in(rng, -12, 12);
+    r.direction = random_direction(rng);
+    r.tmax = 30.0f;
+    std::vector<std::pair<uint32_t, float>> a, b;
+    bvh.for_each_hit(r, [&](const Hit& h) { return a.emplace_back(h.prim, h.t), false; });
+    brute.for_each_hit(r, [&](const Hit& h) { return b.emplace_back(h.prim, h.t), false; });
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    REQUIRE(a == b);
+    for (size_t k = 0; k + 1 < a.size(); ++k) {
+      REQUIRE(a[k].second > r.tmin);
+      REQUIRE(a[k].second < r.tmax);
+      shapes_crossed_twice += a[k].first == a[k + 1].first && !prims.is_triangle(a[k].first);
+    }
+    crossings += a.size();
+    // Stopping at the first crossing visits exactly one.
+    int visits = 0;
+    const bool stopped = bvh.for_each_hit(r, [&](const Hit&) { return ++visits, true; });
+    REQUIRE(stopped == !a.empty());
+    REQUIRE(visits == (a.empty() ? 0 : 1));
+  }
+  CHECK(crossings > 5000);
+  CHECK(shapes_crossed_twice > 200);  // a ray through a sphere or cube is seen entering and leaving
 }
 
 TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
