@@ -19,6 +19,8 @@ struct RenderSettings {
   PixelSamplerKind sampler = PixelSamplerKind::kCentre;
   int samples_per_axis = 1;  // uniform sampler: n x n samples per pixel
   int tile_size = 32;        // pixels per tile side; the image never depends on it
+  int glossy_samples = 8;    // the proposal's glossy_count: rays per glossy reflection
+  bool glossy = true;        // false (--no-glossy): glossy surfaces reflect as perfect mirrors
 };
 
 // Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel
@@ -27,6 +29,7 @@ inline constexpr int kMaxImageSide = 16384;
 inline constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
 inline constexpr int kMaxSamplesPerAxis = 16;
 inline constexpr int kMaxRecursionDepth = 64;
+inline constexpr int kMaxGlossySamples = 256;
 // Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
 inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
 

@@ -1,6 +1,6 @@
 #include "core/render/integrator.h"
 
-#include "core/render/normals_integrator.h"
+#include "core/render/debug_integrators.h"
 #include "core/render/whitted_integrator.h"
 
 namespace rt {
@@ -18,8 +18,8 @@ std::unique_ptr<Integrator> make() {
 
 // The name table. Adding an integrator = one file and one line here.
 constexpr Entry kIntegrators[] = {
-    {"whitted", &make<WhittedIntegrator>},
-    {"normals", &make<NormalsIntegrator>},
+    {"whitted", &make<WhittedIntegrator>}, {"normals", &make<NormalsIntegrator>}, {"uv", &make<UvIntegrator>},
+    {"depth", &make<DepthIntegrator>},     {"albedo", &make<AlbedoIntegrator>},
 };
 
 }  // namespace

@@ -1,38 +1,123 @@
 #include "core/render/whitted_integrator.h"
 
-#include "materials/phong.h"
+#include "core/render/direct_lighting.h"
+#include "materials/glossy.h"
+#include "materials/optics.h"
 
 namespace rt {
+namespace {
 
-Vec3 direct_lighting(const SurfaceInteraction& si, Vec3 n, Vec3 ng, Vec3 v, TraceContext& ctx) {
+float index_of(const MediumStack& media, const Scene& scene) {
+  return media.empty() ? 1.0f : scene.materials[media.innermost()].ior;
+}
+
+}  // namespace
+
+Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int depth, TraceContext& ctx) const {
+  PathState state;
+  state.depth = depth;
+  return trace(camera_ray, state, ctx);
+}
+
+Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
-  const Material& m = scene.materials[si.material];
-  Vec3 sum = scene.ambient * m.kd;
-  for (const Light& light : scene.lights) {
-    const LightSample ls = sample_light(light, si.position);
-    // A light behind the geometric surface cannot reach it, whatever the shading normal says.
-    if (glm::dot(ng, ls.direction) <= 0.0f || glm::dot(n, ls.direction) <= 0.0f) continue;
-    Ray shadow;
-    shadow.origin = offset_ray_origin(si.position, ng, ls.direction);
-    shadow.direction = ls.direction;
-    // Stop just short of the light so a surface the light sits on does not shadow it.
-    shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
-    ++ctx.counters[RayKind::kShadow];
-    if (scene.occluded(shadow)) continue;
-    sum += ls.radiance * phong_reflectance(m, n, ls.direction, v);
+  Ray ray = incoming;
+  Hit hit;
+  const bool found = scene.intersect(ray, hit);
+  Vec3 radiance = scene.background;
+  if (found) {
+    const SurfaceInteraction si = scene.surface(ray, hit);
+    const EvaluatedSurface s = evaluate_surface(scene.materials[si.material], si, ray.direction);
+    radiance = direct_lighting(s, ctx);
+    if (state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
+  }
+  // Beer-Lambert along the segment just travelled, inside the innermost medium. A ray that
+  // leaves through an open mesh without hitting anything travelled forever: it arrives dark.
+  if (!state.media.empty()) {
+    const Material& m = scene.materials[state.media.innermost()];
+    if (m.absorbing()) {
+      const float distance = found ? hit.t * glm::length(ray.direction) : kInfinity;
+      radiance *= glm::exp(-m.absorption * distance);
+    }
+  }
+  return radiance;
+}
+
+Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state,
+                                  TraceContext& ctx) const {
+  const Vec3 d = glm::normalize(incoming);
+  Vec3 reflect_weight = s.reflectivity;
+  Vec3 refract_weight(0.0f);
+  Vec3 refracted(0.0f);
+  MediumStack beyond = state.media;
+  if (s.transmissive()) {
+    // Entering: from the innermost medium into this material. Leaving: out of it, into what
+    // remains once it is removed (the medium stack's rule).
+    const MediumStack after = s.entering ? state.media.entered(s.material) : state.media.left(s.material);
+    const float n1 = s.entering ? index_of(state.media, ctx.scene) : s.ior;
+    const float n2 = index_of(after, ctx.scene);
+    float fresnel = schlick_reflectance(glm::dot(s.wo, s.n), n1, n2);
+    // Total internal reflection sends everything to the reflected ray. A shading normal can bend
+    // the refracted ray back out of the surface; then the geometric normal decides.
+    if (fresnel < 1.0f && (!refract(d, s.n, n1 / n2, refracted) || glm::dot(refracted, s.ng) >= 0.0f) &&
+        !refract(d, s.ng, n1 / n2, refracted))
+      fresnel = 1.0f;
+    reflect_weight += s.transmission * fresnel;
+    refract_weight = s.transmission * (1.0f - fresnel);
+    beyond = after;
+  }
+  Vec3 sum(0.0f);
+  PathState next = state;
+  ++next.depth;
+  if (max_component(state.weight * reflect_weight) >= kMinWeight) {
+    next.weight = state.weight * reflect_weight;
+    Vec3 mirror = reflect(d, s.n);
+    if (glm::dot(mirror, s.ng) <= 0.0f) mirror = reflect(d, s.ng);  // never into the surface
+    sum += reflect_weight * reflected(s, mirror, next, ctx);
+  }
+  if (max_component(state.weight * refract_weight) >= kMinWeight) {
+    next.weight = state.weight * refract_weight;
+    next.media = beyond;
+    sum += refract_weight * traced_from(s, refracted, RayKind::kRefraction, next, ctx);
   }
   return sum;
 }
 
-Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int /*depth*/, TraceContext& ctx) const {
-  Ray ray = camera_ray;
-  Hit hit;
-  if (!ctx.scene.intersect(ray, hit)) return ctx.scene.background;
-  const SurfaceInteraction si = ctx.scene.surface(ray, hit);
-  // Shade the side the ray sees: both sides of a surface are lit like its front.
-  const float side = si.front_face ? 1.0f : -1.0f;
-  const Vec3 v = -glm::normalize(ray.direction);
-  return direct_lighting(si, side * si.shading_normal, side * si.geometric_normal, v, ctx);
+// The mirror ray, or the proposal's glossy rays around it: glossy_samples rays stratified over
+// the blur square (glossy.h), random numbers from the pixel's stream. Rays that fall below the
+// surface are discarded and the rest averaged; if all fall below, the mirror ray stands in. Only
+// the first glossy hit of a path splits; glossy hits below it trace one jittered ray each, so a
+// ray tree costs glossy_samples x depth rays rather than glossy_samples ^ depth.
+Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const PathState& state,
+                                  TraceContext& ctx) const {
+  if (!ctx.settings.glossy || s.glossy <= 0.0f || ctx.settings.glossy_samples < 1)
+    return traced_from(s, mirror, RayKind::kReflection, state, ctx);
+  const int count = state.split ? 1 : ctx.settings.glossy_samples;
+  const GlossyGrid grid = glossy_grid(count);
+  Vec3 u, v;
+  hughes_moller_basis(mirror, u, v);
+  PathState below = state;
+  below.split = true;
+  Vec3 sum(0.0f);
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    const float jx = ctx.rng.next_float(), jy = ctx.rng.next_float();
+    const Vec3 direction = glossy_direction(mirror, u, v, s.glossy, glossy_grid_point(grid, i, jx, jy));
+    if (glm::dot(direction, s.ng) <= 0.0f) continue;
+    sum += traced_from(s, direction, RayKind::kGlossy, below, ctx);
+    ++kept;
+  }
+  if (kept == 0) return traced_from(s, mirror, RayKind::kReflection, state, ctx);
+  return sum / static_cast<float>(kept);
+}
+
+Vec3 WhittedIntegrator::traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
+                                    TraceContext& ctx) const {
+  Ray ray;
+  ray.origin = offset_ray_origin(s.position, s.ng, direction);
+  ray.direction = direction;
+  ++ctx.counters[kind];
+  return trace(ray, state, ctx);
 }
 
 }  // namespace rt

@@ -1,18 +1,37 @@
-// Whitted-style direct lighting: ambient + for every light, Phong diffuse and specular times a
-// hard shadow test. Secondary rays (reflection, refraction) extend this integrator next.
+// Whitted ray tracing: direct light at the closest hit, plus mirror reflection, refraction with
+// the Fresnel split (Schlick) and the proposal's glossy reflection, traced recursively up to
+// render.max_depth bounces. The rules (weights, nesting, glossy sampling) are in README,
+// "Reflection, refraction and glossy reflection".
 #pragma once
 
 #include "core/render/integrator.h"
+#include "core/render/medium_stack.h"
+#include "materials/evaluated_surface.h"
 
 namespace rt {
 
 class WhittedIntegrator final : public Integrator {
  public:
   Vec3 radiance(const Ray& ray, int depth, TraceContext& ctx) const override;
-};
 
-// Direct light reaching `si` from every light, with hard shadows, through the hit's material.
-// v points from the surface to the viewer; n and ng are already turned to face the viewer.
-Vec3 direct_lighting(const SurfaceInteraction& si, Vec3 n, Vec3 ng, Vec3 v, TraceContext& ctx);
+  // Where a ray is in its tree: passed by value, so branches never see each other's state.
+  struct PathState {
+    int depth = 0;       // bounces already taken
+    Vec3 weight{1.0f};   // this ray's weight in the pixel: branches below kMinWeight are not traced
+    MediumStack media;   // what the ray travels through
+    bool split = false;  // a glossy reflection above already split the path into glossy_samples rays
+  };
+  // A secondary ray whose weight in the pixel is below this is not traced (Hall and Greenberg's
+  // adaptive tree depth): it bounds the ray tree of glass, whose every hit branches in two.
+  static constexpr float kMinWeight = 1.0f / 512.0f;
+
+  Vec3 trace(const Ray& ray, const PathState& state, TraceContext& ctx) const;
+
+ private:
+  Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
+  Vec3 reflected(const EvaluatedSurface& s, Vec3 mirror, const PathState& state, TraceContext& ctx) const;
+  Vec3 traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
+                   TraceContext& ctx) const;
+};
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/lights/light.h"
+#include "core/material.h"
 #include "io/rgb8_image.h"
 #include "materials/phong.h"
 
@@ -20,15 +21,15 @@ TEST_CASE("phong: Lambert term plus a specular lobe around the mirror direction"
   const Vec3 n(0, 1, 0);
   const Vec3 l = glm::normalize(Vec3(1, 1, 0));
   // Viewer exactly in the mirror direction: full specular.
-  Vec3 f = phong_reflectance(m, n, l, glm::normalize(Vec3(-1, 1, 0)));
+  Vec3 f = phong_reflectance(m.kd, m.ks, m.shininess, n, l, glm::normalize(Vec3(-1, 1, 0)));
   CHECK(f.x == Approx(0.5f * std::sqrt(0.5f) + 0.25f));
   // Viewer at 60 degrees from the mirror direction: cos = 0.5, specular 0.25 * 0.5^10.
   const Vec3 r = glm::normalize(Vec3(-1, 1, 0));
   const Vec3 v = glm::normalize(0.5f * r + std::sqrt(0.75f) * glm::normalize(Vec3(1, 1, 0)));
-  f = phong_reflectance(m, n, l, v);
+  f = phong_reflectance(m.kd, m.ks, m.shininess, n, l, v);
   CHECK(f.x == Approx(0.5f * std::sqrt(0.5f) + 0.25f * std::pow(0.5f, 10.0f)).epsilon(1e-4));
   // Light below the surface: nothing.
-  CHECK(phong_reflectance(m, n, -l, v) == Vec3(0.0f));
+  CHECK(phong_reflectance(m.kd, m.ks, m.shininess, n, -l, v) == Vec3(0.0f));
 }
 
 TEST_CASE("point light: quadratic attenuation 1 / (c0 + c1 d + c2 d^2)", "[lights]") {

@@ -1,0 +1,49 @@
+// The transmissive objects a ray is inside, innermost last: how refraction handles nested and
+// touching glass (README, "Refraction"). A camera ray starts in air (empty stack). Entering a
+// transmissive surface pushes its material; the index on the far side of the surface is the
+// material's and on the near side the innermost medium's (1 for air). Leaving removes the
+// innermost entry of that material; the index outside is then the new innermost medium's. So a
+// glass of water works when modelled as nested closed surfaces (water inside glass), and an air
+// bubble is a surface with ior 1. Fixed capacity, copied by value down the ray tree: no allocation.
+#pragma once
+
+#include <cstdint>
+
+namespace rt {
+
+class MediumStack {
+ public:
+  static constexpr int kCapacity = 8;  // deeper nesting forgets the outermost medium
+
+  bool empty() const { return size_ == 0; }
+  uint32_t innermost() const { return materials_[size_ - 1]; }  // requires !empty()
+
+  MediumStack entered(uint32_t material) const {
+    MediumStack s = *this;
+    if (s.size_ == kCapacity) {
+      for (int i = 1; i < kCapacity; ++i) s.materials_[i - 1] = s.materials_[i];
+      --s.size_;
+    }
+    s.materials_[s.size_++] = material;
+    return s;
+  }
+
+  // Leaving a material the ray was not known to be inside (an open mesh, a camera inside glass)
+  // changes nothing.
+  MediumStack left(uint32_t material) const {
+    MediumStack s = *this;
+    for (int i = s.size_ - 1; i >= 0; --i) {
+      if (s.materials_[i] != material) continue;
+      for (int j = i + 1; j < s.size_; ++j) s.materials_[j - 1] = s.materials_[j];
+      --s.size_;
+      break;
+    }
+    return s;
+  }
+
+ private:
+  uint32_t materials_[kCapacity] = {};
+  int size_ = 0;
+};
+
+}  // namespace rt
