@@ -29,6 +29,11 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")
       ->check(CLI::Range(1, kMaxImageSide));
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
+  render_cmd->add_option("--integrator", render.integrator,
+                         "whitted (default), or a debug view: normals, uv, depth, albedo (overrides the scene)");
+  render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
+      ->check(CLI::Range(1, kMaxGlossySamples));
+  render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;

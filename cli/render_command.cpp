@@ -11,6 +11,7 @@
 #include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
+#include "core/render/integrator.h"
 #include "core/render/renderer.h"
 #include "io/png_file.h"
 #include "io/scene_loader.h"
@@ -66,6 +67,13 @@ bool output_is_an_input(const std::string& output, const std::vector<std::string
 int run_render(const RenderCommand& cmd) {
   const std::string output = cmd.output.empty() ? default_output(cmd.scene) : cmd.output;
   std::string error;
+  if (cmd.integrator && !make_integrator(*cmd.integrator)) {
+    std::string names;
+    for (const std::string& n : integrator_names()) names += (names.empty() ? "" : ", ") + n;
+    std::fprintf(stderr, "rtcli: error: --integrator: unknown integrator \"%s\"; expected one of: %s\n",
+                 cmd.integrator->c_str(), names.c_str());
+    return kExitBadInput;
+  }
   if (!check_output(output, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitBadInput;
@@ -87,6 +95,9 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.height) settings.height = *cmd.height;
   if (cmd.seed) settings.seed = *cmd.seed;
   if (cmd.threads) settings.threads = *cmd.threads;
+  if (cmd.integrator) settings.integrator = *cmd.integrator;
+  if (cmd.glossy_samples) settings.glossy_samples = *cmd.glossy_samples;
+  if (cmd.no_glossy) settings.glossy = false;
   if (cmd.width || cmd.height) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,

@@ -1,4 +1,5 @@
-// `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S] [--quiet]`
+// `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,9 @@ struct RenderCommand {
   std::optional<unsigned> threads;
   std::optional<int> width, height;
   std::optional<uint64_t> seed;
+  std::optional<std::string> integrator;
+  std::optional<int> glossy_samples;
+  bool no_glossy = false;
   bool quiet = false;
 };
 

@@ -23,13 +23,6 @@ struct Scene {
 
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
-  // The fraction of light that passes along a shadow ray, per channel: 0 when anything opaque is
-  // in the way; otherwise the product of the transmission of every transmissive surface crossed
-  // (glass casts a lighter, tinted shadow), times Beer-Lambert absorption over the distance
-  // inside each absorbing object. Shadow rays are not bent (no caustics). Any-hit traversal with
-  // a visitor: stops at the first opaque surface.
-  Vec3 transmittance(const Ray& ray) const;
-
   // The material index of primitive `prim`.
   uint32_t material_of(uint32_t prim) const;
 

@@ -95,8 +95,7 @@ struct Elements {
   bool normalized = false;
 
   double get(uint64_t i, int c) const {
-    return read_component(first + i * stride + static_cast<uint64_t>(c) * component_bytes, component_type,
-                          normalized);
+    return read_component(first + i * stride + static_cast<uint64_t>(c) * component_bytes, component_type, normalized);
   }
 };
 
@@ -108,7 +107,8 @@ const tinygltf::BufferView* checked_view(const tinygltf::Model& model, int view_
   }
   const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(view_index)];
   if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
-    error = "bufferView " + to_string(view_index) + " names buffer " + to_string(view.buffer) + ", which does not exist";
+    error =
+        "bufferView " + to_string(view_index) + " names buffer " + to_string(view.buffer) + ", which does not exist";
     return nullptr;
   }
   const uint64_t size = model.buffers[static_cast<size_t>(view.buffer)].data.size();
@@ -161,8 +161,8 @@ bool locate(const tinygltf::Model& model, int view_index, uint64_t byte_offset, 
 // Reads accessor `index` into `out` (count x components), applying `convert` to each value;
 // convert returns false (after setting error) to reject a value.
 template <class T, class Convert>
-bool read_accessor(const tinygltf::Model& model, int index, int components, uint64_t max_elements,
-                   std::vector<T>& out, std::string& error, const Convert& convert) {
+bool read_accessor(const tinygltf::Model& model, int index, int components, uint64_t max_elements, std::vector<T>& out,
+                   std::string& error, const Convert& convert) {
   if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
     error = "accessor " + to_string(index) + " does not exist";
     return false;
@@ -271,7 +271,8 @@ bool read_index_accessor(const tinygltf::Model& model, int index, uint64_t max_e
     const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
     if (!is_unsigned_integer(a.componentType) || a.normalized) {
       error = "index accessor " + to_string(index) + " has component type " + component_name(a.componentType) +
-              (a.normalized ? " (normalized)" : "") + "; glTF allows only UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT";
+              (a.normalized ? " (normalized)" : "") +
+              "; glTF allows only UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT";
       return false;
     }
   }

@@ -2,10 +2,10 @@
 
 #include <filesystem>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <tiny_gltf.h>
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_file.h"
@@ -188,8 +188,9 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     }
     if (parent[static_cast<size_t>(root)] >= 0 || is_root[static_cast<size_t>(root)]) {
       error = "the scene lists node " + to_string(root) +
-              (is_root[static_cast<size_t>(root)] ? " twice" : ", which is a child of node " +
-                                                                  to_string(parent[static_cast<size_t>(root)])) +
+              (is_root[static_cast<size_t>(root)]
+                   ? " twice"
+                   : ", which is a child of node " + to_string(parent[static_cast<size_t>(root)])) +
               "; glTF requires the scene's nodes to be distinct roots";
       return false;
     }

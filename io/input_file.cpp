@@ -111,7 +111,8 @@ std::string format_bytes(uint64_t bytes) {
   constexpr uint64_t kKiB = 1024, kMiB = kKiB * 1024, kGiB = kMiB * 1024;
   char buf[48];
   const auto show = [&](uint64_t unit, const char* name) {
-    if (bytes % unit == 0) std::snprintf(buf, sizeof buf, "%llu %s", static_cast<unsigned long long>(bytes / unit), name);
+    if (bytes % unit == 0)
+      std::snprintf(buf, sizeof buf, "%llu %s", static_cast<unsigned long long>(bytes / unit), name);
     else std::snprintf(buf, sizeof buf, "%.1f %s", static_cast<double>(bytes) / static_cast<double>(unit), name);
   };
   if (bytes >= kGiB) show(kGiB, "GiB");

@@ -181,6 +181,15 @@ std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::s
   return read_number3(r, v, ptr, kColourExpected, kNonNegative);
 }
 
+std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr) {
+  constexpr NumberRule kUnit{0.0, 1.0, false, false, false};
+  if (v.is_number()) {
+    const auto w = read_number(r, v, ptr, kUnit);
+    return w ? std::optional<Vec3>(Vec3(static_cast<float>(*w))) : std::nullopt;
+  }
+  return read_number3(r, v, ptr, kWeightExpected, kUnit);
+}
+
 std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr) {
   if (!v.is_string()) {
     r.expected(ptr, "a string", v);
@@ -245,6 +254,11 @@ std::optional<Vec3> ObjectReader::vec3(std::string_view key, bool required) {
 std::optional<Vec3> ObjectReader::colour(std::string_view key, bool required) {
   const Json* v = get(key, required, kColourExpected);
   return v ? read_colour(r_, *v, child(key)) : std::nullopt;
+}
+
+std::optional<Vec3> ObjectReader::weight(std::string_view key, bool required) {
+  const Json* v = get(key, required, kWeightExpected);
+  return v ? read_weight(r_, *v, child(key)) : std::nullopt;
 }
 
 std::optional<std::string> ObjectReader::string(std::string_view key, bool required) {

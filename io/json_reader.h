@@ -62,6 +62,8 @@ std::optional<double> read_number(const JsonReader& r, const Json& v, const std:
 std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::string& ptr);
 // A colour: [r, g, b] or one number for grey; components finite and >= 0 (linear RGB).
 std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::string& ptr);
+// A weight: [r, g, b] or one number, components in [0, 1].
+std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr);
 std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr);
 // Index of v in `choices`; otherwise an error listing them all.
 std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std::string& ptr,
@@ -69,6 +71,7 @@ std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std:
 
 inline constexpr std::string_view kVec3Expected = "an array of 3 numbers [x, y, z]";
 inline constexpr std::string_view kColourExpected = "a colour: [r, g, b] with components >= 0, or one number for grey";
+inline constexpr std::string_view kWeightExpected = "a weight: [r, g, b] with components in [0, 1], or one number";
 
 // One JSON object. get() marks keys as known; finish() reports every key that was never asked for.
 class ObjectReader {
@@ -86,6 +89,7 @@ class ObjectReader {
   std::optional<double> number(std::string_view key, const NumberRule& rule = kAnyNumber, bool required = false);
   std::optional<Vec3> vec3(std::string_view key, bool required = false);
   std::optional<Vec3> colour(std::string_view key, bool required = false);
+  std::optional<Vec3> weight(std::string_view key, bool required = false);
   std::optional<std::string> string(std::string_view key, bool required = false);
 
   // Records an error for every key not asked about through get() and friends.

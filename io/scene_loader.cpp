@@ -39,9 +39,11 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   PointLight light;
   light.position = scene->camera.position + reach * (0.5f * scene->camera.right + 0.6f * scene->camera.up);
   if (!is_finite(scene->camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
-    diags.file_error(path, "expected a model small enough to frame in single precision, found one whose extent ("
-                           "from " + std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
-                               " in x) puts the camera at infinity");
+    diags.file_error(path,
+                     "expected a model small enough to frame in single precision, found one whose extent ("
+                     "from " +
+                         std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
+                         " in x) puts the camera at infinity");
     return std::nullopt;
   }
   scene->lights = {light};

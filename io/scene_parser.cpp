@@ -13,6 +13,7 @@ constexpr NumberRule kMaxDepth{0, kMaxRecursionDepth, false, false, true};
 constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53: exact in a double
 constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
 constexpr NumberRule kFieldOfView{0, 180, true, true, false};
+constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
 
 void parse_render(const JsonReader& r, const Json& v, const std::vector<std::string>& integrators, RenderSettings& s) {
   ObjectReader o(r, v, "/render");
@@ -20,6 +21,7 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
   if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
   if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
   if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
+  if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
   if (const Json* i = o.get("integrator")) {
     if (const auto k = read_choice(r, *i, o.child("integrator"), integrators)) s.integrator = integrators[*k];
   }
@@ -79,9 +81,32 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     MaterialDescription m;
     m.name = item.key();
     ObjectReader o(r, item.value(), pointer_child("/materials", item.key()));
-    if (const auto kd = o.colour("kd")) m.material.kd = *kd;
-    if (const auto ks = o.colour("ks")) m.material.ks = *ks;
-    if (const auto n = o.number("shininess", kPositive)) m.material.shininess = static_cast<float>(*n);
+    Material& mat = m.material;
+    if (const auto kd = o.colour("kd")) mat.kd = *kd;
+    if (const auto ks = o.colour("ks")) mat.ks = *ks;
+    if (const auto n = o.number("shininess", kPositive)) mat.shininess = static_cast<float>(*n);
+    // The proposal's own rules, spelt "ks": reflection weighted by ks, glossy width 1 / (1 + ks).
+    // A string value may only be "ks"; anything else is reported once, by read_choice.
+    const auto spelt = [&](std::string_view key, bool& is_ks) {
+      const Json* value = o.get(key);
+      if (!value || !value->is_string()) return false;
+      is_ks = read_choice(r, *value, o.child(key), {"ks"}).has_value();
+      return true;
+    };
+    bool is_ks = false;
+    if (spelt("reflectivity", is_ks)) {
+      if (is_ks) mat.reflectivity = glm::min(mat.ks, Vec3(1.0f));
+    } else if (const auto w = o.weight("reflectivity")) {
+      mat.reflectivity = *w;
+    }
+    if (const auto w = o.weight("transmission")) mat.transmission = *w;
+    if (const auto n = o.number("ior", kPositive)) mat.ior = static_cast<float>(*n);
+    if (const auto a = o.colour("absorption")) mat.absorption = *a;
+    if (spelt("glossy", is_ks)) {
+      if (is_ks) mat.glossy = 1.0f / (1.0f + (mat.ks.x + mat.ks.y + mat.ks.z) / 3.0f);
+    } else if (const auto g = o.number("glossy", kNonNegative)) {
+      mat.glossy = static_cast<float>(*g);
+    }
     o.finish();
     out.push_back(std::move(m));
   }

@@ -2,6 +2,7 @@
 // Dispatch is a comparison on the id, not a virtual call.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -59,7 +60,9 @@ bool visit_shape_crossings(const AnalyticShape& shape, uint32_t id, const Ray& r
   for (int i = 0; i < kMaxShapeCrossings && intersect_shape(shape, rest, hit); ++i) {
     hit.prim = id;
     if (visit(static_cast<const Hit&>(hit))) return true;
-    rest.tmin = hit.t;
+    // Past this crossing: the routines find roots in double and round them to float, so
+    // tmin = hit.t could still let the same root through again.
+    rest.tmin = std::nextafter(hit.t, kInfinity);
   }
   return false;
 }

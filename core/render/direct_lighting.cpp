@@ -1,5 +1,6 @@
 #include "core/render/direct_lighting.h"
 
+#include "core/render/shadow_transmittance.h"
 #include "materials/phong.h"
 
 namespace rt {
@@ -17,7 +18,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, TraceContext& ctx) {
     // Stop just short of the light so a surface the light sits on does not shadow it.
     shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
     ++ctx.counters[RayKind::kShadow];
-    const Vec3 visible = scene.transmittance(shadow);
+    const Vec3 visible = shadow_transmittance(scene, shadow);
     if (max_component(visible) <= 0.0f) continue;
     sum += visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
   }

@@ -1,5 +1,5 @@
 // Direct light: the proposal's ambient term plus, for every light, Phong diffuse and specular
-// times the light's visibility along a shadow ray (Scene::transmittance: opaque blockers shadow
+// times the light's visibility along a shadow ray (shadow_transmittance: opaque blockers shadow
 // fully, glass partly).
 #pragma once
 

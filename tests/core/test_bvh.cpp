@@ -120,7 +120,10 @@ TEST_CASE("BVH any-hit visitor sees every crossing brute force sees, and can sto
     for (size_t k = 0; k + 1 < a.size(); ++k) {
       REQUIRE(a[k].second > r.tmin);
       REQUIRE(a[k].second < r.tmax);
-      shapes_crossed_twice += a[k].first == a[k + 1].first && !prims.is_triangle(a[k].first);
+      const bool same_shape = a[k].first == a[k + 1].first;
+      REQUIRE((!same_shape || a[k].second < a[k + 1].second));  // each crossing once
+      shapes_crossed_twice += same_shape;
+      REQUIRE((k + 2 >= a.size() || a[k].first != a[k + 2].first));  // convex: at most twice
     }
     crossings += a.size();
     // Stopping at the first crossing visits exactly one.

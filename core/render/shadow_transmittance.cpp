@@ -1,0 +1,33 @@
+#include "core/render/shadow_transmittance.h"
+
+#include "core/accel/bvh_traversal.h"
+#include "materials/optics.h"
+
+namespace rt {
+
+Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
+  Vec3 through(1.0f);
+  // Optical depth, summed in any order: a crossing into an object at distance t adds -a t, one
+  // out of it adds +a t, so a pair adds a (t_out - t_in), the length inside. Clamped at 0 for
+  // the rare segment that ends inside glass (a light inside a block): that one counts as clear.
+  Vec3 depth(0.0f);
+  const float speed = glm::length(ray.direction);
+  const Vec3 d = ray.direction / speed;
+  const bool blocked = scene.bvh.for_each_hit(ray, [&](const Hit& hit) {
+    const Material& m = scene.materials[scene.material_of(hit.prim)];
+    if (!m.transmissive()) return true;
+    // What passes the interface: transmission times (1 - Fresnel), the interface taken between
+    // the material and air (shadow rays do not track nested media).
+    const SurfaceInteraction si = scene.surface(ray, hit);
+    const float cos_i = std::fabs(glm::dot(d, si.geometric_normal));
+    const float fresnel =
+        si.front_face ? schlick_reflectance(cos_i, 1.0f, m.ior) : schlick_reflectance(cos_i, m.ior, 1.0f);
+    through *= m.transmission * (1.0f - fresnel);
+    if (m.absorbing()) depth += (si.front_face ? -hit.t : hit.t) * speed * m.absorption;
+    return max_component(through) <= 0.0f;
+  });
+  if (blocked) return Vec3(0.0f);
+  return through * glm::exp(-glm::max(depth, Vec3(0.0f)));
+}
+
+}  // namespace rt
