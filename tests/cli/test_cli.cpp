@@ -38,7 +38,8 @@ TEST_CASE("cli: --version, --help, render --help", "[cli]") {
 TEST_CASE("cli: bad usage exits 2 with a message", "[cli]") {
   for (const char* args :
        {"", "render", "frobnicate", "render scenes/default.json --bogus", "render scenes/default.json --threads 0",
-        "render scenes/default.json --width -5", "render scenes/default.json --seed banana"}) {
+        "render scenes/default.json --width -5", "render scenes/default.json --seed banana",
+        "render scenes/default.json --glossy-samples 0", "render scenes/default.json --glossy-samples 257"}) {
     INFO(args);
     const Run r = rtcli(args);
     CHECK(r.code == 2);
@@ -55,6 +56,42 @@ TEST_CASE("cli: render writes the PNG, prints a summary and where it wrote", "[c
   CHECK_THAT(r.output, Catch::Contains("40x24") && Catch::Contains("Mrays/s") && Catch::Contains("2 threads") &&
                            Catch::Contains("wrote " + out));
   CHECK(read_file(out).substr(1, 3) == "PNG");
+}
+
+TEST_CASE("cli: the summary counts rays by kind; --glossy-samples and --no-glossy change them", "[cli][glossy]") {
+  const std::string out = output_path("cli-glossy.png");
+  Run r = rtcli("render scenes/glossy.json -q -o '" + out + "' " + small());
+  CHECK(r.code == 0);
+  CHECK(r.output.empty());
+  const auto glossy_rays = [](const std::string& args) {
+    const Run run = rtcli("render scenes/glossy.json -o '" + output_path("cli-glossy.png") + "' " + args);
+    REQUIRE(run.code == 0);
+    CHECK_THAT(run.output, Catch::Contains(" camera, ") && Catch::Contains(" shadow, ") &&
+                               Catch::Contains(" reflection, ") && Catch::Contains(" refraction, "));
+    const size_t end = run.output.find(" glossy)");
+    REQUIRE(end != std::string::npos);
+    const size_t start = run.output.rfind(", ", end) + 2;
+    return run.output.substr(start, end - start);
+  };
+  CHECK(glossy_rays(small("--no-glossy")) == "0");
+  CHECK(glossy_rays(small("--glossy-samples 1")) != "0");
+  CHECK(glossy_rays(small("--glossy-samples 1")) != glossy_rays(small("--glossy-samples 64")));
+}
+
+TEST_CASE("cli: --integrator picks a debug view; an unknown name lists the valid ones", "[cli]") {
+  for (const char* name : {"normals", "uv", "depth", "albedo", "whitted"}) {
+    const std::string out = output_path(std::string("cli-") + name + ".png");
+    fs::remove(out);
+    INFO(name);
+    CHECK(rtcli("render scenes/primitives.json -q --integrator " + std::string(name) + " -o '" + out + "' " + small())
+              .code == 0);
+    CHECK(fs::exists(out));
+  }
+  const Run r = rtcli("render scenes/primitives.json --integrator normal -o '" + output_path("cli-x.png") + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("unknown integrator \"normal\"") &&
+                           Catch::Contains("whitted, normals, uv, depth, albedo"));
+  CHECK_FALSE(fs::exists(output_path("cli-x.png")));
 }
 
 TEST_CASE("cli: without -o the image is named after the scene, in the current folder", "[cli]") {

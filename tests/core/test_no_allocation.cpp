@@ -41,7 +41,15 @@ namespace {
 Scene small_scene() {
   Scene scene;
   scene.camera = Camera::look_at({0, 2, 6}, {0, 0, 0}, {0, 1, 0}, 50.0f);
-  scene.materials = {Material{}};
+  // Matte, mirror, glass with absorption, glossy: every integrator path is taken.
+  Material mirror, glass, glossy;
+  mirror.reflectivity = Vec3(0.8f);
+  glass.kd = Vec3(0.0f);
+  glass.transmission = Vec3(1.0f);
+  glass.absorption = Vec3(0.5f, 0.1f, 0.2f);
+  glossy.reflectivity = Vec3(0.7f);
+  glossy.glossy = 0.2f;
+  scene.materials = {Material{}, mirror, glass, glossy};
   scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), 1, 0, 0}};
   PrimitiveSet prims;
   Rng rng(1);
@@ -55,12 +63,14 @@ Scene small_scene() {
     mesh.positions.insert(mesh.positions.end(), {t.v0, t.v0 + t.e1, t.v0 + t.e2});
     mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
   }
+  mesh.material = 2;  // glass: shadow rays pass through it with the any-hit visitor
   scene.meshes = {mesh};
   scene.mesh_first_triangle = {0};
   for (ShapeKind k :
        {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
     AnalyticShape s;
     s.kind = k;
+    s.material = static_cast<uint32_t>(k) % 4;
     s.transform = *make_transform(compose_trs({static_cast<float>(k) - 2.0f, -1, 0}, {10, 20, 30}, {0.5f, 0.7f, 0.4f}));
     prims.shapes.push_back(s);
   }
@@ -70,7 +80,8 @@ Scene small_scene() {
 
 }  // namespace
 
-TEST_CASE("tracing and shading allocate nothing per ray", "[bvh][alloc]") {
+TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through glass) allocate nothing per ray",
+          "[bvh][alloc]") {
   const Scene scene = small_scene();
   RenderSettings settings;
   settings.width = 64;
@@ -98,6 +109,9 @@ TEST_CASE("tracing and shading allocate nothing per ray", "[bvh][alloc]") {
 
   CHECK(hits > 1000);
   CHECK(counters[RayKind::kShadow] > 0);
+  CHECK(counters[RayKind::kReflection] > 0);
+  CHECK(counters[RayKind::kRefraction] > 0);
+  CHECK(counters[RayKind::kGlossy] > 0);
   CHECK(sum.x > 0.0f);
   CHECK(after - before == 0);
 }

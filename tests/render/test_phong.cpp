@@ -7,12 +7,6 @@
 
 using namespace rt;
 
-TEST_CASE("reflect: r = d - 2 (d.n) n", "[materials]") {
-  const Vec3 r = reflect(glm::normalize(Vec3(1, -1, 0)), Vec3(0, 1, 0));
-  CHECK(r.x == Approx(std::sqrt(0.5f)));
-  CHECK(r.y == Approx(std::sqrt(0.5f)));
-}
-
 TEST_CASE("phong: Lambert term plus a specular lobe around the mirror direction", "[materials]") {
   Material m;
   m.kd = Vec3(0.5f);

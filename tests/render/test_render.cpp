@@ -23,7 +23,7 @@ LoadedScene load(const std::string& path) {
   return std::move(*loaded);
 }
 
-Rgb8Image render_rgb8(const LoadedScene& s, RenderSettings settings) {
+Rgb8Image render_rgb8(const LoadedScene& s, const RenderSettings& settings) {
   Image image;
   render(s.scene, settings, image);
   return encode_srgb8(image);
@@ -32,17 +32,21 @@ Rgb8Image render_rgb8(const LoadedScene& s, RenderSettings settings) {
 }  // namespace
 
 TEST_CASE("the image is the same for any thread count and tile size", "[render][determinism]") {
-  const LoadedScene s = load(rt::test::source_path("scenes/primitives.json"));
-  RenderSettings settings = s.description.render;
-  settings.width = 160;
-  settings.height = 90;
-  settings.threads = 1;
-  const Rgb8Image reference = render_rgb8(s, settings);
-  for (const auto& [threads, tile] : {std::pair{2u, 32}, std::pair{3u, 7}, std::pair{2u, 1}}) {
-    settings.threads = threads;
-    settings.tile_size = tile;
-    INFO("threads " << threads << ", tile " << tile);
-    CHECK(render_rgb8(s, settings).rgb == reference.rgb);
+  // primitives: direct light; refraction: ray trees; glossy: random numbers per pixel.
+  for (const char* scene : {"scenes/primitives.json", "scenes/refraction.json", "scenes/glossy.json"}) {
+    INFO(scene);
+    const LoadedScene s = load(rt::test::source_path(scene));
+    RenderSettings settings = s.description.render;
+    settings.width = 160;
+    settings.height = 90;
+    settings.threads = 1;
+    const Rgb8Image reference = render_rgb8(s, settings);
+    for (const auto& [threads, tile] : {std::pair{2u, 32}, std::pair{3u, 7}, std::pair{2u, 1}}) {
+      settings.threads = threads;
+      settings.tile_size = tile;
+      INFO("threads " << threads << ", tile " << tile);
+      CHECK(render_rgb8(s, settings).rgb == reference.rgb);
+    }
   }
 }
 
@@ -62,16 +66,23 @@ TEST_CASE("render statistics count camera and shadow rays", "[render]") {
   CHECK(image.width == 96);
 }
 
-// Golden image. Tolerance: every channel within 2 levels (of 255) of the reference for all but
+// Golden images. Tolerance: every channel within 2 levels (of 255) of the reference for all but
 // 0.5 % of the pixels, and a mean channel difference under 0.25 levels. The renderer is
 // deterministic, so on one build the match is exact; the tolerance absorbs libm differences
 // between platforms (sin, pow) that move a few edge pixels by a level. On failure the actual
 // image and an 8x amplified difference image are written next to the test binary's output.
-// RTCLI_UPDATE_GOLDEN=1 rewrites the reference instead (look at it before committing it).
-TEST_CASE("golden image: tiny scene with every shape and a glTF mesh", "[render][golden]") {
-  const std::string golden = rt::test::source_path("tests/golden/tiny.png");
-  const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
-  const Rgb8Image actual = render_rgb8(s, s.description.render);
+// RTCLI_UPDATE_GOLDEN=1 rewrites the references instead (look at them before committing them).
+namespace {
+
+void check_golden(const std::string& name, const std::string& scene, int width, int height) {
+  const std::string golden = rt::test::source_path("tests/golden/" + name + ".png");
+  const LoadedScene s = load(rt::test::source_path(scene));
+  RenderSettings settings = s.description.render;
+  if (width > 0) {
+    settings.width = width;
+    settings.height = height;
+  }
+  const Rgb8Image actual = render_rgb8(s, settings);
   std::string error;
   if (std::getenv("RTCLI_UPDATE_GOLDEN")) {
     REQUIRE(write_png(golden, actual, error));
@@ -84,14 +95,32 @@ TEST_CASE("golden image: tiny scene with every shape and a glTF mesh", "[render]
   const size_t pixels = static_cast<size_t>(actual.width) * static_cast<size_t>(actual.height);
   const bool ok = d.same_size && d.pixels_over * 200 <= pixels && d.mean_channel < 0.25;
   if (!ok) {
-    const std::string actual_path = rt::test::output_path("tiny.actual.png");
-    const std::string diff_path = rt::test::output_path("tiny.diff.png");
+    const std::string actual_path = rt::test::output_path(name + ".actual.png");
+    const std::string diff_path = rt::test::output_path(name + ".diff.png");
     write_png(actual_path, actual, error);
     if (d.same_size) write_png(diff_path, difference_image(actual, *expected), error);
     FAIL("golden mismatch: max " << d.max_channel << " levels, mean " << d.mean_channel << ", " << d.pixels_over
                                  << " pixels over 2 levels; see " << actual_path << " and " << diff_path);
   }
   CHECK(d.max_channel <= 255);
+}
+
+}  // namespace
+
+TEST_CASE("golden image: tiny scene with every shape and a glTF mesh", "[render][golden]") {
+  check_golden("tiny", "tests/data/golden_tiny.json", 0, 0);
+}
+
+TEST_CASE("golden image: reflection", "[render][golden][reflection]") {
+  check_golden("reflection", "scenes/reflection.json", 160, 90);
+}
+
+TEST_CASE("golden image: refraction", "[render][golden][refraction]") {
+  check_golden("refraction", "scenes/refraction.json", 160, 90);
+}
+
+TEST_CASE("golden image: glossy reflection", "[render][golden][glossy]") {
+  check_golden("glossy", "scenes/glossy.json", 160, 90);
 }
 
 TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
