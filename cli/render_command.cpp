@@ -130,7 +130,7 @@ int run_render(const RenderCommand& cmd) {
 
   {
     const SignalBlock block;  // the temporary file is always renamed or removed
-    if (!write_png(output, encode_srgb8(image), error)) {
+    if (!write_png(output, encode_srgb8(image), error, stats.threads)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }

@@ -1,10 +1,10 @@
 #include "io/png_file.h"
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include "io/atomic_file.h"
 #include "io/input_file.h"
+#include "io/png_encoder.h"
 
 namespace rt {
 
@@ -23,14 +23,9 @@ std::optional<Rgb8Image> read_png(const std::string& path, std::string& error) {
   return image;
 }
 
-bool write_png(const std::string& path, const Rgb8Image& image, std::string& error) {
-  std::vector<uint8_t> png;
-  const auto append = [](void* context, void* data, int size) {
-    auto* out = static_cast<std::vector<uint8_t>*>(context);
-    const auto* bytes = static_cast<const uint8_t*>(data);
-    out->insert(out->end(), bytes, bytes + size);
-  };
-  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, image.rgb.data(), image.width * 3)) {
+bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads) {
+  const std::vector<uint8_t> png = encode_png(image, threads);
+  if (png.empty()) {
     error = "PNG encoding failed";
     return false;
   }

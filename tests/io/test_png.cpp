@@ -1,0 +1,61 @@
+// 8-bit output: the sRGB table against its formula, and the zlib PNG encoder read back by stb.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+#include <catch2/catch.hpp>
+
+#include "core/rng.h"
+#include "io/png_encoder.h"
+#include "io/png_file.h"
+#include "io/rgb8_image.h"
+#include "tests/support/test_paths.h"
+
+using namespace rt;
+
+TEST_CASE("sRGB table encodes exactly as the formula", "[io][png]") {
+  // Every 4099th float in [0, 1] with its neighbours, and a million random ones.
+  bool seen[256] = {};
+  for (uint32_t bits = 0; bits <= 0x3f800000u; bits += 4099) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    REQUIRE(encode_srgb8(f) == encode_srgb8_reference(f));
+    const float below = std::nextafter(f, 0.0f), above = std::nextafter(f, 2.0f);
+    REQUIRE(encode_srgb8(below) == encode_srgb8_reference(below));
+    REQUIRE(encode_srgb8(above) == encode_srgb8_reference(above));
+    seen[encode_srgb8(f)] = true;
+  }
+  CHECK(std::count(std::begin(seen), std::end(seen), true) == 256);  // every level was reached
+  Rng rng(3);
+  for (int i = 0; i < 1'000'000; ++i) {
+    const float f = rng.next_float() * 1.2f - 0.1f;
+    REQUIRE(encode_srgb8(f) == encode_srgb8_reference(f));
+  }
+  CHECK(encode_srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
+  CHECK(encode_srgb8(0.0031308f) == 10);
+  CHECK(encode_srgb8(INFINITY) == 255);
+  CHECK(encode_srgb8(-INFINITY) == 0);
+}
+
+TEST_CASE("PNG encoder: read back equal, bytes independent of the thread count", "[io][png]") {
+  for (const auto& [w, h] : {std::pair{1, 1}, std::pair{37, 64}, std::pair{200, 131}, std::pair{3, 300}}) {
+    INFO(w << "x" << h);
+    Rgb8Image image{w, h, std::vector<uint8_t>(static_cast<size_t>(w) * static_cast<size_t>(h) * 3)};
+    Rng rng(static_cast<uint64_t>(w * h));
+    for (size_t i = 0; i < image.rgb.size(); ++i)  // gradients with noise: exercises Sub filtering
+      image.rgb[i] = static_cast<uint8_t>((i / 3 % static_cast<size_t>(w)) * 2 + i % 3 * 40 + (rng.next_u32() & 7));
+    const std::vector<uint8_t> one = encode_png(image, 1);
+    REQUIRE(one.size() > 40);
+    CHECK(encode_png(image, 2) == one);
+    CHECK(encode_png(image, 7) == one);
+    std::string error;
+    const std::string path = rt::test::output_path("encoder.png");
+    REQUIRE(write_png(path, image, error, 3));
+    const auto back = read_png(path, error);
+    REQUIRE(back);
+    CHECK(back->width == w);
+    CHECK(back->height == h);
+    CHECK(back->rgb == image.rgb);
+  }
+}
