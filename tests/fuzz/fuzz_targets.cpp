@@ -1,12 +1,15 @@
 #include "tests/fuzz/fuzz_targets.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
+#include "core/accel/bvh_traversal.h"
 #include "core/render/integrator.h"
 #include "core/render/renderer.h"
 #include "io/gltf_loader.h"
@@ -141,6 +144,18 @@ std::string bvh_build(const uint8_t* data, size_t size) {
       if (!found_a || ha.t != hb.t) return "the BVH missed the closest hit brute force found";
       if (!occluded) return "occluded() missed a hit brute force found";
     }
+    // The any-hit visitor: every crossing it reports is one brute force reports too, at the same
+    // t, and each primitive at most once (triangles are crossed once).
+    std::vector<std::pair<uint32_t, float>> seen_bvh, seen_brute;
+    bvh.for_each_hit(original, [&](const Hit& h) { return seen_bvh.emplace_back(h.prim, h.t), false; });
+    brute.for_each_hit(original, [&](const Hit& h) { return seen_brute.emplace_back(h.prim, h.t), false; });
+    std::sort(seen_bvh.begin(), seen_bvh.end());
+    std::sort(seen_brute.begin(), seen_brute.end());
+    for (size_t k = 0; k + 1 < seen_bvh.size(); ++k)
+      if (seen_bvh[k].first == seen_bvh[k + 1].first) return "for_each_hit visited a triangle twice";
+    if (!std::includes(seen_brute.begin(), seen_brute.end(), seen_bvh.begin(), seen_bvh.end()))
+      return "for_each_hit reported a crossing brute force did not";
+    if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
   }
   return "";
 }
