@@ -13,6 +13,7 @@ struct Camera {
   Vec3 right{1.0f, 0.0f, 0.0f};     // unit
   Vec3 up{0.0f, 1.0f, 0.0f};        // unit, perpendicular to forward and right
   float vertical_fov_degrees = 45.0f;
+  float tan_half_fov = 0.41421356f;  // tan(vertical_fov_degrees / 2), computed once, not per ray
 
   // Caller guarantees target != position and up not parallel to (target - position).
   static Camera look_at(Vec3 position, Vec3 target, Vec3 up, float vertical_fov_degrees) {
@@ -22,6 +23,7 @@ struct Camera {
     c.right = glm::normalize(glm::cross(c.forward, up));
     c.up = glm::cross(c.right, c.forward);
     c.vertical_fov_degrees = vertical_fov_degrees;
+    c.tan_half_fov = std::tan(radians(vertical_fov_degrees) * 0.5f);
     return c;
   }
 
@@ -47,7 +49,7 @@ struct Camera {
 
   // Primary ray through continuous pixel position (x, y) of a width x height image.
   Ray generate_ray(float x, float y, int width, int height) const {
-    const float tan_half = std::tan(radians(vertical_fov_degrees) * 0.5f);
+    const float tan_half = tan_half_fov;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const float sx = (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half * aspect;
     const float sy = (1.0f - 2.0f * y / static_cast<float>(height)) * tan_half;

@@ -42,7 +42,7 @@ class MediumStack {
   }
 
  private:
-  uint32_t materials_[kCapacity] = {};
+  uint32_t materials_[kCapacity];  // [0, size_) in use; the rest is never read
   int size_ = 0;
 };
 

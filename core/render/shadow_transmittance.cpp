@@ -11,23 +11,26 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
   // out of it adds +a t, so a pair adds a (t_out - t_in), the length inside. Clamped at 0 for
   // the rare segment that ends inside glass (a light inside a block): that one counts as clear.
   Vec3 depth(0.0f);
-  const float speed = glm::length(ray.direction);
-  const Vec3 d = ray.direction / speed;
+  bool absorbed = false;
   const bool blocked = scene.bvh.for_each_hit(ray, [&](const Hit& hit) {
     const Material& m = scene.materials[scene.material_of(hit.prim)];
-    if (!m.transmissive()) return true;
+    if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
     // What passes the interface: transmission times (1 - Fresnel), the interface taken between
     // the material and air (shadow rays do not track nested media).
     const SurfaceInteraction si = scene.surface(ray, hit);
-    const float cos_i = std::fabs(glm::dot(d, si.geometric_normal));
+    const float speed = glm::length(ray.direction);
+    const float cos_i = std::fabs(glm::dot(ray.direction, si.geometric_normal)) / speed;
     const float fresnel =
         si.front_face ? schlick_reflectance(cos_i, 1.0f, m.ior) : schlick_reflectance(cos_i, m.ior, 1.0f);
     through *= m.transmission * (1.0f - fresnel);
-    if (m.absorbing()) depth += (si.front_face ? -hit.t : hit.t) * speed * m.absorption;
+    if (m.absorbing()) {
+      depth += (si.front_face ? -hit.t : hit.t) * speed * m.absorption;
+      absorbed = true;
+    }
     return max_component(through) <= 0.0f;
   });
   if (blocked) return Vec3(0.0f);
-  return through * glm::exp(-glm::max(depth, Vec3(0.0f)));
+  return absorbed ? through * glm::exp(-glm::max(depth, Vec3(0.0f))) : through;
 }
 
 }  // namespace rt

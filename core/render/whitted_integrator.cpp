@@ -29,7 +29,8 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
     const SurfaceInteraction si = scene.surface(ray, hit);
     const EvaluatedSurface s = evaluate_surface(scene.materials[si.material], si, ray.direction);
     radiance = direct_lighting(s, ctx);
-    if (state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
+    const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
+    if (bounces && state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
   }
   // Beer-Lambert along the segment just travelled, inside the innermost medium. A ray that
   // leaves through an open mesh without hitting anything travelled forever: it arrives dark.
