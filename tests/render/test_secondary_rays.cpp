@@ -227,3 +227,36 @@ TEST_CASE("a clear glass sphere's shadow is lighter than an opaque one's, and ti
   CHECK(green.y > 2.0f * green.x);                                    // the path inside absorbs red and blue
   CHECK(green.x == Approx(glass.x * std::exp(-2.0f)).epsilon(0.02));  // 1 unit of glass on the axis
 }
+
+TEST_CASE("nested glass: an inner object of the same index inside glass is no interface at all", "[refraction]") {
+  // The medium stack's rule: inside glass (1.5), a second sphere of index 1.5 is entered from 1.5
+  // and left back into 1.5, so it neither bends nor reflects; treated as glass in air, it would
+  // bend the checks behind it. Lit by ambient light only, so no shadow ray is involved.
+  const auto scene = [](bool inner) {
+    return std::string(R"({
+      "render": { "width": 64, "height": 48, "max_depth": 8 },
+      "camera": { "position": [0, 0, 6], "look_at": [0, 0, 0], "fov": 30 },
+      "ambient": 1,
+      "materials": { "a": { "kd": [0.9, 0.8, 0.2] }, "b": { "kd": [0.1, 0.2, 0.7] },
+                     "glass": { "kd": 0, "transmission": 1, "ior": 1.5 },
+                     "same index": { "kd": 0, "transmission": 1, "ior": 1.5 } },
+      "nodes": [
+        { "shape": "plane", "material": "a", "transform": { "translate": [0, 0, -3], "rotate": [90, 0, 0], "scale": 5 } },
+        { "shape": "cube", "material": "b", "transform": { "translate": [-0.5, 0.3, -2.8], "scale": [0.2, 2, 0.1] } },
+        { "shape": "cube", "material": "b", "transform": { "translate": [0.4, -0.2, -2.8], "scale": [2, 0.15, 0.1] } },
+        { "shape": "sphere", "material": "glass", "transform": { "scale": 1.2 } })") +
+           (inner
+                ? R"(, { "shape": "sphere", "material": "same index", "transform": { "translate": [0.2, 0.1, 0.3], "scale": 0.6 } })"
+                : "") +
+           "] }";
+  };
+  const LoadedScene plain = load_text("nested_plain.json", scene(false));
+  const LoadedScene nested = load_text("nested_inner.json", scene(true));
+  RenderStats a, b;
+  const Rgb8Image without = encode_srgb8(render_image(plain, plain.description.render, &a));
+  const Rgb8Image with = encode_srgb8(render_image(nested, nested.description.render, &b));
+  CHECK(b.rays[RayKind::kRefraction] > a.rays[RayKind::kRefraction] + 500);  // the inner sphere was crossed
+  int max_diff = 0;
+  for (size_t i = 0; i < without.rgb.size(); ++i) max_diff = std::max(max_diff, std::abs(without.rgb[i] - with.rgb[i]));
+  CHECK(max_diff <= 2);
+}
