@@ -22,25 +22,7 @@ inline void hughes_moller_basis(Vec3 r, Vec3& u, Vec3& v) {
   v = glm::cross(r, u);
 }
 
-// How n glossy rays are stratified over the square: a rows x cols grid, one jittered sample per
-// cell. n = 4, 9, 16, 64 give sqrt(n) x sqrt(n); other counts the squarest grid with enough
-// cells (8 -> 2 x 4; 7 -> 2 x 4 with one cell unused).
-struct GlossyGrid {
-  int rows = 1, cols = 1;
-};
-inline GlossyGrid glossy_grid(int n) {
-  GlossyGrid g;
-  g.rows = std::max(1, static_cast<int>(std::sqrt(static_cast<float>(n)) + 1e-4f));
-  g.cols = (n + g.rows - 1) / g.rows;
-  return g;
-}
-
-// Sample `index` of the grid, jittered by (jx, jy) in [0, 1)^2: a point of the unit square.
-inline Vec2 glossy_grid_point(const GlossyGrid& g, int index, float jx, float jy) {
-  const int row = index / g.cols, col = index % g.cols;
-  return Vec2((static_cast<float>(col) + jx) / static_cast<float>(g.cols),
-              (static_cast<float>(row) + jy) / static_cast<float>(g.rows));
-}
+// The rays are stratified with core/sampling.h's StratifiedGrid.
 
 // The perturbed direction for unit-square point p (p = (0.5, 0.5) is the mirror direction).
 inline Vec3 glossy_direction(Vec3 r, Vec3 u, Vec3 v, float width, Vec2 p) {

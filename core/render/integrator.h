@@ -9,17 +9,17 @@
 
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
-#include "core/rng.h"
+#include "core/sampling.h"
 #include "core/scene.h"
 
 namespace rt {
 
-// Per-thread state handed down a ray tree: counters and the sample's random stream.
+// Per-thread state handed down a ray tree: counters and the camera sample's keyed numbers.
 struct TraceContext {
   const Scene& scene;
   const RenderSettings& settings;
   RayCounters& counters;
-  Rng& rng;
+  SampleStream samples;
 };
 
 class Integrator {

@@ -3,13 +3,12 @@
 namespace rt {
 namespace {
 
-// Radiance of one camera sample at continuous pixel position (px, py). Its random stream is
+// Radiance of one camera sample at continuous pixel position (px, py). Its random numbers are
 // keyed by (seed, frame, pixel, sample), never by the thread that happens to trace it.
 Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  Rng rng = Rng::for_sample(s.seed, ctx.frame, pixel_index, sample);
-  TraceContext trace{ctx.scene, s, ctx.counters, rng};
+  TraceContext trace{ctx.scene, s, ctx.counters, SampleStream(s.seed, ctx.frame, pixel_index, sample)};
   ++ctx.counters[RayKind::kCamera];
   return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height), 0, trace);
 }

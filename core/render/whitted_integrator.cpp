@@ -72,6 +72,7 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
   ++next.depth;
   if (max_component(state.weight * reflect_weight) >= kMinWeight) {
     next.weight = state.weight * reflect_weight;
+    next.path = child_path(state.path, kReflected, 0);
     Vec3 mirror = reflect(d, s.n);
     if (glm::dot(mirror, s.ng) <= 0.0f) mirror = reflect(d, s.ng);  // never into the surface
     sum += reflect_weight * reflected(s, mirror, next, ctx);
@@ -79,13 +80,14 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
   if (max_component(state.weight * refract_weight) >= kMinWeight) {
     next.weight = state.weight * refract_weight;
     next.media = beyond;
+    next.path = child_path(state.path, kRefracted, 0);
     sum += refract_weight * traced_from(s, refracted, RayKind::kRefraction, next, ctx);
   }
   return sum;
 }
 
 // The mirror ray, or the proposal's glossy rays around it: glossy_samples rays stratified over
-// the blur square (glossy.h), random numbers from the pixel's stream. Rays that fall below the
+// the blur square (glossy.h), random numbers keyed by this ray's path (core/sampling.h). Rays that fall below the
 // surface are discarded and the rest averaged; if all fall below, the mirror ray stands in. Only
 // the first glossy hit of a path splits; glossy hits below it trace one jittered ray each, so a
 // ray tree costs glossy_samples x depth rays rather than glossy_samples ^ depth.
@@ -94,7 +96,7 @@ Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const 
   if (!ctx.settings.glossy || s.glossy <= 0.0f || ctx.settings.glossy_samples < 1)
     return traced_from(s, mirror, RayKind::kReflection, state, ctx);
   const int count = state.split ? 1 : ctx.settings.glossy_samples;
-  const GlossyGrid grid = glossy_grid(count);
+  const StratifiedGrid grid(count);
   Vec3 u, v;
   hughes_moller_basis(mirror, u, v);
   PathState below = state;
@@ -102,9 +104,10 @@ Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const 
   Vec3 sum(0.0f);
   int kept = 0;
   for (int i = 0; i < count; ++i) {
-    const float jx = ctx.rng.next_float(), jy = ctx.rng.next_float();
-    const Vec3 direction = glossy_direction(mirror, u, v, s.glossy, glossy_grid_point(grid, i, jx, jy));
+    const Vec2 jitter = ctx.samples.get2(SamplePurpose::kGlossy, state.path, static_cast<uint64_t>(i));
+    const Vec3 direction = glossy_direction(mirror, u, v, s.glossy, grid.point(i, jitter));
     if (glm::dot(direction, s.ng) <= 0.0f) continue;
+    below.path = child_path(state.path, kGlossyRay, static_cast<uint32_t>(i));
     sum += traced_from(s, direction, RayKind::kGlossy, below, ctx);
     ++kept;
   }

@@ -20,12 +20,15 @@ class WhittedIntegrator final : public Integrator {
     Vec3 weight{1.0f};   // this ray's weight in the pixel: branches below kMinWeight are not traced
     MediumStack media;   // what the ray travels through
     bool split = false;  // a glossy reflection above already split the path into glossy_samples rays
+    uint64_t path = 0;   // where in the ray tree: keys its random numbers (core/sampling.h)
   };
   // A secondary ray whose weight in the pixel is below this is not traced (Hall and Greenberg's
   // adaptive tree depth): it bounds the ray tree of glass, whose every hit branches in two.
   static constexpr float kMinWeight = 1.0f / 512.0f;
 
   Vec3 trace(const Ray& ray, const PathState& state, TraceContext& ctx) const;
+  // Branch kinds for child_path.
+  enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay };
 
  private:
   Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;

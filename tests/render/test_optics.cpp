@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/rng.h"
+#include "core/sampling.h"
 #include "materials/glossy.h"
 #include "materials/optics.h"
 #include "tests/support/geometry.h"
@@ -90,16 +91,16 @@ TEST_CASE("Hughes-Moller basis is orthonormal and perpendicular to r", "[optics]
 }
 
 TEST_CASE("glossy grid: sqrt(n) x sqrt(n) strata, one sample in each", "[glossy]") {
-  CHECK(glossy_grid(16).rows == 4);
-  CHECK(glossy_grid(16).cols == 4);
-  CHECK(glossy_grid(8).rows == 2);
-  CHECK(glossy_grid(8).cols == 4);
-  CHECK(glossy_grid(1).rows == 1);
-  CHECK(glossy_grid(1).cols == 1);
-  const GlossyGrid g = glossy_grid(9);
+  CHECK(StratifiedGrid(16).rows == 4);
+  CHECK(StratifiedGrid(16).cols == 4);
+  CHECK(StratifiedGrid(8).rows == 2);
+  CHECK(StratifiedGrid(8).cols == 4);
+  CHECK(StratifiedGrid(1).rows == 1);
+  CHECK(StratifiedGrid(1).cols == 1);
+  const StratifiedGrid g(9);
   int seen[3][3] = {};
   for (int i = 0; i < 9; ++i) {
-    const Vec2 p = glossy_grid_point(g, i, 0.999f, 0.0f);
+    const Vec2 p = g.point(i, Vec2(0.999f, 0.0f));
     ++seen[static_cast<int>(p.y * 3)][static_cast<int>(p.x * 3)];
   }
   for (auto& row : seen)

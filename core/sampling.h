@@ -1,0 +1,61 @@
+// Keyed random numbers and stratification. Every random number a render uses is a hash of what
+// it is for: the sample's key (seed, frame, pixel or lattice point, sample), its purpose (lens,
+// light, glossy, ...), the path through the ray tree that asks (bounce by bounce) and an index.
+// Nothing is drawn from a sequential stream, so adding shadow samples does not reshuffle glossy
+// noise, and the image never depends on which thread traced what (README, "Random numbers").
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/math.h"
+#include "core/rng.h"
+
+namespace rt {
+
+enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy };
+
+class SampleStream {
+ public:
+  SampleStream() = default;
+  // The key of one camera sample: the same for the same (seed, frame, point, sample) anywhere.
+  SampleStream(uint64_t seed, uint32_t frame, uint64_t point, uint32_t sample)
+      : key_(mix64(mix64(mix64(mix64(seed) ^ frame) ^ point) ^ sample)) {}
+
+  // Two numbers in [0, 1) for (purpose, path, index); `path` identifies the ray's place in the
+  // tree (see child_path), `index` the sample within its purpose (light number and stratum...).
+  Vec2 get2(SamplePurpose purpose, uint64_t path, uint64_t index) const {
+    const uint64_t h = mix64(key_ ^ mix64(path ^ mix64((static_cast<uint64_t>(purpose) << 56) ^ index)));
+    return Vec2(static_cast<float>(h >> 40) * 0x1p-24f, static_cast<float>((h >> 16) & 0xffffffu) * 0x1p-24f);
+  }
+
+ private:
+  uint64_t key_ = 0;
+};
+
+// The path id of a child ray: which kind of branch (reflection, refraction, glossy, ...) and its
+// index among its siblings. The camera ray's path is 0.
+inline uint64_t child_path(uint64_t parent, uint32_t branch, uint32_t index) {
+  return mix64(parent + 0x9e3779b97f4a7c15ull * (static_cast<uint64_t>(branch) << 32 | index) + 1);
+}
+
+// n samples stratified over the unit square: a rows x cols grid, one jittered sample per cell.
+// n = 4, 9, 16, 64 give sqrt(n) x sqrt(n); other counts the squarest grid with enough cells
+// (8 -> 2 x 4; 7 -> 2 x 4 with one cell unused).
+struct StratifiedGrid {
+  int rows = 1, cols = 1;
+
+  explicit StratifiedGrid(int n) {
+    rows = std::max(1, static_cast<int>(std::sqrt(static_cast<float>(n)) + 1e-4f));
+    cols = (n + rows - 1) / rows;
+  }
+  // Sample `index` of the grid, jittered by j in [0, 1)^2: a point of the unit square.
+  Vec2 point(int index, Vec2 j) const {
+    const int row = index / cols, col = index % cols;
+    return Vec2((static_cast<float>(col) + j.x) / static_cast<float>(cols),
+                (static_cast<float>(row) + j.y) / static_cast<float>(rows));
+  }
+};
+
+}  // namespace rt
