@@ -34,6 +34,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
       ->check(CLI::Range(1, kMaxGlossySamples));
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
+  render_cmd
+      ->add_option("--shadow-samples", render.shadow_samples,
+                   "Shadow rays per area light and shading point (overrides the scene)")
+      ->check(CLI::Range(1, kMaxShadowSamples));
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;

@@ -98,6 +98,7 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.integrator) settings.integrator = *cmd.integrator;
   if (cmd.glossy_samples) settings.glossy_samples = *cmd.glossy_samples;
   if (cmd.no_glossy) settings.glossy = false;
+  if (cmd.shadow_samples) settings.shadow_samples = *cmd.shadow_samples;
   if (cmd.width || cmd.height) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,

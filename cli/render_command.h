@@ -1,5 +1,5 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--quiet]`
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--shadow-samples N] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -16,6 +16,7 @@ struct RenderCommand {
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator;
   std::optional<int> glossy_samples;
+  std::optional<int> shadow_samples;
   bool no_glossy = false;
   bool quiet = false;
 };

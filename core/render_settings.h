@@ -21,6 +21,7 @@ struct RenderSettings {
   int tile_size = 32;        // pixels per tile side; the image never depends on it
   int glossy_samples = 8;    // the proposal's glossy_count: rays per glossy reflection
   bool glossy = true;        // false (--no-glossy): glossy surfaces reflect as perfect mirrors
+  int shadow_samples = 16;   // the proposal's shadow_count: shadow rays per area light and point
 };
 
 // Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel
@@ -30,6 +31,7 @@ inline constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
 inline constexpr int kMaxSamplesPerAxis = 16;
 inline constexpr int kMaxRecursionDepth = 64;
 inline constexpr int kMaxGlossySamples = 256;
+inline constexpr int kMaxShadowSamples = 1024;
 // Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
 inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
 

@@ -14,6 +14,7 @@ constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53:
 constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
 constexpr NumberRule kFieldOfView{0, 180, true, true, false};
 constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
+constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
 
 void parse_render(const JsonReader& r, const Json& v, const std::vector<std::string>& integrators, RenderSettings& s) {
   ObjectReader o(r, v, "/render");
@@ -22,6 +23,7 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
   if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
   if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
   if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
+  if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
   if (const Json* i = o.get("integrator")) {
     if (const auto k = read_choice(r, *i, o.child("integrator"), integrators)) s.integrator = integrators[*k];
   }
@@ -113,6 +115,31 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
   return out;
 }
 
+std::optional<Attenuation> parse_attenuation(const JsonReader& r, ObjectReader& o) {
+  const Json* a = o.get("attenuation");
+  if (!a) return Attenuation{};
+  const std::string ptr = o.child("attenuation");
+  const auto c = read_vec3(r, *a, ptr);
+  if (!c) return std::nullopt;
+  if (c->x < 0 || c->y < 0 || c->z < 0 || c->x + c->y + c->z <= 0) {
+    r.expected(ptr, "[c0, c1, c2] >= 0, not all zero (radiance / (c0 + c1 d + c2 d^2))", *a);
+    return std::nullopt;
+  }
+  return Attenuation{c->x, c->y, c->z};
+}
+
+// A rectangle needs two edges that span an area: not zero, not parallel.
+bool check_rect_edges(const JsonReader& r, const ObjectReader& o, Vec3 e1, Vec3 e2) {
+  const float scale = std::max(glm::length(e1), glm::length(e2));
+  if (!(glm::length(glm::cross(e1, e2)) > 1e-6f * scale * scale)) {
+    r.error(o.child("edge2"),
+            "expected two edge vectors that span a rectangle (not zero, not parallel), found " +
+                std::string(glm::length(e1) == 0.0f || glm::length(e2) == 0.0f ? "a zero edge" : "parallel edges"));
+    return false;
+  }
+  return true;
+}
+
 std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
   std::vector<Light> out;
   if (!v.is_array()) {
@@ -121,26 +148,38 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
   }
   for (size_t i = 0; i < v.size(); ++i) {
     ObjectReader o(r, v[i], pointer_child("/lights", i));
-    if (const Json* type = o.get("type", true, "\"point\"")) read_choice(r, *type, o.child("type"), {"point"});
-    PointLight light;
-    if (const auto p = o.vec3("position", true)) light.position = *p;
+    std::optional<size_t> type;
+    if (const Json* t = o.get("type", true, "\"point\" or \"rect\""))
+      type = read_choice(r, *t, o.child("type"), {"point", "rect"});
     const Vec3 colour = o.colour("color").value_or(Vec3(1.0f));
     const auto intensity = o.number("intensity", kNonNegative);
-    light.colour = colour * static_cast<float>(intensity.value_or(1.0));
-    if (const Json* a = o.get("attenuation")) {
-      const std::string ptr = o.child("attenuation");
-      if (const auto c = read_vec3(r, *a, ptr)) {
-        if (c->x < 0 || c->y < 0 || c->z < 0 || c->x + c->y + c->z <= 0) {
-          r.expected(ptr, "[c0, c1, c2] >= 0, not all zero (radiance / (c0 + c1 d + c2 d^2))", *a);
-        } else {
-          light.c0 = c->x;
-          light.c1 = c->y;
-          light.c2 = c->z;
-        }
-      }
+    const Vec3 emitted = colour * static_cast<float>(intensity.value_or(1.0));
+    const auto attenuation = parse_attenuation(r, o);
+    if (type == 1u) {
+      RectLight light;
+      const auto corner = o.vec3("corner", true);
+      const auto e1 = o.vec3("edge1", true);
+      const auto e2 = o.vec3("edge2", true);
+      const Json* two_sided = o.get("two_sided");
+      if (two_sided && !two_sided->is_boolean()) r.expected(o.child("two_sided"), "true or false", *two_sided);
+      o.finish();
+      if (!corner || !e1 || !e2 || !attenuation || !check_rect_edges(r, o, *e1, *e2)) continue;
+      light.corner = *corner;
+      light.edge1 = *e1;
+      light.edge2 = *e2;
+      light.colour = emitted;
+      light.attenuation = *attenuation;
+      light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
+      out.emplace_back(light);
+    } else {
+      PointLight light;
+      const auto position = o.vec3("position", type == 0u);
+      o.finish();
+      if (position) light.position = *position;
+      light.colour = emitted;
+      if (attenuation) light.attenuation = *attenuation;
+      out.emplace_back(light);
     }
-    o.finish();
-    out.emplace_back(light);
   }
   return out;
 }

@@ -1,7 +1,7 @@
-// Point light with the proposal's quadratic attenuation: radiance arriving from it at distance d
-// is colour * intensity / (c0 + c1 d + c2 d^2).
+// Point light: radiance arriving from it at distance d is colour * intensity / (c0 + c1 d + c2 d^2).
 #pragma once
 
+#include "core/lights/attenuation.h"
 #include "core/math.h"
 
 namespace rt {
@@ -9,9 +9,7 @@ namespace rt {
 struct PointLight {
   Vec3 position{0.0f};
   Vec3 colour{1.0f};  // linear RGB, already multiplied by the scene's "intensity"
-  float c0 = 1.0f, c1 = 0.0f, c2 = 0.0f;
-
-  float attenuation(float distance) const { return 1.0f / (c0 + distance * (c1 + distance * c2)); }
+  Attenuation attenuation;
 };
 
 }  // namespace rt

@@ -5,22 +5,37 @@
 
 namespace rt {
 
-Vec3 direct_lighting(const EvaluatedSurface& s, TraceContext& ctx) {
+Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, TraceContext& ctx) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
-  for (const Light& light : scene.lights) {
-    const LightSample ls = sample_light(light, s.position);
-    // A light behind the geometric surface cannot reach it, whatever the shading normal says.
-    if (glm::dot(s.ng, ls.direction) <= 0.0f || glm::dot(s.n, ls.direction) <= 0.0f) continue;
-    Ray shadow;
-    shadow.origin = offset_ray_origin(s.position, s.ng, ls.direction);
-    shadow.direction = ls.direction;
-    // Stop just short of the light so a surface the light sits on does not shadow it.
-    shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
-    ++ctx.counters[RayKind::kShadow];
-    const Vec3 visible = shadow_transmittance(scene, shadow);
-    if (max_component(visible) <= 0.0f) continue;
-    sum += visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+  for (size_t l = 0; l < scene.lights.size(); ++l) {
+    const Light& light = scene.lights[l];
+    // A point light is one sample; an area light shadow_samples points stratified over it, one
+    // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
+    const int count = light_sample_count(light, ctx.settings.shadow_samples);
+    const StratifiedGrid grid(count);
+    Vec3 light_sum(0.0f);
+    for (int i = 0; i < count; ++i) {
+      const Vec2 u = count == 1
+                         ? Vec2(0.5f)
+                         : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
+                                                          (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
+      const LightSample ls = sample_light(light, s.position, u);
+      // A light behind the geometric surface cannot reach it, whatever the shading normal says.
+      if (glm::dot(s.ng, ls.direction) <= 0.0f || glm::dot(s.n, ls.direction) <= 0.0f) continue;
+      if (max_component(ls.radiance) <= 0.0f) continue;  // the dark back of an area light
+      Ray shadow;
+      shadow.origin = offset_ray_origin(s.position, s.ng, ls.direction);
+      shadow.direction = ls.direction;
+      // Stop just short of the light so a surface the light sits on does not shadow it.
+      shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
+      ++ctx.counters[RayKind::kShadow];
+      const Vec3 visible = shadow_transmittance(scene, shadow);
+      if (max_component(visible) <= 0.0f) continue;
+      light_sum +=
+          visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+    }
+    sum += light_sum / static_cast<float>(count);
   }
   return sum;
 }

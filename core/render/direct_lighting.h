@@ -1,6 +1,6 @@
 // Direct light: the proposal's ambient term plus, for every light, Phong diffuse and specular
 // times the light's visibility along a shadow ray (shadow_transmittance: opaque blockers shadow
-// fully, glass partly).
+// fully, glass partly). Area lights average render.shadow_samples stratified samples: soft shadows.
 #pragma once
 
 #include "core/render/integrator.h"
@@ -8,6 +8,7 @@
 
 namespace rt {
 
-Vec3 direct_lighting(const EvaluatedSurface& s, TraceContext& ctx);
+// `path` keys the area-light samples (core/sampling.h).
+Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, TraceContext& ctx);
 
 }  // namespace rt

@@ -23,12 +23,25 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   const Scene& scene = ctx.scene;
   Ray ray = incoming;
   Hit hit;
-  const bool found = scene.intersect(ray, hit);
+  bool found = scene.intersect(ray, hit);
   Vec3 radiance = scene.background;
-  if (found) {
+  // Area lights are not in the BVH (they cast no shadow); a ray that meets one before any surface
+  // sees its emitted radiance, so mirrors show the light's shape.
+  bool sees_light = false;
+  for (const Light& light : scene.lights) {
+    const RectLight* rect = std::get_if<RectLight>(&light);
+    float t;
+    if (rect && rect->intersect(ray, t)) {
+      ray.tmax = t;
+      radiance = rect->colour;
+      sees_light = true;
+      found = false;
+    }
+  }
+  if (found && !sees_light) {
     const SurfaceInteraction si = scene.surface(ray, hit);
     const EvaluatedSurface s = evaluate_surface(scene.materials[si.material], si, ray.direction);
-    radiance = direct_lighting(s, ctx);
+    radiance = direct_lighting(s, state.path, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
   }
@@ -37,7 +50,7 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   if (!state.media.empty()) {
     const Material& m = scene.materials[state.media.innermost()];
     if (m.absorbing()) {
-      const float distance = found ? hit.t * glm::length(ray.direction) : kInfinity;
+      const float distance = found || sees_light ? ray.tmax * glm::length(ray.direction) : kInfinity;
       radiance *= glm::exp(-m.absorption * distance);
     }
   }

@@ -50,7 +50,8 @@ Scene small_scene() {
   glossy.reflectivity = Vec3(0.7f);
   glossy.glossy = 0.2f;
   scene.materials = {Material{}, mirror, glass, glossy};
-  scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), 1, 0, 0}};
+  scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), {}},
+                  RectLight{{-1, 4, -1}, {2, 0, 0}, {0, 0, 2}, Vec3(0.5f), {}, true}};
   PrimitiveSet prims;
   Rng rng(1);
   for (int i = 0; i < 2000; ++i) {

@@ -119,6 +119,10 @@ TEST_CASE("golden image: refraction", "[render][golden][refraction]") {
   check_golden("refraction", "scenes/refraction.json", 160, 90);
 }
 
+TEST_CASE("golden image: soft shadows from a rect light", "[render][golden][lights]") {
+  check_golden("soft_shadows", "scenes/soft_shadows.json", 160, 90);
+}
+
 TEST_CASE("golden image: glossy reflection", "[render][golden][glossy]") {
   check_golden("glossy", "scenes/glossy.json", 160, 90);
 }
