@@ -1,5 +1,7 @@
-// Pinhole camera. Image rows run top to bottom; (x, y) are continuous pixel coordinates, so the
-// centre of pixel (i, j) is (i + 0.5, j + 0.5).
+// Pinhole or thin-lens camera. Image rows run top to bottom; (x, y) are continuous pixel
+// coordinates, so the centre of pixel (i, j) is (i + 0.5, j + 0.5). With an aperture (lens radius)
+// > 0, rays start at a point of the lens disk and pass through the point that the pinhole ray meets
+// on the plane of focus, focus_distance ahead along the view direction: depth of field.
 #pragma once
 
 #include "core/aabb.h"
@@ -14,6 +16,8 @@ struct Camera {
   Vec3 up{0.0f, 1.0f, 0.0f};        // unit, perpendicular to forward and right
   float vertical_fov_degrees = 45.0f;
   float tan_half_fov = 0.41421356f;  // tan(vertical_fov_degrees / 2), computed once, not per ray
+  float aperture = 0.0f;             // lens radius; 0 = pinhole
+  float focus_distance = 1.0f;       // from the camera to the plane in focus, along forward
 
   // Caller guarantees target != position and up not parallel to (target - position).
   static Camera look_at(Vec3 position, Vec3 target, Vec3 up, float vertical_fov_degrees) {
@@ -57,6 +61,29 @@ struct Camera {
     r.origin = position;
     r.direction = glm::normalize(forward + sx * right + sy * up);
     return r;
+  }
+
+  // The same ray through a thin lens: `lens` in [0, 1)^2 picks the point of the lens disk
+  // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0 returns the
+  // pinhole ray exactly.
+  Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const {
+    Ray r = generate_ray(x, y, width, height);
+    if (aperture <= 0.0f) return r;
+    const Vec3 focus = r.origin + r.direction * (focus_distance / glm::dot(r.direction, forward));
+    const Vec2 disk = aperture * concentric_disk(lens);
+    r.origin = position + disk.x * right + disk.y * up;
+    r.direction = glm::normalize(focus - r.origin);
+    return r;
+  }
+
+  // Uniform point of the unit disk from a point of the unit square.
+  static Vec2 concentric_disk(Vec2 u) {
+    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
+    if (a == 0.0f && b == 0.0f) return Vec2(0.0f);
+    const bool wide = std::fabs(a) > std::fabs(b);
+    const float radius = wide ? a : b;
+    const float phi = wide ? (kPi / 4.0f) * (b / a) : (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
+    return radius * Vec2(std::cos(phi), std::sin(phi));
   }
 };
 

@@ -55,6 +55,9 @@ class Builder {
     Scene scene;
     scene.camera =
         Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
+    scene.camera.aperture = desc_.camera.aperture;
+    scene.camera.focus_distance =
+        desc_.camera.focus_distance.value_or(glm::length(desc_.camera.look_at - desc_.camera.position));
     scene.background = desc_.background;
     scene.ambient = desc_.ambient;
     scene.lights = desc_.lights;

@@ -19,7 +19,9 @@ struct CameraDescription {
   Vec3 position{0.0f, 0.0f, 5.0f};
   Vec3 look_at{0.0f};
   Vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_degrees = 45.0f;  // vertical
+  float fov_degrees = 45.0f;            // vertical
+  float aperture = 0.0f;                // lens radius; 0 = pinhole
+  std::optional<float> focus_distance;  // default: the distance to look_at
 };
 
 struct MaterialDescription {

@@ -47,7 +47,7 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
     return std::nullopt;
   }
   scene->lights = {light};
-  desc.camera = CameraDescription{scene->camera.position, bounds.centre(), Vec3(0.0f, 1.0f, 0.0f), 40.0f};
+  desc.camera = CameraDescription{scene->camera.position, bounds.centre(), Vec3(0.0f, 1.0f, 0.0f), 40.0f, 0.0f, {}};
   return LoadedScene{std::move(desc), std::move(*scene), std::move(files)};
 }
 

@@ -57,7 +57,11 @@ void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
   const auto look_at = o.vec3("look_at", true);
   const auto up = o.vec3("up");
   const auto fov = o.number("fov", kFieldOfView);
+  const auto aperture = o.number("aperture", kNonNegative);
+  const auto focus = o.number("focus_distance", kPositive);
   o.finish();
+  if (aperture) c.aperture = static_cast<float>(*aperture);
+  if (focus) c.focus_distance = static_cast<float>(*focus);
   if (position) c.position = *position;
   if (look_at) c.look_at = *look_at;
   if (up) c.up = *up;

@@ -10,7 +10,9 @@ Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContex
   const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
   TraceContext trace{ctx.scene, s, ctx.counters, SampleStream(s.seed, ctx.frame, pixel_index, sample)};
   ++ctx.counters[RayKind::kCamera];
-  return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height), 0, trace);
+  // The lens sample is keyed like every other number: a pinhole camera ignores it.
+  const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
+  return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height, lens), 0, trace);
 }
 
 // One ray through the pixel centre: the proposal's baseline, aliased edges and all.

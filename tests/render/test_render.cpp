@@ -123,6 +123,10 @@ TEST_CASE("golden image: soft shadows from a rect light", "[render][golden][ligh
   check_golden("soft_shadows", "scenes/soft_shadows.json", 160, 90);
 }
 
+TEST_CASE("golden image: depth of field", "[render][golden][dof]") {
+  check_golden("depth_of_field", "scenes/depth_of_field.json", 160, 90);
+}
+
 TEST_CASE("golden image: glossy reflection", "[render][golden][glossy]") {
   check_golden("glossy", "scenes/glossy.json", 160, 90);
 }
