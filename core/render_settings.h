@@ -18,6 +18,7 @@ struct RenderSettings {
   std::string integrator = "whitted";
   PixelSamplerKind sampler = PixelSamplerKind::kCentre;
   int samples_per_axis = 1;  // uniform sampler: n x n samples per pixel
+  bool jitter = false;       // uniform sampler: a keyed random point in each cell, not its centre
   int tile_size = 32;        // pixels per tile side; the image never depends on it
   int glossy_samples = 8;    // the proposal's glossy_count: rays per glossy reflection
   bool glossy = true;        // false (--no-glossy): glossy surfaces reflect as perfect mirrors

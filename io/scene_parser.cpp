@@ -34,6 +34,10 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
         s.sampler = *k == 0 ? PixelSamplerKind::kCentre : PixelSamplerKind::kUniform;
     }
     if (const auto n = a.number("samples", kSamplesPerAxis)) s.samples_per_axis = static_cast<int>(*n);
+    if (const Json* j = a.get("jitter")) {
+      if (j->is_boolean()) s.jitter = j->get<bool>();
+      else r.expected(a.child("jitter"), "true or false", *j);
+    }
     a.finish();
   }
   o.finish();

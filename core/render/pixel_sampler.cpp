@@ -3,12 +3,18 @@
 namespace rt {
 namespace {
 
+// The keyed numbers of camera sample `sample` of pixel (x, y): the same whichever thread asks.
+SampleStream sample_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
+  const RenderSettings& s = ctx.settings;
+  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
+  return SampleStream(s.seed, ctx.frame, pixel_index, sample);
+}
+
 // Radiance of one camera sample at continuous pixel position (px, py). Its random numbers are
 // keyed by (seed, frame, pixel, sample), never by the thread that happens to trace it.
 Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
-  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  TraceContext trace{ctx.scene, s, ctx.counters, SampleStream(s.seed, ctx.frame, pixel_index, sample)};
+  TraceContext trace{ctx.scene, s, ctx.counters, sample_stream(x, y, sample, ctx)};
   ++ctx.counters[RayKind::kCamera];
   // The lens sample is keyed like every other number: a pinhole camera ignores it.
   const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
@@ -23,30 +29,35 @@ class CentreSampler final : public PixelSampler {
   }
 };
 
-// n x n rays at the centres of a regular sub-pixel grid, averaged with equal weights.
+// n x n rays on a regular sub-pixel grid, averaged with equal weights: at the cell centres, or
+// with `jitter` at a keyed random point of each cell (stratified sampling: edges turn from stair
+// steps into fine noise).
 class UniformSampler final : public PixelSampler {
  public:
-  explicit UniformSampler(int n) : n_(n) {}
+  UniformSampler(int n, bool jitter) : n_(n), jitter_(jitter) {}
   Vec3 pixel(int x, int y, PixelContext& ctx) const override {
     Vec3 sum(0.0f);
     const float step = 1.0f / static_cast<float>(n_);
     for (int j = 0; j < n_; ++j)
-      for (int i = 0; i < n_; ++i)
-        sum += trace_sample(static_cast<float>(x) + (static_cast<float>(i) + 0.5f) * step,
-                            static_cast<float>(y) + (static_cast<float>(j) + 0.5f) * step, x, y,
-                            static_cast<uint32_t>(j * n_ + i), ctx);
+      for (int i = 0; i < n_; ++i) {
+        const auto sample = static_cast<uint32_t>(j * n_ + i);
+        const Vec2 offset = jitter_ ? sample_stream(x, y, sample, ctx).get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
+        sum += trace_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
+                            static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, x, y, sample, ctx);
+      }
     return sum * (step * step);
   }
 
  private:
   int n_;
+  bool jitter_;
 };
 
 }  // namespace
 
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings) {
   if (settings.sampler == PixelSamplerKind::kUniform && settings.samples_per_axis > 1)
-    return std::make_unique<UniformSampler>(settings.samples_per_axis);
+    return std::make_unique<UniformSampler>(settings.samples_per_axis, settings.jitter);
   return std::make_unique<CentreSampler>();
 }
 
