@@ -10,11 +10,10 @@ SampleStream sample_stream(int x, int y, uint32_t sample, const PixelContext& ct
   return SampleStream(s.seed, ctx.frame, pixel_index, sample);
 }
 
-// Radiance of one camera sample at continuous pixel position (px, py). Its random numbers are
-// keyed by (seed, frame, pixel, sample), never by the thread that happens to trace it.
-Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContext& ctx) {
+// Radiance of one camera sample at continuous pixel position (px, py), with its keyed numbers.
+Vec3 trace_sample(float px, float py, const SampleStream& samples, PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
-  TraceContext trace{ctx.scene, s, ctx.counters, sample_stream(x, y, sample, ctx)};
+  TraceContext trace{ctx.scene, s, ctx.counters, samples};
   ++ctx.counters[RayKind::kCamera];
   // The lens sample is keyed like every other number: a pinhole camera ignores it.
   const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
@@ -25,7 +24,7 @@ Vec3 trace_sample(float px, float py, int x, int y, uint32_t sample, PixelContex
 class CentreSampler final : public PixelSampler {
  public:
   Vec3 pixel(int x, int y, PixelContext& ctx) const override {
-    return trace_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, x, y, 0, ctx);
+    return trace_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, sample_stream(x, y, 0, ctx), ctx);
   }
 };
 
@@ -40,10 +39,10 @@ class UniformSampler final : public PixelSampler {
     const float step = 1.0f / static_cast<float>(n_);
     for (int j = 0; j < n_; ++j)
       for (int i = 0; i < n_; ++i) {
-        const auto sample = static_cast<uint32_t>(j * n_ + i);
-        const Vec2 offset = jitter_ ? sample_stream(x, y, sample, ctx).get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
+        const SampleStream samples = sample_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
+        const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
         sum += trace_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                            static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, x, y, sample, ctx);
+                            static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx);
       }
     return sum * (step * step);
   }

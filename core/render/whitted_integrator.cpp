@@ -27,32 +27,28 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   Vec3 radiance = scene.background;
   // Area lights are not in the BVH (they cast no shadow); a ray that meets one before any surface
   // sees its emitted radiance, so mirrors show the light's shape.
-  bool sees_light = false;
   for (const Light& light : scene.lights) {
     const RectLight* rect = std::get_if<RectLight>(&light);
     float t;
     if (rect && rect->intersect(ray, t)) {
       ray.tmax = t;
       radiance = rect->colour;
-      sees_light = true;
       found = false;
     }
   }
-  if (found && !sees_light) {
+  if (found) {
     const SurfaceInteraction si = scene.surface(ray, hit);
     const EvaluatedSurface s = evaluate_surface(scene.materials[si.material], si, ray.direction);
     radiance = direct_lighting(s, state.path, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
   }
-  // Beer-Lambert along the segment just travelled, inside the innermost medium. A ray that
-  // leaves through an open mesh without hitting anything travelled forever: it arrives dark.
+  // Beer-Lambert along the segment just travelled (ray.tmax: to the surface or light it met),
+  // inside the innermost medium. A ray that leaves through an open mesh without hitting anything
+  // keeps tmax = infinity: it travelled forever and arrives dark.
   if (!state.media.empty()) {
     const Material& m = scene.materials[state.media.innermost()];
-    if (m.absorbing()) {
-      const float distance = found || sees_light ? ray.tmax * glm::length(ray.direction) : kInfinity;
-      radiance *= glm::exp(-m.absorption * distance);
-    }
+    if (m.absorbing()) radiance *= glm::exp(-m.absorption * (ray.tmax * glm::length(ray.direction)));
   }
   return radiance;
 }
