@@ -48,7 +48,12 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   // keeps tmax = infinity: it travelled forever and arrives dark.
   if (!state.media.empty()) {
     const Material& m = scene.materials[state.media.innermost()];
-    if (m.absorbing()) radiance *= glm::exp(-m.absorption * (ray.tmax * glm::length(ray.direction)));
+    if (m.absorbing()) {
+      const float distance = ray.tmax * glm::length(ray.direction);
+      // Per channel, so that a channel that does not absorb is not multiplied by exp(-0 * inf).
+      for (int c = 0; c < 3; ++c)
+        if (m.absorption[c] > 0.0f) radiance[c] *= std::exp(-m.absorption[c] * distance);
+    }
   }
   return radiance;
 }

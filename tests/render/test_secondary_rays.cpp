@@ -260,3 +260,19 @@ TEST_CASE("nested glass: an inner object of the same index inside glass is no in
   for (size_t i = 0; i < without.rgb.size(); ++i) max_diff = std::max(max_diff, std::abs(without.rgb[i] - with.rgb[i]));
   CHECK(max_diff <= 2);
 }
+
+TEST_CASE("a ray that escapes inside an absorbing medium keeps its non-absorbed channels", "[refraction]") {
+  // A single transmissive plane is an open surface: the ray enters its medium and never leaves,
+  // travelling forever. Red is absorbed (to 0); green and blue, which the medium does not absorb,
+  // arrive whole, never exp(-0 * infinity) = NaN.
+  const LoadedScene s = load_text("open_medium.json", R"({
+    "render": { "width": 3, "height": 3 },
+    "camera": { "position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 5 },
+    "background": 0.5,
+    "materials": { "tinted": { "kd": 0, "transmission": 1, "ior": 1, "absorption": [1, 0, 0] } },
+    "nodes": [ { "shape": "plane", "material": "tinted", "transform": { "scale": 10 } } ] })");
+  const Vec3 centre = render_image(s, s.description.render).at(1, 1);
+  CHECK(centre.x == 0.0f);
+  CHECK(centre.y == Approx(0.5f));
+  CHECK(centre.z == Approx(0.5f));
+}
