@@ -1,10 +1,10 @@
 // Debug views of the closest hit, one colour per pixel, no lighting (`--integrator NAME`):
 //   normals  shading normal mapped from [-1, 1] to [0, 1] per channel;
 //   uv       the surface's texture coordinates: red = u, green = v (each wrapped into [0, 1));
-//   depth    distance from the camera, white near to black at the farthest corner of the scene's
-//            bounds (linear);
+//   depth    distance from the camera, linear from white at the nearest point of the scene's
+//            bounds to black at their farthest corner;
 //   albedo   the evaluated diffuse colour (kd, less what the material transmits).
-// A ray that hits nothing is black.
+// A ray that hits nothing is black. One class, parameterised by the view of the hit.
 #pragma once
 
 #include "core/render/integrator.h"
@@ -12,60 +12,53 @@
 
 namespace rt {
 
-// The closest hit of a camera ray, or false.
-inline bool debug_hit(const Ray& camera_ray, TraceContext& ctx, SurfaceInteraction& si, float& distance) {
-  Ray ray = camera_ray;
-  Hit hit;
-  if (!ctx.scene.intersect(ray, hit)) return false;
-  si = ctx.scene.surface(ray, hit);
-  distance = hit.t * glm::length(ray.direction);
-  return true;
+struct DebugHit {
+  Ray ray;  // the camera ray
+  SurfaceInteraction surface;
+  float distance = 0.0f;  // from the ray's origin
+};
+
+template <Vec3 (*View)(const DebugHit&, const Scene&)>
+class DebugIntegrator final : public Integrator {
+ public:
+  Vec3 radiance(const Ray& camera_ray, int /*depth*/, TraceContext& ctx) const override {
+    DebugHit h{camera_ray, {}, 0.0f};
+    Hit hit;
+    if (!ctx.scene.intersect(h.ray, hit)) return Vec3(0.0f);
+    h.surface = ctx.scene.surface(h.ray, hit);
+    h.distance = hit.t * glm::length(h.ray.direction);
+    return View(h, ctx.scene);
+  }
+};
+
+inline Vec3 normals_view(const DebugHit& h, const Scene&) { return 0.5f * (h.surface.shading_normal + 1.0f); }
+
+inline Vec3 uv_view(const DebugHit& h, const Scene&) {
+  const Vec2 uv = h.surface.uv - glm::floor(h.surface.uv);
+  return Vec3(uv.x, uv.y, 0.0f);
 }
 
-class NormalsIntegrator final : public Integrator {
- public:
-  Vec3 radiance(const Ray& ray, int /*depth*/, TraceContext& ctx) const override {
-    SurfaceInteraction si;
-    float distance;
-    return debug_hit(ray, ctx, si, distance) ? 0.5f * (si.shading_normal + 1.0f) : Vec3(0.0f);
-  }
-};
+inline Vec3 depth_view(const DebugHit& h, const Scene& scene) {
+  // White at the scene's nearest point to the camera, black at its farthest corner: the whole
+  // range of grey spans the scene, wherever the camera is.
+  const Aabb b = scene.bvh.bounds();
+  const Vec3 o = h.ray.origin;
+  const float nearest = glm::length(glm::max(glm::max(b.lo - o, o - b.hi), Vec3(0.0f)));
+  float farthest = 0.0f;
+  for (int c = 0; c < 8; ++c)
+    farthest = std::max(
+        farthest, glm::length(Vec3(c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z) - o));
+  if (!(farthest > nearest)) return Vec3(1.0f);
+  return Vec3(std::clamp(1.0f - (h.distance - nearest) / (farthest - nearest), 0.0f, 1.0f));
+}
 
-class UvIntegrator final : public Integrator {
- public:
-  Vec3 radiance(const Ray& ray, int /*depth*/, TraceContext& ctx) const override {
-    SurfaceInteraction si;
-    float distance;
-    if (!debug_hit(ray, ctx, si, distance)) return Vec3(0.0f);
-    const Vec2 uv = si.uv - glm::floor(si.uv);
-    return Vec3(uv.x, uv.y, 0.0f);
-  }
-};
+inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
+  return evaluate_surface(scene.materials[h.surface.material], h.surface, h.ray.direction).diffuse;
+}
 
-class DepthIntegrator final : public Integrator {
- public:
-  Vec3 radiance(const Ray& ray, int /*depth*/, TraceContext& ctx) const override {
-    SurfaceInteraction si;
-    float distance;
-    if (!debug_hit(ray, ctx, si, distance)) return Vec3(0.0f);
-    const Aabb b = ctx.scene.bvh.bounds();
-    float farthest = 0.0f;
-    for (int c = 0; c < 8; ++c)
-      farthest = std::max(
-          farthest,
-          glm::length(Vec3(c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z) - ray.origin));
-    return Vec3(farthest > 0.0f ? std::clamp(1.0f - distance / farthest, 0.0f, 1.0f) : 0.0f);
-  }
-};
-
-class AlbedoIntegrator final : public Integrator {
- public:
-  Vec3 radiance(const Ray& ray, int /*depth*/, TraceContext& ctx) const override {
-    SurfaceInteraction si;
-    float distance;
-    if (!debug_hit(ray, ctx, si, distance)) return Vec3(0.0f);
-    return evaluate_surface(ctx.scene.materials[si.material], si, ray.direction).diffuse;
-  }
-};
+using NormalsIntegrator = DebugIntegrator<normals_view>;
+using UvIntegrator = DebugIntegrator<uv_view>;
+using DepthIntegrator = DebugIntegrator<depth_view>;
+using AlbedoIntegrator = DebugIntegrator<albedo_view>;
 
 }  // namespace rt
