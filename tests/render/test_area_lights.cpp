@@ -15,14 +15,6 @@ using namespace rt;
 
 namespace {
 
-LoadedScene load_text(const std::string& name, const std::string& json) {
-  Diagnostics diags;
-  auto loaded = load_scene(rt::test::write_file(name, json), rt::test::load_options(), diags);
-  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
-  REQUIRE(loaded);
-  return std::move(*loaded);
-}
-
 // Direct light at a white Lambertian floor point (x, 0, 0), normal +Y.
 Vec3 floor_light(const Scene& scene, const RenderSettings& settings, float x) {
   EvaluatedSurface s;
@@ -113,8 +105,8 @@ TEST_CASE("area light samples: each stratum of the grid gets exactly one", "[lig
 }
 
 TEST_CASE("a point straight below an occluder's edge sees half the light", "[lights][shadow]") {
-  const LoadedScene open = load_text("area_open.json", shadow_scene(false));
-  const LoadedScene half = load_text("area_half.json", shadow_scene(true));
+  const LoadedScene open = rt::test::load_scene_text("area_open.json", shadow_scene(false));
+  const LoadedScene half = rt::test::load_scene_text("area_half.json", shadow_scene(true));
   RenderSettings settings;
   for (const int samples : {16, 64}) {
     settings.shadow_samples = samples;
@@ -128,8 +120,8 @@ TEST_CASE("a point straight below an occluder's edge sees half the light", "[lig
 TEST_CASE("the penumbra is as wide as similar triangles say", "[lights][shadow]") {
   // Light 2 wide at height 4, occluder edge at height 2: the penumbra on the floor runs from
   // x = -1 (the whole light hidden) to x = +1 (all of it seen), width W h / (H - h) = 2.
-  const LoadedScene open = load_text("penumbra_open.json", shadow_scene(false));
-  const LoadedScene half = load_text("penumbra_half.json", shadow_scene(true));
+  const LoadedScene open = rt::test::load_scene_text("penumbra_open.json", shadow_scene(false));
+  const LoadedScene half = rt::test::load_scene_text("penumbra_half.json", shadow_scene(true));
   RenderSettings settings;
   settings.shadow_samples = 1024;
   float dark_end = -2.0f, lit_start = 2.0f;
@@ -144,7 +136,7 @@ TEST_CASE("the penumbra is as wide as similar triangles say", "[lights][shadow]"
 }
 
 TEST_CASE("rect lights are seen by camera rays and in mirrors, and cast no shadow", "[lights]") {
-  const LoadedScene s = load_text("see_light.json", R"({
+  const LoadedScene s = rt::test::load_scene_text("see_light.json", R"({
     "render": { "width": 32, "height": 32 },
     "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40 },
     "lights": [ { "type": "rect", "corner": [-0.5, -0.5, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0],

@@ -18,14 +18,6 @@ using rt::test::check_vec;
 
 namespace {
 
-LoadedScene load_text(const std::string& name, const std::string& json) {
-  Diagnostics diags;
-  auto loaded = load_scene(rt::test::write_file(name, json), rt::test::load_options(), diags);
-  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
-  REQUIRE(loaded);
-  return std::move(*loaded);
-}
-
 // One refraction exactly as the Whitted integrator makes it: closest hit, evaluated surface,
 // Snell at the shading normal, origin offset to the far side. n1 -> n2 across the surface.
 Ray refract_at_hit(const Scene& scene, const Ray& ray, float n1, float n2) {
@@ -46,7 +38,7 @@ const char* kGlass = R"("glass": { "kd": 0, "transmission": 1, "ior": 1.5 })";
 
 TEST_CASE("a ray through a glass slab leaves parallel, offset sideways by h sin(i - t) / cos t", "[refraction]") {
   // The cube scaled to a slab 1 thick (z in [-0.5, 0.5]) and wide.
-  const LoadedScene s = load_text(
+  const LoadedScene s = rt::test::load_scene_text(
       "slab.json",
       std::string(R"({ "camera": { "position": [0, 0, 9], "look_at": [0, 0, 0] }, "materials": {)") + kGlass + R"(},
     "nodes": [ { "shape": "cube", "material": "glass", "transform": { "scale": [20, 20, 0.5] } } ] })");
@@ -67,7 +59,7 @@ TEST_CASE("a ray through a glass slab leaves parallel, offset sideways by h sin(
 }
 
 TEST_CASE("a ray through a glass sphere's centre is not bent", "[refraction]") {
-  const LoadedScene s = load_text(
+  const LoadedScene s = rt::test::load_scene_text(
       "ball.json",
       std::string(R"({ "camera": { "position": [0, 0, 9], "look_at": [0, 0, 0] }, "materials": {)") + kGlass + R"(},
     "nodes": [ { "shape": "sphere", "material": "glass", "transform": { "translate": [1, 2, 3], "scale": 0.7 } } ] })");
@@ -110,8 +102,8 @@ Image render_image(const LoadedScene& s, RenderSettings settings, RenderStats* s
 }  // namespace
 
 TEST_CASE("ior 1 with transmission 1 and no absorption leaves the image behind unchanged", "[refraction]") {
-  const LoadedScene without = load_text("no_ball.json", backdrop_scene("", ""));
-  const LoadedScene with = load_text(
+  const LoadedScene without = rt::test::load_scene_text("no_ball.json", backdrop_scene("", ""));
+  const LoadedScene with = rt::test::load_scene_text(
       "clear_ball.json",
       backdrop_scene(
           R"(, "clear": { "kd": 0, "transmission": 1, "ior": 1 })",
@@ -126,7 +118,7 @@ TEST_CASE("ior 1 with transmission 1 and no absorption leaves the image behind u
 }
 
 TEST_CASE("max_depth bounds the rays traced between two facing mirrors", "[reflection]") {
-  const LoadedScene s = load_text("mirrors.json", R"({
+  const LoadedScene s = rt::test::load_scene_text("mirrors.json", R"({
     "render": { "width": 1, "height": 1 },
     "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 10 },
     "materials": { "mirror": { "kd": 0, "reflectivity": 1 } },
@@ -157,9 +149,9 @@ std::string glossy_scene(const std::string& glossy_key) {
 }  // namespace
 
 TEST_CASE("glossy width 0 is the mirror image bit for bit; --no-glossy too", "[glossy]") {
-  const LoadedScene mirror = load_text("mirror_ball.json", glossy_scene(""));
-  const LoadedScene zero = load_text("zero_width.json", glossy_scene(R"(, "glossy": 0)"));
-  const LoadedScene wide = load_text("wide.json", glossy_scene(R"(, "glossy": 0.3)"));
+  const LoadedScene mirror = rt::test::load_scene_text("mirror_ball.json", glossy_scene(""));
+  const LoadedScene zero = rt::test::load_scene_text("zero_width.json", glossy_scene(R"(, "glossy": 0)"));
+  const LoadedScene wide = rt::test::load_scene_text("wide.json", glossy_scene(R"(, "glossy": 0.3)"));
   const Image reference = render_image(mirror, mirror.description.render);
   CHECK(render_image(zero, zero.description.render).pixels == reference.pixels);
   RenderSettings off = wide.description.render;
@@ -184,7 +176,7 @@ TEST_CASE("no glossy ray goes below the surface", "[glossy]") {
         { "shape": "cube", "material": "red", "transform": { "translate": [0, )" +
            std::to_string(box_y) + R"(, 0], "scale": [40, 0.5, 40] } } ] })";
   };
-  const LoadedScene below = load_text("glossy_below.json", scene(-1.0f));
+  const LoadedScene below = rt::test::load_scene_text("glossy_below.json", scene(-1.0f));
   RenderStats stats;
   const Image image = render_image(below, below.description.render, &stats);
   CHECK(stats.rays[RayKind::kGlossy] > 5000);
@@ -192,7 +184,7 @@ TEST_CASE("no glossy ray goes below the surface", "[glossy]") {
   for (const Vec3& p : image.pixels) red = std::max(red, p.x);
   CHECK(red == 0.0f);
   // The same box above the floor is seen in it: the test can tell.
-  const LoadedScene above = load_text("glossy_above.json", scene(2.0f));
+  const LoadedScene above = rt::test::load_scene_text("glossy_above.json", scene(2.0f));
   red = 0.0f;
   for (const Vec3& p : render_image(above, above.description.render).pixels) red = std::max(red, p.x);
   CHECK(red > 0.05f);
@@ -213,7 +205,7 @@ TEST_CASE("a clear glass sphere's shadow is lighter than an opaque one's, and ti
         { "shape": "sphere", "material": "ball", "transform": { "translate": [1.2, 2, 0], "scale": 0.5 } } ] })";
   };
   const auto centre = [&](const std::string& name, const std::string& material) {
-    const LoadedScene s = load_text(name, scene(material));
+    const LoadedScene s = rt::test::load_scene_text(name, scene(material));
     return render_image(s, s.description.render).at(2, 2);
   };
   const Vec3 opaque = centre("opaque.json", R"({ "kd": 0.5 })");
@@ -250,8 +242,8 @@ TEST_CASE("nested glass: an inner object of the same index inside glass is no in
                 : "") +
            "] }";
   };
-  const LoadedScene plain = load_text("nested_plain.json", scene(false));
-  const LoadedScene nested = load_text("nested_inner.json", scene(true));
+  const LoadedScene plain = rt::test::load_scene_text("nested_plain.json", scene(false));
+  const LoadedScene nested = rt::test::load_scene_text("nested_inner.json", scene(true));
   RenderStats a, b;
   const Rgb8Image without = encode_srgb8(render_image(plain, plain.description.render, &a));
   const Rgb8Image with = encode_srgb8(render_image(nested, nested.description.render, &b));
@@ -265,7 +257,7 @@ TEST_CASE("a ray that escapes inside an absorbing medium keeps its non-absorbed 
   // A single transmissive plane is an open surface: the ray enters its medium and never leaves,
   // travelling forever. Red is absorbed (to 0); green and blue, which the medium does not absorb,
   // arrive whole, never exp(-0 * infinity) = NaN.
-  const LoadedScene s = load_text("open_medium.json", R"({
+  const LoadedScene s = rt::test::load_scene_text("open_medium.json", R"({
     "render": { "width": 3, "height": 3 },
     "camera": { "position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 5 },
     "background": 0.5,

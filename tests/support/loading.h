@@ -1,11 +1,28 @@
-// Load options as rtcli uses them: one BVH build thread and the renderer's integrator names.
+// Load options as rtcli uses them (one BVH build thread and the renderer's integrator names), and
+// scenes written by tests as text.
 #pragma once
+
+#include <string>
+
+#include <catch2/catch.hpp>
 
 #include "core/render/integrator.h"
 #include "io/load_options.h"
+#include "io/scene_loader.h"
+#include "tests/support/test_paths.h"
 
 namespace rt::test {
 
 inline LoadOptions load_options(unsigned threads = 1) { return LoadOptions{threads, integrator_names(), LoadLimits{}}; }
+
+// Writes `json` to the scratch folder as `name` and loads it; the test stops (showing every
+// diagnostic) if it does not load.
+inline LoadedScene load_scene_text(const std::string& name, const std::string& json) {
+  Diagnostics diags;
+  auto loaded = load_scene(write_file(name, json), load_options(), diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(loaded);
+  return std::move(*loaded);
+}
 
 }  // namespace rt::test
