@@ -1,5 +1,5 @@
-// Deterministic random numbers. Every stream is keyed by (seed, frame, pixel, sample) so an
-// image never depends on thread count, tile order or which machine rendered a tile.
+// A 64-bit mixer and a small sequential generator for benchmarks and tests. The renderer's own
+// random numbers are keyed hashes built on mix64 (core/sampling.h), never a sequential stream.
 #pragma once
 
 #include <cstdint>
@@ -21,11 +21,6 @@ class Rng {
     next_u32();
     state_ += seed;
     next_u32();
-  }
-
-  static Rng for_sample(uint64_t seed, uint32_t frame, uint64_t pixel, uint32_t sample) {
-    const uint64_t key = mix64(mix64(mix64(seed) ^ frame) ^ pixel);
-    return Rng(mix64(key ^ sample), key);
   }
 
   uint32_t next_u32() {
