@@ -38,6 +38,17 @@ int main(int argc, char** argv) {
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")
       ->check(CLI::Range(1, kMaxShadowSamples));
+  render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: none, uniform or adaptive (overrides the scene)");
+  render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
+      ->check(CLI::Range(1, kMaxSamplesPerAxis));
+  render_cmd
+      ->add_option("--aa-threshold", render.aa_threshold,
+                   "Adaptive anti-aliasing: split a cell whose samples differ by more than T (0-1, displayed values)")
+      ->check(CLI::Range(0.0f, 1.0f));
+  render_cmd->add_option("--aa-depth", render.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
+      ->check(CLI::Range(0, kMaxAdaptiveDepth));
+  render_cmd->add_flag("--aa-debug", render.aa_debug,
+                       "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,8 @@
 #include "cli/report.h"
 #include "cli/scene_loading.h"
 #include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
+#include "core/render/refinement_images.h"
 #include "core/render/renderer.h"
 #include "io/png_file.h"
 #include "io/scene_loader.h"
@@ -62,18 +65,33 @@ bool output_is_an_input(const std::string& output, const std::vector<std::string
   return false;
 }
 
+// A name the render pipeline must know (an integrator, an anti-aliasing mode), or an error
+// listing the names it knows.
+bool check_name(const char* option, const char* what, const std::string& name, const std::vector<std::string>& names) {
+  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"; expected one of: %s\n", option, what, name.c_str(),
+               list.c_str());
+  return false;
+}
+
+// "out.png" -> "out.aa-refined.png" for --aa-debug's images.
+std::string beside(const std::string& output, const std::string& suffix) {
+  std::filesystem::path p(output);
+  p.replace_extension(suffix + ".png");
+  return p.string();
+}
+
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
   const std::string output = cmd.output.empty() ? default_output(cmd.scene) : cmd.output;
   std::string error;
-  if (cmd.integrator && !make_integrator(*cmd.integrator)) {
-    std::string names;
-    for (const std::string& n : integrator_names()) names += (names.empty() ? "" : ", ") + n;
-    std::fprintf(stderr, "rtcli: error: --integrator: unknown integrator \"%s\"; expected one of: %s\n",
-                 cmd.integrator->c_str(), names.c_str());
+  if (cmd.integrator && !check_name("--integrator", "integrator", *cmd.integrator, integrator_names()))
     return kExitBadInput;
-  }
+  if (cmd.aa_mode && !check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names()))
+    return kExitBadInput;
   if (!check_output(output, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitBadInput;
@@ -84,9 +102,16 @@ int run_render(const RenderCommand& cmd) {
   std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0)), diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
-  if (output_is_an_input(output, loaded->inputs, error)) {
-    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-    return kExitBadInput;
+  std::vector<std::string> outputs = {output};
+  if (cmd.aa_debug) {
+    outputs.push_back(beside(output, ".aa-refined"));
+    outputs.push_back(beside(output, ".aa-depth"));
+  }
+  for (const std::string& out : outputs) {
+    if (output_is_an_input(out, loaded->inputs, error)) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return kExitBadInput;
+    }
   }
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
 
@@ -99,7 +124,11 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.glossy_samples) settings.glossy_samples = *cmd.glossy_samples;
   if (cmd.no_glossy) settings.glossy = false;
   if (cmd.shadow_samples) settings.shadow_samples = *cmd.shadow_samples;
-  if (cmd.width || cmd.height) {
+  if (cmd.aa_mode) settings.antialias.mode = *cmd.aa_mode;
+  if (cmd.aa_samples) settings.antialias.samples = *cmd.aa_samples;
+  if (cmd.aa_threshold) settings.antialias.threshold = *cmd.aa_threshold;
+  if (cmd.aa_depth) settings.antialias.max_depth = *cmd.aa_depth;
+  if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
                    "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders (README, \"Limits\")\n",
@@ -107,21 +136,22 @@ int run_render(const RenderCommand& cmd) {
                    static_cast<unsigned long long>(kMaxPixels));
       return kExitBadInput;
     }
-    if (camera_rays_per_frame(settings) > kCameraRaysWarning)
-      std::fprintf(stderr, "rtcli: warning: this render traces %llu camera rays; expect it to take a long time\n",
-                   static_cast<unsigned long long>(camera_rays_per_frame(settings)));
+    if (max_camera_rays_per_frame(settings) > kCameraRaysWarning)
+      std::fprintf(stderr,
+                   "rtcli: warning: this render can trace up to %llu camera rays; expect it to take a long time\n",
+                   static_cast<unsigned long long>(max_camera_rays_per_frame(settings)));
   }
 
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
-  Image image;
+  Film film;
   RenderStats stats;
   {
     const InterruptWatch interrupt;
     RenderControl control;
     if (show_progress) control.progress = [&](const RenderProgress& p) { bar.update(p); };
     control.cancel = &interrupt.flag();
-    stats = render(loaded->scene, settings, image, control);
+    stats = render(loaded->scene, settings, film, control);
     bar.clear();
     if (stats.cancelled) {
       std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", stats.seconds);
@@ -130,11 +160,16 @@ int run_render(const RenderCommand& cmd) {
   }
 
   {
-    const SignalBlock block;  // the temporary file is always renamed or removed
-    if (!write_png(output, encode_srgb8(image), error, stats.threads)) {
+    const SignalBlock block;  // each temporary file is always renamed or removed
+    const auto write = [&](const std::string& path, const Image& image) {
+      if (write_png(path, encode_srgb8(image), error, stats.threads)) return true;
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return false;
+    };
+    if (!write(output, film.color)) return kExitFailure;
+    if (cmd.aa_debug &&
+        (!write(outputs[1], refined_pixels_in_red(film)) || !write(outputs[2], refinement_heat_map(film))))
       return kExitFailure;
-    }
   }
   if (!cmd.quiet) {
     const double rate = stats.seconds > 0 ? static_cast<double>(stats.rays.total()) / stats.seconds : 0.0;
@@ -142,7 +177,18 @@ int run_render(const RenderCommand& cmd) {
                  cmd.scene.c_str(), settings.width, settings.height, stats.seconds, load_seconds,
                  format_count(static_cast<double>(stats.rays.total())).c_str(), format_ray_counts(stats.rays).c_str(),
                  rate / 1e6, stats.threads, stats.threads == 1 ? "" : "s");
+    const auto pixels = static_cast<double>(pixel_count(settings));
+    size_t refined = 0;
+    for (const uint8_t d : film.depth) refined += d > 0;
+    std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
+                 static_cast<double>(stats.rays.total()) / pixels,
+                 static_cast<double>(stats.rays[RayKind::kCamera]) / pixels,
+                 100.0 * static_cast<double>(refined) / pixels, settings.antialias.mode.c_str());
     std::printf("wrote %s\n", output.c_str());
+    if (cmd.aa_debug) {
+      std::printf("wrote %s (the image, refined pixels in red)\n", outputs[1].c_str());
+      std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n", outputs[2].c_str());
+    }
   }
   return kExitSuccess;
 }

@@ -1,5 +1,6 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--shadow-samples N] [--quiet]`
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--shadow-samples N]
+//   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D] [--aa-debug] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,11 @@ struct RenderCommand {
   std::optional<std::string> integrator;
   std::optional<int> glossy_samples;
   std::optional<int> shadow_samples;
+  std::optional<std::string> aa_mode;
+  std::optional<int> aa_samples;
+  std::optional<float> aa_threshold;
+  std::optional<int> aa_depth;
+  bool aa_debug = false;  // also write <output>.aa-refined.png and <output>.aa-depth.png
   bool no_glossy = false;
   bool quiet = false;
 };

@@ -2,12 +2,13 @@
 #pragma once
 
 #include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
 #include "io/load_options.h"
 
 namespace rt {
 
 inline LoadOptions cli_load_options(unsigned threads = 0) {
-  return LoadOptions{threads, integrator_names(), LoadLimits{}};
+  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}};
 }
 
 }  // namespace rt

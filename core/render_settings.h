@@ -7,7 +7,18 @@
 
 namespace rt {
 
-enum class PixelSamplerKind { kCentre, kUniform };
+// Where the adaptive sampler places the rays of a cell (README, "Anti-aliasing").
+enum class SamplePositions { kCorners, kCentres };
+
+// render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
+struct AntialiasSettings {
+  std::string mode = "none";  // a name in the pixel sampler table: none, uniform, adaptive
+  int samples = 1;            // uniform: samples x samples rays per pixel
+  bool jitter = false;        // uniform: a keyed random point in each cell, not its centre
+  float threshold = 0.1f;     // adaptive: split a cell whose corners differ by more (displayed values)
+  int max_depth = 2;          // adaptive: splits at most; a pixel becomes up to 2^d x 2^d cells
+  SamplePositions positions = SamplePositions::kCorners;
+};
 
 struct RenderSettings {
   int width = 640;
@@ -16,13 +27,11 @@ struct RenderSettings {
   uint64_t seed = 0;     // keys every random stream, with frame, pixel and sample index
   unsigned threads = 0;  // 0 = one per hardware thread
   std::string integrator = "whitted";
-  PixelSamplerKind sampler = PixelSamplerKind::kCentre;
-  int samples_per_axis = 1;  // uniform sampler: n x n samples per pixel
-  bool jitter = false;       // uniform sampler: a keyed random point in each cell, not its centre
-  int tile_size = 32;        // pixels per tile side; the image never depends on it
-  int glossy_samples = 8;    // the proposal's glossy_count: rays per glossy reflection
-  bool glossy = true;        // false (--no-glossy): glossy surfaces reflect as perfect mirrors
-  int shadow_samples = 16;   // the proposal's shadow_count: shadow rays per area light and point
+  AntialiasSettings antialias;
+  int tile_size = 32;       // pixels per tile side; the image never depends on it
+  int glossy_samples = 8;   // the proposal's glossy_count: rays per glossy reflection
+  bool glossy = true;       // false (--no-glossy): glossy surfaces reflect as perfect mirrors
+  int shadow_samples = 16;  // the proposal's shadow_count: shadow rays per area light and point
 };
 
 // Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel
@@ -30,6 +39,7 @@ struct RenderSettings {
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
 inline constexpr int kMaxSamplesPerAxis = 16;
+inline constexpr int kMaxAdaptiveDepth = 4;  // 16 x 16 cells, like the largest uniform grid
 inline constexpr int kMaxRecursionDepth = 64;
 inline constexpr int kMaxGlossySamples = 256;
 inline constexpr int kMaxShadowSamples = 1024;
@@ -39,10 +49,23 @@ inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
 inline uint64_t pixel_count(const RenderSettings& s) {
   return static_cast<uint64_t>(s.width) * static_cast<uint64_t>(s.height);
 }
-// Camera rays one frame traces: pixels times samples per pixel.
-inline uint64_t camera_rays_per_frame(const RenderSettings& s) {
-  const auto n = static_cast<uint64_t>(s.sampler == PixelSamplerKind::kUniform ? s.samples_per_axis : 1);
-  return pixel_count(s) * n * n;
+// The most camera rays one frame can trace: pixels times the most rays a pixel can take
+// (adaptive: every cell split down to max_depth).
+inline uint64_t max_camera_rays_per_frame(const RenderSettings& s) {
+  const AntialiasSettings& aa = s.antialias;
+  uint64_t per_pixel = 1;
+  if (aa.mode == "uniform") {
+    per_pixel = static_cast<uint64_t>(aa.samples) * static_cast<uint64_t>(aa.samples);
+  } else if (aa.mode == "adaptive") {
+    const uint64_t cells = uint64_t{1} << aa.max_depth;
+    if (aa.positions == SamplePositions::kCorners) {
+      per_pixel = (cells + 1) * (cells + 1);
+    } else {
+      per_pixel = 0;  // four centres per cell, at every level a cell is split
+      for (uint64_t level = 1; level <= cells; level *= 2) per_pixel += 4 * level * level;
+    }
+  }
+  return pixel_count(s) * per_pixel;
 }
 
 }  // namespace rt

@@ -41,13 +41,13 @@ size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+}  // namespace
+
 std::string join_quoted(const std::vector<std::string>& items) {
   std::string out;
   for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + quote_text(items[i]);
   return out;
 }
-
-}  // namespace
 
 void JsonReader::add(Severity severity, const std::string& pointer, std::string message, Anchor anchor) const {
   std::string where = pointer;

@@ -65,6 +65,8 @@ std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::s
 // A weight: [r, g, b] or one number, components in [0, 1].
 std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr);
 std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr);
+// "a", "b", "c": names as error messages list them.
+std::string join_quoted(const std::vector<std::string>& items);
 // Index of v in `choices`; otherwise an error listing them all.
 std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std::string& ptr,
                                   const std::vector<std::string>& choices);

@@ -1,5 +1,6 @@
 // What the caller tells the loaders: threads for the BVH build, the names the render pipeline
-// offers (io does not link the renderer; cli passes integrator_names()), and the limits on what
+// offers (io does not link the renderer; cli passes integrator_names() and
+// pixel_sampler_names()), and the limits on what
 // a file may ask for. The limits keep a hostile or broken file from exhausting memory or time:
 // everything is checked against them before it is allocated. README.md ("Limits") documents
 // the defaults; the fuzzers run with smaller ones.
@@ -24,6 +25,7 @@ struct LoadLimits {
 struct LoadOptions {
   unsigned threads = 0;                             // for the BVH build; 0 = all hardware threads
   std::vector<std::string> integrators{"whitted"};  // valid values of /render/integrator
+  std::vector<std::string> pixel_samplers{"none"};  // valid values of /render/antialias/mode
   LoadLimits limits;
   bool build_bvh = true;  // false: check everything, build no acceleration structure (validate)
 };

@@ -6,17 +6,14 @@
 #include <cstring>
 #include <vector>
 
+#include "core/color.h"
 #include "core/math.h"
 
 namespace rt {
 namespace {
 
 // The defining formula; the table below reproduces it exactly, and tests check that it does.
-uint8_t srgb8_by_formula(float linear) {
-  const float c = std::isnan(linear) ? 0.0f : std::clamp(linear, 0.0f, 1.0f);
-  const float encoded = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-  return static_cast<uint8_t>(std::lround(encoded * 255.0f));
-}
+uint8_t srgb8_by_formula(float linear) { return static_cast<uint8_t>(std::lround(srgb_encode(linear) * 255.0f)); }
 
 // threshold[v] = the smallest float whose code is at least v, found by bisection over the float
 // bit patterns of [0, 1] (the formula is monotonic). first[i] = the code of the first float of

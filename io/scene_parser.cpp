@@ -15,8 +15,33 @@ constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
 constexpr NumberRule kFieldOfView{0, 180, true, true, false};
 constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
 constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
+constexpr NumberRule kThreshold{0, 1, false, false, false};  // a difference of displayed values
+constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
 
-void parse_render(const JsonReader& r, const Json& v, const std::vector<std::string>& integrators, RenderSettings& s) {
+// render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
+// the scene's parameters.
+void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr, const std::vector<std::string>& modes,
+                     RenderSettings& s) {
+  ObjectReader a(r, v, ptr);
+  AntialiasSettings& aa = s.antialias;
+  if (const Json* mode = a.get("mode", true, join_quoted(modes))) {
+    if (const auto k = read_choice(r, *mode, a.child("mode"), modes)) aa.mode = modes[*k];
+  }
+  if (const auto n = a.number("samples", kSamplesPerAxis)) aa.samples = static_cast<int>(*n);
+  if (const Json* j = a.get("jitter")) {
+    if (j->is_boolean()) aa.jitter = j->get<bool>();
+    else r.expected(a.child("jitter"), "true or false", *j);
+  }
+  if (const auto t = a.number("threshold", kThreshold)) aa.threshold = static_cast<float>(*t);
+  if (const auto d = a.number("max_depth", kAdaptiveDepth)) aa.max_depth = static_cast<int>(*d);
+  if (const Json* p = a.get("positions")) {
+    if (const auto k = read_choice(r, *p, a.child("positions"), {"corners", "centres"}))
+      aa.positions = *k == 0 ? SamplePositions::kCorners : SamplePositions::kCentres;
+  }
+  a.finish();
+}
+
+void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options, RenderSettings& s) {
   ObjectReader o(r, v, "/render");
   if (const auto w = o.number("width", kImageSize)) s.width = static_cast<int>(*w);
   if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
@@ -25,21 +50,10 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
   if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
   if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
   if (const Json* i = o.get("integrator")) {
-    if (const auto k = read_choice(r, *i, o.child("integrator"), integrators)) s.integrator = integrators[*k];
+    if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))
+      s.integrator = options.integrators[*k];
   }
-  if (const Json* aa = o.get("antialias")) {
-    ObjectReader a(r, *aa, o.child("antialias"));
-    if (const Json* mode = a.get("mode", true, "\"none\" or \"uniform\"")) {
-      if (const auto k = read_choice(r, *mode, a.child("mode"), {"none", "uniform"}))
-        s.sampler = *k == 0 ? PixelSamplerKind::kCentre : PixelSamplerKind::kUniform;
-    }
-    if (const auto n = a.number("samples", kSamplesPerAxis)) s.samples_per_axis = static_cast<int>(*n);
-    if (const Json* j = a.get("jitter")) {
-      if (j->is_boolean()) s.jitter = j->get<bool>();
-      else r.expected(a.child("jitter"), "true or false", *j);
-    }
-    a.finish();
-  }
+  if (const Json* aa = o.get("antialias")) parse_antialias(r, *aa, o.child("antialias"), options.pixel_samplers, s);
   o.finish();
   if (pixel_count(s) > kMaxPixels) {
     r.error("/render",
@@ -47,10 +61,10 @@ void parse_render(const JsonReader& r, const Json& v, const std::vector<std::str
                 std::to_string(s.width) + " x " + std::to_string(s.height) + " = " + std::to_string(pixel_count(s)) +
                 " (README, \"Limits\")",
             Anchor::kKey);
-  } else if (camera_rays_per_frame(s) > kCameraRaysWarning) {
+  } else if (max_camera_rays_per_frame(s) > kCameraRaysWarning) {
     r.warning("/render",
-              "this render traces " + std::to_string(camera_rays_per_frame(s)) +
-                  " camera rays per frame (width x height x samples^2); expect it to take a long time",
+              "this render can trace up to " + std::to_string(max_camera_rays_per_frame(s)) +
+                  " camera rays per frame (pixels x the most rays per pixel); expect it to take a long time",
               Anchor::kKey);
   }
 }
@@ -207,7 +221,7 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
   scene.path = doc.path;
   ObjectReader top(r, doc.root, "");
   top.get("$schema");  // editors use it to find the schema; we don't need it
-  if (const Json* v = top.get("render")) parse_render(r, *v, options.integrators, scene.render);
+  if (const Json* v = top.get("render")) parse_render(r, *v, options, scene.render);
   if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
     parse_camera(r, *v, scene.camera);
   if (const auto bg = top.colour("background")) scene.background = *bg;

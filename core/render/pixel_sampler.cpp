@@ -1,17 +1,10 @@
 #include "core/render/pixel_sampler.h"
 
+#include "core/render/adaptive_sampler.h"
+
 namespace rt {
-namespace {
 
-// The keyed numbers of camera sample `sample` of pixel (x, y): the same whichever thread asks.
-SampleStream sample_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
-  const RenderSettings& s = ctx.settings;
-  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  return SampleStream(s.seed, ctx.frame, pixel_index, sample);
-}
-
-// Radiance of one camera sample at continuous pixel position (px, py), with its keyed numbers.
-Vec3 trace_sample(float px, float py, const SampleStream& samples, PixelContext& ctx) {
+Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   TraceContext trace{ctx.scene, s, ctx.counters, samples};
   ++ctx.counters[RayKind::kCamera];
@@ -20,44 +13,96 @@ Vec3 trace_sample(float px, float py, const SampleStream& samples, PixelContext&
   return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height, lens), 0, trace);
 }
 
-// One ray through the pixel centre: the proposal's baseline, aliased edges and all.
-class CentreSampler final : public PixelSampler {
+namespace {
+
+// The keyed numbers of camera sample `sample` of pixel (x, y): the same whichever thread asks.
+SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
+  const RenderSettings& s = ctx.settings;
+  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
+  return SampleStream(s.seed, ctx.frame, pixel_index, sample);
+}
+
+// A sampler whose pixels are independent of each other: the tile is its pixels in turn.
+class PerPixelSampler : public PixelSampler {
  public:
-  Vec3 pixel(int x, int y, PixelContext& ctx) const override {
-    return trace_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, sample_stream(x, y, 0, ctx), ctx);
+  bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override {
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        if (ctx.cancelled()) return false;
+        out.at(x, y) = pixel(x, y, ctx);
+      }
+    return true;
+  }
+
+ private:
+  virtual FilmPixel pixel(int x, int y, PixelContext& ctx) const = 0;
+};
+
+// One ray through the pixel centre: the proposal's baseline, aliased edges and all.
+class CentreSampler final : public PerPixelSampler {
+  FilmPixel pixel(int x, int y, PixelContext& ctx) const override {
+    const Vec3 c = trace_camera_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f,
+                                       pixel_stream(x, y, 0, ctx), ctx);
+    return FilmPixel{c, 1, 0};
   }
 };
 
 // n x n rays on a regular sub-pixel grid, averaged with equal weights: at the cell centres, or
 // with `jitter` at a keyed random point of each cell (stratified sampling: edges turn from stair
 // steps into fine noise).
-class UniformSampler final : public PixelSampler {
+class UniformSampler final : public PerPixelSampler {
  public:
   UniformSampler(int n, bool jitter) : n_(n), jitter_(jitter) {}
-  Vec3 pixel(int x, int y, PixelContext& ctx) const override {
+
+ private:
+  FilmPixel pixel(int x, int y, PixelContext& ctx) const override {
     Vec3 sum(0.0f);
     const float step = 1.0f / static_cast<float>(n_);
     for (int j = 0; j < n_; ++j)
       for (int i = 0; i < n_; ++i) {
-        const SampleStream samples = sample_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
+        const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
         const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
-        sum += trace_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                            static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx);
+        sum += trace_camera_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
+                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx);
       }
-    return sum * (step * step);
+    return FilmPixel{sum * (step * step), static_cast<uint16_t>(n_ * n_), 0};
   }
 
- private:
   int n_;
   bool jitter_;
 };
 
+std::unique_ptr<PixelSampler> make_centre(const AntialiasSettings&, const TileGrid&) {
+  return std::make_unique<CentreSampler>();
+}
+std::unique_ptr<PixelSampler> make_uniform(const AntialiasSettings& aa, const TileGrid& grid) {
+  if (aa.samples <= 1 && !aa.jitter) return make_centre(aa, grid);  // the same single ray
+  return std::make_unique<UniformSampler>(aa.samples, aa.jitter);
+}
+std::unique_ptr<PixelSampler> make_adaptive(const AntialiasSettings& aa, const TileGrid& grid) {
+  return std::make_unique<AdaptiveSampler>(aa, grid);
+}
+
+struct Entry {
+  const char* name;
+  std::unique_ptr<PixelSampler> (*make)(const AntialiasSettings&, const TileGrid&);
+};
+
+// The name table (render.antialias.mode). Adding a sampler = one file and one line here.
+constexpr Entry kSamplers[] = {{"none", &make_centre}, {"uniform", &make_uniform}, {"adaptive", &make_adaptive}};
+
 }  // namespace
 
-std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings) {
-  if (settings.sampler == PixelSamplerKind::kUniform && settings.samples_per_axis > 1)
-    return std::make_unique<UniformSampler>(settings.samples_per_axis, settings.jitter);
-  return std::make_unique<CentreSampler>();
+std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid) {
+  for (const Entry& e : kSamplers)
+    if (settings.antialias.mode == e.name) return e.make(settings.antialias, grid);
+  return nullptr;
+}
+
+std::vector<std::string> pixel_sampler_names() {
+  std::vector<std::string> names;
+  for (const Entry& e : kSamplers) names.emplace_back(e.name);
+  return names;
 }
 
 }  // namespace rt

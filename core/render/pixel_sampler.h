@@ -1,28 +1,52 @@
 // Pixel samplers choose where in a pixel camera rays go and how their radiance is combined.
-// An open, coarse set behind a small interface (one call per pixel). Adaptive corner
-// subdivision joins "centre" and "uniform" here later.
+// An open, coarse set chosen by name from render.antialias.mode, like integrators: one call
+// per tile, never per ray. A sampler writes colour and its bookkeeping channels into the
+// worker's FilmTile.
 #pragma once
 
+#include <atomic>
 #include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
 
+#include "core/render/film.h"
 #include "core/render/integrator.h"
+#include "core/render/tile_grid.h"
 
 namespace rt {
 
+// What a worker thread hands a sampler: the scene, settings, its own counters, and the flag
+// that stops the render (checked before every pixel).
 struct PixelContext {
   const Scene& scene;
   const RenderSettings& settings;
   const Integrator& integrator;
   RayCounters& counters;
   uint32_t frame = 0;
+  const std::atomic<bool>* cancel = nullptr;
+
+  bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
 };
 
 class PixelSampler {
  public:
   virtual ~PixelSampler() = default;
-  virtual Vec3 pixel(int x, int y, PixelContext& ctx) const = 0;
+  // True when a tile reuses rays that the tiles left of and above it traced along their shared
+  // borders: the renderer then starts a tile only once those two are done (a wavefront).
+  virtual bool shares_tile_borders() const { return false; }
+  // Renders `tile` into `out` (already reset to the tile). Called from several threads at once,
+  // each on its own tile. Returns false when it stopped early because the render was cancelled.
+  virtual bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) = 0;
 };
 
-std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings);
+// The sampler registered under settings.antialias.mode, for an image cut into `grid`;
+// nullptr if no sampler has that name.
+std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid);
+std::vector<std::string> pixel_sampler_names();
+
+// Radiance of one camera ray through continuous pixel position (px, py), with the keyed numbers
+// of its sample (its lens position among them). Counts the camera ray.
+Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx);
 
 }  // namespace rt

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -12,25 +13,30 @@
 
 namespace rt {
 
-RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control,
+RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film, const RenderControl& control,
                    uint32_t frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::unique_ptr<Integrator> integrator = make_integrator(settings.integrator);
   if (!integrator) throw std::invalid_argument("unknown integrator \"" + settings.integrator + "\"");
-  const std::unique_ptr<PixelSampler> sampler = make_pixel_sampler(settings);
+  const TileGrid grid(settings.width, settings.height, settings.tile_size);
+  const std::unique_ptr<PixelSampler> sampler = make_pixel_sampler(settings, grid);
+  if (!sampler) throw std::invalid_argument("unknown anti-aliasing mode \"" + settings.antialias.mode + "\"");
 
-  image = Image(settings.width, settings.height);
-  const int tile = std::max(1, settings.tile_size);
-  const int tiles_x = (settings.width + tile - 1) / tile;
-  const int tiles_y = (settings.height + tile - 1) / tile;
-  const int tile_count = tiles_x * tiles_y;
-  const unsigned threads = std::min<unsigned>(resolve_thread_count(settings.threads), std::max(1, tile_count));
+  film = Film(settings.width, settings.height);
+  // A sampler that shares tile borders needs each tile's left and upper neighbours finished
+  // first: tiles then go out in wavefront order, and a worker waits (rarely) for a neighbour.
+  const bool wavefront = sampler->shares_tile_borders();
+  const std::vector<int> order = grid.order(wavefront);
+  const auto done = std::make_unique<std::atomic<bool>[]>(static_cast<size_t>(grid.count()));
+  const auto wait_for = [&](int tile) {
+    if (tile >= 0) done[static_cast<size_t>(tile)].wait(false, std::memory_order_acquire);
+  };
+  const unsigned threads = std::min<unsigned>(resolve_thread_count(settings.threads), std::max(1, grid.count()));
 
-  std::atomic<int> next_tile{0};
+  std::atomic<int> next{0};
   std::atomic<uint64_t> pixels_done{0}, rays_done{0};
   std::atomic<bool> stopped{false};
-  const auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
   std::vector<RayCounters> counters(threads);
   std::mutex mutex;
   std::condition_variable finished;
@@ -40,22 +46,28 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
-    PixelContext ctx{scene, settings, *integrator, mine, frame};
-    for (int t = next_tile++; t < tile_count && !stopped; t = next_tile++) {
-      const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-      const int x1 = std::min(x0 + tile, settings.width), y1 = std::min(y0 + tile, settings.height);
-      const uint64_t rays_before = mine.total();
-      // Checked before every pixel, so that a cancel is seen within one pixel's work.
-      for (int y = y0; y < y1 && !stopped; ++y)
-        for (int x = x0; x < x1; ++x) {
-          if (cancelled()) {
-            stopped = true;
-            break;
-          }
-          image.at(x, y) = sampler->pixel(x, y, ctx);
+    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel};
+    FilmTile tile_film;
+    // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
+    for (int k = next++; k < grid.count(); k = next++) {
+      const Tile tile = grid.tile(order[static_cast<size_t>(k)]);
+      if (!stopped) {
+        if (wavefront) {
+          wait_for(grid.left(tile.index));
+          wait_for(grid.above(tile.index));
         }
-      pixels_done += static_cast<uint64_t>((x1 - x0) * (y1 - y0));
-      rays_done += mine.total() - rays_before;
+        const uint64_t rays_before = mine.total();
+        tile_film.reset(tile);
+        if (sampler->render_tile(tile, ctx, tile_film)) {
+          film.store(tile_film);
+          pixels_done += static_cast<uint64_t>(tile.width()) * static_cast<uint64_t>(tile.height());
+        } else {
+          stopped = true;
+        }
+        rays_done += mine.total() - rays_before;
+      }
+      done[static_cast<size_t>(tile.index)].store(true, std::memory_order_release);
+      done[static_cast<size_t>(tile.index)].notify_all();
     }
     counters[index] = mine;
     std::lock_guard lock(mutex);
@@ -67,8 +79,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
   for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker, i);
   const auto report = [&] {
     if (control.progress)
-      control.progress(RenderProgress{pixels_done.load(), static_cast<uint64_t>(settings.width) * settings.height,
-                                      rays_done.load(), elapsed()});
+      control.progress(RenderProgress{pixels_done.load(), pixel_count(settings), rays_done.load(), elapsed()});
   };
   {
     std::unique_lock lock(mutex);
@@ -86,6 +97,14 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Image& im
   stats.threads = threads;
   stats.cancelled = stopped;
   for (const RayCounters& c : counters) stats.rays += c;
+  return stats;
+}
+
+RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control,
+                   uint32_t frame) {
+  Film film;
+  const RenderStats stats = render(scene, settings, film, control, frame);
+  image = std::move(film.color);
   return stats;
 }
 

@@ -1,6 +1,7 @@
-// The render entry point: reads a Scene and settings, writes one Image. Tiles are handed to
-// worker threads from a shared counter; every pixel is computed independently, so the image
-// is the same for any thread count and any tile order.
+// The render entry point: reads a Scene and settings, writes one Film (or just its Image).
+// Tiles are handed to worker threads from a shared counter. A pixel's value depends only on
+// the scene, the settings and the keys of its samples, so the image is the same for any thread
+// count, tile size and tile order.
 #pragma once
 
 #include <atomic>
@@ -8,6 +9,7 @@
 #include <functional>
 
 #include "core/image.h"
+#include "core/render/film.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
@@ -38,8 +40,12 @@ struct RenderControl {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-// Renders frame `frame` into `image` (resized to settings.width x settings.height).
-// Throws std::invalid_argument for an unknown integrator name.
+// Renders frame `frame` into `film` (resized to settings.width x settings.height), with the
+// pixel sampler's channels. Throws std::invalid_argument for an unknown integrator or
+// anti-aliasing mode name.
+RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film, const RenderControl& control = {},
+                   uint32_t frame = 0);
+// The same, keeping only the colour.
 RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control = {},
                    uint32_t frame = 0);
 

@@ -90,7 +90,10 @@ TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through 
   const auto integrator = make_integrator("whitted");
   RayCounters counters;
   PixelContext ctx{scene, settings, *integrator, counters, 0};
-  const auto sampler = make_pixel_sampler(settings);
+  const TileGrid grid(settings.width, settings.height, 64);
+  const auto sampler = make_pixel_sampler(settings, grid);
+  FilmTile film;
+  film.reset(grid.tile(0));
 
   const long before = g_allocations.load();
   Rng rng(3);
@@ -103,10 +106,11 @@ TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through 
     hits += scene.intersect(r, h);
     hits += scene.occluded(r);
   }
+  sampler->render_tile(grid.tile(0), ctx, film);
+  const long after = g_allocations.load();
   Vec3 sum(0.0f);
   for (int y = 0; y < settings.height; ++y)
-    for (int x = 0; x < settings.width; ++x) sum += sampler->pixel(x, y, ctx);
-  const long after = g_allocations.load();
+    for (int x = 0; x < settings.width; ++x) sum += film.at(x, y).color;
 
   CHECK(hits > 1000);
   CHECK(counters[RayKind::kShadow] > 0);
@@ -115,4 +119,26 @@ TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through 
   CHECK(counters[RayKind::kGlossy] > 0);
   CHECK(sum.x > 0.0f);
   CHECK(after - before == 0);
+}
+
+TEST_CASE("the adaptive sampler allocates a few buffers per tile, none per ray", "[render][alloc][antialias]") {
+  const Scene scene = small_scene();
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.antialias.mode = "adaptive";
+  settings.antialias.max_depth = 3;
+  const auto integrator = make_integrator("whitted");
+  RayCounters counters;
+  PixelContext ctx{scene, settings, *integrator, counters, 0};
+  const TileGrid grid(settings.width, settings.height, 64);
+  const auto sampler = make_pixel_sampler(settings, grid);
+  FilmTile film;
+  film.reset(grid.tile(0));
+
+  const long before = g_allocations.load();
+  sampler->render_tile(grid.tile(0), ctx, film);
+  const long after = g_allocations.load();
+  CHECK(counters[RayKind::kCamera] > 65u * 49u);  // some pixels were refined
+  CHECK(after - before <= 8);                     // the tile's edge buffers and one pixel lattice
 }

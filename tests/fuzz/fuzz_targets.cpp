@@ -11,6 +11,7 @@
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_traversal.h"
 #include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
 #include "core/render/renderer.h"
 #include "io/gltf_loader.h"
 #include "io/json_document.h"
@@ -22,7 +23,7 @@ namespace {
 
 // Small limits keep each input fast, so the fuzzer explores instead of allocating.
 LoadOptions fuzz_options() {
-  LoadOptions options{1, integrator_names(), LoadLimits{}};
+  LoadOptions options{1, integrator_names(), pixel_sampler_names(), LoadLimits{}};
   options.limits.scene_file_bytes = 1 << 20;
   options.limits.gltf_json_bytes = 1 << 20;
   options.limits.gltf_total_bytes = 4 << 20;
@@ -72,7 +73,8 @@ std::string scene_json(const uint8_t* data, size_t size) {
   if (const std::string problem = scene->bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
   RenderSettings settings = desc->render;
   settings.width = settings.height = 4;
-  settings.samples_per_axis = 1;
+  settings.antialias.samples = 1;
+  settings.antialias.max_depth = std::min(settings.antialias.max_depth, 1);
   settings.threads = 1;
   Image image;
   render(*scene, settings, image);

@@ -7,13 +7,16 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
 #include "io/load_options.h"
 #include "io/scene_loader.h"
 #include "tests/support/test_paths.h"
 
 namespace rt::test {
 
-inline LoadOptions load_options(unsigned threads = 1) { return LoadOptions{threads, integrator_names(), LoadLimits{}}; }
+inline LoadOptions load_options(unsigned threads = 1) {
+  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}};
+}
 
 // Writes `json` to the scratch folder as `name` and loads it; the test stops (showing every
 // diagnostic) if it does not load.

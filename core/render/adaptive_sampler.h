@@ -1,0 +1,59 @@
+// Adaptive anti-aliasing, the proposal's Whitted/Mitchell scheme. A pixel is first sampled at
+// its four corners; a cell whose samples differ by more than the threshold is split into four
+// and each quarter is treated the same way, down to max_depth; the pixel is the area-weighted
+// average of its cells. README ("Anti-aliasing") describes the contrast measure and the keying.
+//
+// positions = corners: samples lie on a lattice of 2^max_depth x 2^max_depth cells per pixel,
+// and a lattice point is traced once however many cells, pixels and tiles it touches. Within a
+// tile, pixels go row by row and each hands its bottom and right edges to the pixels below and
+// right of it; between tiles, a finished tile hands its bottom and right borders to the tiles
+// below and right of it, which the renderer starts only once their left and upper neighbours
+// are done (shares_tile_borders). Each point's random numbers (its lens sample, say) are keyed
+// by its global lattice position, so the image does not depend on threads or tile size.
+//
+// positions = centres: each cell is estimated from the centres of its four quarters instead,
+// which no neighbour shares (the proposal's comparison): four rays a pixel at the least.
+#pragma once
+
+#include <vector>
+
+#include "core/render/pixel_sampler.h"
+
+namespace rt {
+
+// A traced lattice point: its radiance, and what a display shows of it (the contrast measure
+// compares displayed values). known = false: not traced yet.
+struct LatticeSample {
+  Vec3 radiance{0.0f};
+  Vec3 display{0.0f};
+  bool known = false;
+};
+
+class AdaptiveSampler final : public PixelSampler {
+ public:
+  AdaptiveSampler(const AntialiasSettings& settings, const TileGrid& grid);
+
+  bool shares_tile_borders() const override { return positions_ == SamplePositions::kCorners; }
+  bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override;
+
+ private:
+  struct PixelLattice;
+  bool render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out);
+  bool render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out);
+  Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, PixelContext& ctx) const;
+  Vec3 refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const;
+  LatticeSample trace(int64_t x, int64_t y, PixelContext& ctx) const;
+  bool differ(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) const;
+
+  float threshold_;
+  int max_depth_;
+  SamplePositions positions_;
+  int cells_;  // lattice cells per pixel side: 2^max_depth
+  TileGrid grid_;
+  // Lattice points along a finished tile's right and bottom borders, kept until the tile right
+  // of it or below it takes them. Written and read by different threads: the renderer's
+  // wavefront orders every write before its read.
+  std::vector<std::vector<LatticeSample>> right_borders_, bottom_borders_;
+};
+
+}  // namespace rt
