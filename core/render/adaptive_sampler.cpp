@@ -124,9 +124,10 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       if (ctx.cancelled()) return false;
       const int column = (x - tile.x0) * n;
       lattice.start_pixel(x, y);
+      // The corner they share is known to the left neighbour, the row above, both or neither.
       for (int k = 0; k <= n; ++k) {
         lattice.at(k, 0) = above[static_cast<size_t>(column + k)];
-        lattice.at(0, k) = left[static_cast<size_t>(k)];
+        if (left[static_cast<size_t>(k)].known) lattice.at(0, k) = left[static_cast<size_t>(k)];
       }
       FilmPixel& pixel = out.at(x, y);
       pixel.color = refine_corners(lattice, 0, 0, n, 0, ctx);

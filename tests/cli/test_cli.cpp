@@ -155,3 +155,34 @@ TEST_CASE("cli: bench runs on a small model", "[cli][bench]") {
   CHECK_THAT(r.output, Catch::Contains("BVH build") && Catch::Contains("incoherent rays") &&
                            Catch::Contains("shadow rays") && Catch::Contains("render default.json"));
 }
+
+TEST_CASE("cli: --aa picks the anti-aliasing mode; --aa-debug writes and names the refinement images",
+          "[cli][antialias]") {
+  Run r = rtcli("render scenes/default.json -o '" + output_path("cli-aa-bad.png") + "' --aa superb");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--aa: unknown anti-aliasing mode \"superb\"; expected one of: none, "
+                                       "uniform, adaptive"));
+  for (const char* args : {"--aa-depth 5", "--aa-threshold 1.5", "--aa-samples 0", "--aa-samples 17"}) {
+    INFO(args);
+    CHECK(rtcli("render scenes/default.json " + std::string(args)).code == 2);
+  }
+
+  const std::string out = output_path("cli-aa.png");
+  const std::string refined = output_path("cli-aa.aa-refined.png"), depth = output_path("cli-aa.aa-depth.png");
+  for (const std::string& f : {out, refined, depth}) fs::remove(f);
+  r = rtcli("render scenes/antialias.json -o '" + out + "' " + small("--aa adaptive --aa-depth 3 --aa-debug"));
+  REQUIRE(r.code == 0);
+  for (const std::string& f : {out, refined, depth}) {
+    INFO(f);
+    CHECK(read_file(f).substr(1, 3) == "PNG");
+    CHECK_THAT(r.output, Catch::Contains("wrote " + f));
+  }
+  CHECK_THAT(r.output,
+             Catch::Contains("camera rays)") && Catch::Contains("% of pixels refined (anti-aliasing adaptive)"));
+  CHECK(read_file(refined) != read_file(out));  // some pixels are red
+
+  // --aa none on the same scene: one camera ray a pixel, nothing refined.
+  r = rtcli("render scenes/antialias.json -o '" + out + "' " + small("--aa none"));
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("(1.00 camera rays), 0.0% of pixels refined (anti-aliasing none)"));
+}

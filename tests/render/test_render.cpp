@@ -131,6 +131,10 @@ TEST_CASE("golden image: glossy reflection", "[render][golden][glossy]") {
   check_golden("glossy", "scenes/glossy.json", 160, 90);
 }
 
+TEST_CASE("golden image: adaptive anti-aliasing", "[render][golden][antialias]") {
+  check_golden("antialias", "scenes/antialias.json", 200, 112);
+}
+
 TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
   int scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path("scenes"))) {
