@@ -47,6 +47,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0f, 1.0f));
   render_cmd->add_option("--aa-depth", render.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
       ->check(CLI::Range(0, kMaxAdaptiveDepth));
+  render_cmd
+      ->add_option("--aa-positions", render.aa_positions,
+                   "Adaptive anti-aliasing: sample cell corners (shared) or quarter centres")
+      ->check(CLI::IsMember({"corners", "centres"}));
   render_cmd->add_flag("--aa-debug", render.aa_debug,
                        "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");

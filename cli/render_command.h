@@ -1,6 +1,7 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--shadow-samples N]
-//   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D] [--aa-debug] [--quiet]`
+//   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
+//   [--aa-positions corners|centres] [--aa-debug] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,7 @@ struct RenderCommand {
   std::optional<int> aa_samples;
   std::optional<float> aa_threshold;
   std::optional<int> aa_depth;
+  std::optional<std::string> aa_positions;
   bool aa_debug = false;  // also write <output>.aa-refined.png and <output>.aa-depth.png
   bool no_glossy = false;
   bool quiet = false;

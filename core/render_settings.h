@@ -16,7 +16,7 @@ struct AntialiasSettings {
   int samples = 1;            // uniform: samples x samples rays per pixel
   bool jitter = false;        // uniform: a keyed random point in each cell, not its centre
   float threshold = 0.1f;     // adaptive: split a cell whose corners differ by more (displayed values)
-  int max_depth = 2;          // adaptive: splits at most; a pixel becomes up to 2^d x 2^d cells
+  int max_depth = 3;          // adaptive: splits at most; a pixel becomes up to 2^d x 2^d cells
   SamplePositions positions = SamplePositions::kCorners;
 };
 

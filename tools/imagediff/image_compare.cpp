@@ -1,6 +1,7 @@
 #include "tools/imagediff/image_compare.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace rt {
@@ -11,18 +12,22 @@ ImageDifference compare_images(const Rgb8Image& a, const Rgb8Image& b, int thres
     d.same_size = false;
     return d;
   }
-  long long sum = 0;
+  long long sum = 0, sum_squares = 0;
   for (size_t i = 0; i < a.rgb.size(); i += 3) {
     int pixel_max = 0;
     for (size_t c = 0; c < 3; ++c) {
       const int diff = std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c]));
       pixel_max = std::max(pixel_max, diff);
       sum += diff;
+      sum_squares += diff * diff;
     }
     d.max_channel = std::max(d.max_channel, pixel_max);
     d.pixels_over += pixel_max > threshold;
   }
-  d.mean_channel = a.rgb.empty() ? 0.0 : static_cast<double>(sum) / static_cast<double>(a.rgb.size());
+  if (!a.rgb.empty()) {
+    d.mean_channel = static_cast<double>(sum) / static_cast<double>(a.rgb.size());
+    d.rms_channel = std::sqrt(static_cast<double>(sum_squares) / static_cast<double>(a.rgb.size()));
+  }
   return d;
 }
 

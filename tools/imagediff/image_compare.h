@@ -11,6 +11,7 @@ struct ImageDifference {
   bool same_size = true;
   int max_channel = 0;        // largest absolute difference of any channel, in levels of 255
   double mean_channel = 0.0;  // mean absolute channel difference
+  double rms_channel = 0.0;   // root mean square channel difference
   size_t pixels_over = 0;     // pixels with any channel differing by more than the threshold
 };
 
