@@ -129,7 +129,8 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.aa_threshold) settings.antialias.threshold = *cmd.aa_threshold;
   if (cmd.aa_depth) settings.antialias.max_depth = *cmd.aa_depth;
   if (cmd.aa_positions)
-    settings.antialias.positions = *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
+    settings.antialias.positions =
+        *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,

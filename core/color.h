@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/math.h"
 
@@ -18,5 +19,11 @@ inline float srgb_encode(float linear) {
 inline Vec3 srgb_encode(const Vec3& linear) {
   return Vec3(srgb_encode(linear.x), srgb_encode(linear.y), srgb_encode(linear.z));
 }
+
+// The 8-bit code of srgb_encode(linear), rounded to the nearest of 256 levels: what a PNG holds.
+// Through an exact table (a code per bucket of floats plus one comparison, no pow); tests check
+// it against srgb8_by_formula for every level.
+uint8_t srgb8(float linear);
+uint8_t srgb8_by_formula(float linear);
 
 }  // namespace rt

@@ -16,11 +16,8 @@ struct Rgb8Image {
 };
 
 // Tone mapping rule for 8-bit output: each linear channel is clamped to [0, 1] (NaN counts as 0),
-// encoded with the sRGB transfer function and rounded to the nearest of 256 levels.
-// Encoded through an exact table (a binary search, no pow per channel).
-uint8_t encode_srgb8(float linear);
+// encoded with the sRGB transfer function and rounded to the nearest of 256 levels (srgb8 in
+// core/color.h, an exact table).
 Rgb8Image encode_srgb8(const Image& image);
-// The same rule by its formula, for tests of the table.
-uint8_t encode_srgb8_reference(float linear);
 
 }  // namespace rt

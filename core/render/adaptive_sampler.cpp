@@ -27,31 +27,49 @@ Vec3 average(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { retur
 
 }  // namespace
 
-// The (cells + 1)^2 lattice points of one pixel, and which of them its cells used.
+// The (cells + 1)^2 lattice points of one pixel, and which of them its cells used. A point
+// belongs to the current pixel when its stamp is the pixel's generation, so starting a pixel
+// clears nothing.
 struct AdaptiveSampler::PixelLattice {
   int x0 = 0, y0 = 0;  // the pixel's top-left corner in key units
   int side = 0;        // points per side: cells + 1
   int step = 0;        // key units between neighbouring points
   int deepest = 0;     // the deepest cell the pixel's value averages
+  int used = 0;        // points its cells used
+  uint32_t generation = 0;
   std::vector<LatticeSample> points;
-  std::vector<uint8_t> used;
+  std::vector<uint32_t> known, counted;  // stamps: traced or handed in; counted in `used`
 
-  PixelLattice(int cells) : side(cells + 1), step(kKeyCells / cells) {
-    points.resize(static_cast<size_t>(side) * static_cast<size_t>(side));
-    used.resize(points.size());
+  explicit PixelLattice(int cells) : side(cells + 1), step(kKeyCells / cells) {
+    const size_t n = static_cast<size_t>(side) * static_cast<size_t>(side);
+    points.resize(n);
+    known.resize(n, 0);
+    counted.resize(n, 0);
   }
-  LatticeSample& at(int i, int j) { return points[static_cast<size_t>(j) * static_cast<size_t>(side) + i]; }
+  size_t index(int i, int j) const { return static_cast<size_t>(j) * static_cast<size_t>(side) + i; }
   void start_pixel(int x, int y) {
     x0 = x * kKeyCells;
     y0 = y * kKeyCells;
-    std::fill(points.begin(), points.end(), LatticeSample{});
-    std::fill(used.begin(), used.end(), uint8_t{0});
-    deepest = 0;
+    deepest = used = 0;
+    ++generation;
+  }
+  // A point a neighbour traced (ignored if it did not).
+  void hand_in(int i, int j, const LatticeSample& s) {
+    if (!s.known) return;
+    points[index(i, j)] = s;
+    known[index(i, j)] = generation;
+  }
+  // The point for a neighbour: unknown unless this pixel traced it or was handed it. Written in
+  // place: building a temporary LatticeSample stalls on store forwarding (measured: half the
+  // sampler's own time).
+  void hand_out(int i, int j, LatticeSample& to) const {
+    if (known[index(i, j)] == generation) to = points[index(i, j)];
+    else to.known = false;
   }
 };
 
 AdaptiveSampler::AdaptiveSampler(const AntialiasSettings& settings, const TileGrid& grid)
-    : threshold_(settings.threshold),
+    : threshold_levels_(settings.threshold * 255.0f),
       max_depth_(std::clamp(settings.max_depth, 0, kMaxAdaptiveDepth)),
       positions_(settings.positions),
       cells_(1 << max_depth_),
@@ -70,32 +88,42 @@ LatticeSample AdaptiveSampler::trace(int64_t x, int64_t y, PixelContext& ctx) co
   const SampleStream samples(s.seed, ctx.frame, point, 0);
   const Vec3 radiance =
       trace_camera_sample(static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, ctx);
-  return LatticeSample{radiance, srgb_encode(radiance), true};
+  return LatticeSample{radiance, {srgb8(radiance.x), srgb8(radiance.y), srgb8(radiance.z)}, true};
 }
 
 // The contrast measure: the largest difference between the four samples' displayed values in
-// any one channel (sRGB-encoded, clamped to [0, 1]), compared with the threshold.
-bool AdaptiveSampler::differ(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) const {
-  const Vec3 lo = glm::min(glm::min(a, b), glm::min(c, d));
-  const Vec3 hi = glm::max(glm::max(a, b), glm::max(c, d));
-  const Vec3 range = hi - lo;
-  return std::max(range.x, std::max(range.y, range.z)) > threshold_;
+// any one channel (8-bit sRGB codes), compared with the threshold.
+bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c,
+                             const LatticeSample& d) const {
+  int range = 0;
+  for (size_t k = 0; k < 3; ++k) {
+    const int lo = std::min(std::min(a.display[k], b.display[k]), std::min(c.display[k], d.display[k]));
+    const int hi = std::max(std::max(a.display[k], b.display[k]), std::max(c.display[k], d.display[k]));
+    range = std::max(range, hi - lo);
+  }
+  return static_cast<float>(range) > threshold_levels_;
 }
 
 // The cell with top-left lattice point (i, j) and `size` lattice steps per side, at `depth`.
 Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int size, int depth,
                                      PixelContext& ctx) const {
   const auto corner = [&](int ci, int cj) -> const LatticeSample& {
-    LatticeSample& p = lattice.at(ci, cj);
-    if (!p.known) p = trace(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, ctx);
-    lattice.used[static_cast<size_t>(cj) * static_cast<size_t>(lattice.side) + ci] = 1;
-    return p;
+    const size_t k = lattice.index(ci, cj);
+    if (lattice.known[k] != lattice.generation) {
+      lattice.points[k] = trace(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, ctx);
+      lattice.known[k] = lattice.generation;
+    }
+    if (lattice.counted[k] != lattice.generation) {
+      lattice.counted[k] = lattice.generation;
+      ++lattice.used;
+    }
+    return lattice.points[k];
   };
   const LatticeSample& a = corner(i, j);
   const LatticeSample& b = corner(i + size, j);
   const LatticeSample& c = corner(i, j + size);
   const LatticeSample& d = corner(i + size, j + size);
-  if (size == 1 || !differ(a.display, b.display, c.display, d.display)) {
+  if (size == 1 || !differ(a, b, c, d)) {
     lattice.deepest = std::max(lattice.deepest, depth);
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
@@ -126,16 +154,16 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       lattice.start_pixel(x, y);
       // The corner they share is known to the left neighbour, the row above, both or neither.
       for (int k = 0; k <= n; ++k) {
-        lattice.at(k, 0) = above[static_cast<size_t>(column + k)];
-        if (left[static_cast<size_t>(k)].known) lattice.at(0, k) = left[static_cast<size_t>(k)];
+        lattice.hand_in(k, 0, above[static_cast<size_t>(column + k)]);
+        lattice.hand_in(0, k, left[static_cast<size_t>(k)]);
       }
       FilmPixel& pixel = out.at(x, y);
       pixel.color = refine_corners(lattice, 0, 0, n, 0, ctx);
       pixel.depth = static_cast<uint8_t>(lattice.deepest);
-      pixel.samples = static_cast<uint16_t>(std::count(lattice.used.begin(), lattice.used.end(), uint8_t{1}));
+      pixel.samples = static_cast<uint16_t>(lattice.used);
       for (int k = 0; k <= n; ++k) {
-        above[static_cast<size_t>(column + k)] = lattice.at(k, n);
-        left[static_cast<size_t>(k)] = lattice.at(n, k);
+        lattice.hand_out(k, n, above[static_cast<size_t>(column + k)]);
+        lattice.hand_out(n, k, left[static_cast<size_t>(k)]);
       }
     }
     std::copy_n(left.begin(), n + 1, right_border.begin() + row);
@@ -154,7 +182,7 @@ Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, FilmPixe
   const LatticeSample c = trace(x + q, y + 3 * q, ctx);
   const LatticeSample d = trace(x + 3 * q, y + 3 * q, ctx);
   pixel.samples = static_cast<uint16_t>(pixel.samples + 4);
-  if (depth == max_depth_ || !differ(a.display, b.display, c.display, d.display)) {
+  if (depth == max_depth_ || !differ(a, b, c, d)) {
     pixel.depth = static_cast<uint8_t>(std::max<int>(pixel.depth, depth));
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }

@@ -15,17 +15,19 @@
 // which no neighbour shares (the proposal's comparison): four rays a pixel at the least.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "core/render/pixel_sampler.h"
 
 namespace rt {
 
-// A traced lattice point: its radiance, and what a display shows of it (the contrast measure
-// compares displayed values). known = false: not traced yet.
+// A traced lattice point: its radiance, and what a display shows of it, as 8-bit sRGB codes
+// (the contrast measure compares displayed values). known = false: not traced yet.
 struct LatticeSample {
   Vec3 radiance{0.0f};
-  Vec3 display{0.0f};
+  std::array<uint8_t, 3> display{};
   bool known = false;
 };
 
@@ -43,9 +45,9 @@ class AdaptiveSampler final : public PixelSampler {
   Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, PixelContext& ctx) const;
   Vec3 refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const;
   LatticeSample trace(int64_t x, int64_t y, PixelContext& ctx) const;
-  bool differ(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) const;
+  bool differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c, const LatticeSample& d) const;
 
-  float threshold_;
+  float threshold_levels_;  // the threshold in levels of 255
   int max_depth_;
   SamplePositions positions_;
   int cells_;  // lattice cells per pixel side: 2^max_depth

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/color.h"
 #include "core/rng.h"
 #include "io/png_encoder.h"
 #include "io/png_file.h"
@@ -20,22 +21,22 @@ TEST_CASE("sRGB table encodes exactly as the formula", "[io][png]") {
   for (uint32_t bits = 0; bits <= 0x3f800000u; bits += 4099) {
     float f;
     std::memcpy(&f, &bits, sizeof f);
-    REQUIRE(encode_srgb8(f) == encode_srgb8_reference(f));
+    REQUIRE(srgb8(f) == srgb8_by_formula(f));
     const float below = std::nextafter(f, 0.0f), above = std::nextafter(f, 2.0f);
-    REQUIRE(encode_srgb8(below) == encode_srgb8_reference(below));
-    REQUIRE(encode_srgb8(above) == encode_srgb8_reference(above));
-    seen[encode_srgb8(f)] = true;
+    REQUIRE(srgb8(below) == srgb8_by_formula(below));
+    REQUIRE(srgb8(above) == srgb8_by_formula(above));
+    seen[srgb8(f)] = true;
   }
   CHECK(std::count(std::begin(seen), std::end(seen), true) == 256);  // every level was reached
   Rng rng(3);
   for (int i = 0; i < 1'000'000; ++i) {
     const float f = rng.next_float() * 1.2f - 0.1f;
-    REQUIRE(encode_srgb8(f) == encode_srgb8_reference(f));
+    REQUIRE(srgb8(f) == srgb8_by_formula(f));
   }
-  CHECK(encode_srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
-  CHECK(encode_srgb8(0.0031308f) == 10);
-  CHECK(encode_srgb8(INFINITY) == 255);
-  CHECK(encode_srgb8(-INFINITY) == 0);
+  CHECK(srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
+  CHECK(srgb8(0.0031308f) == 10);
+  CHECK(srgb8(INFINITY) == 255);
+  CHECK(srgb8(-INFINITY) == 0);
 }
 
 TEST_CASE("PNG encoder: read back equal, bytes independent of the thread count", "[io][png]") {

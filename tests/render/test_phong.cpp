@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "core/color.h"
 #include "core/lights/light.h"
 #include "core/material.h"
 #include "io/rgb8_image.h"
@@ -35,11 +36,11 @@ TEST_CASE("point light: quadratic attenuation 1 / (c0 + c1 d + c2 d^2)", "[light
 }
 
 TEST_CASE("sRGB encoding: clamp, transfer curve, rounding", "[io][image]") {
-  CHECK(encode_srgb8(0.0f) == 0);
-  CHECK(encode_srgb8(1.0f) == 255);
-  CHECK(encode_srgb8(7.0f) == 255);  // clamped
-  CHECK(encode_srgb8(-1.0f) == 0);
-  CHECK(encode_srgb8(std::nanf("")) == 0);
-  CHECK(encode_srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
-  CHECK(encode_srgb8(0.002f) == 7);  // linear segment: 12.92 * 0.002 * 255 = 6.6
+  CHECK(srgb8(0.0f) == 0);
+  CHECK(srgb8(1.0f) == 255);
+  CHECK(srgb8(7.0f) == 255);  // clamped
+  CHECK(srgb8(-1.0f) == 0);
+  CHECK(srgb8(std::nanf("")) == 0);
+  CHECK(srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
+  CHECK(srgb8(0.002f) == 7);  // linear segment: 12.92 * 0.002 * 255 = 6.6
 }
