@@ -16,6 +16,13 @@ inline float srgb_encode(float linear) {
   return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
+// The inverse: a displayed (sRGB-encoded) value in [0, 1] to linear. Colour textures are stored
+// encoded and decoded with this when loaded.
+inline float srgb_decode(float encoded) {
+  const float c = std::isnan(encoded) ? 0.0f : std::clamp(encoded, 0.0f, 1.0f);
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 inline Vec3 srgb_encode(const Vec3& linear) {
   return Vec3(srgb_encode(linear.x), srgb_encode(linear.y), srgb_encode(linear.z));
 }

@@ -1,0 +1,83 @@
+#include "core/texture/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace rt {
+namespace {
+
+// Texel coordinate of u on an axis of n texels, kept in a range where float-to-int is defined:
+// clamping moves u into [-1, 2]; repeat and mirror move it into [0, 2) by whole periods of both.
+float texel_coordinate(float u, int n, TextureWrap wrap) {
+  if (!std::isfinite(u)) u = 0.0f;
+  u = wrap == TextureWrap::kClamp ? std::clamp(u, -1.0f, 2.0f) : u - 2.0f * std::floor(0.5f * u);
+  return u * static_cast<float>(n);
+}
+
+}  // namespace
+
+Texture::Texture(int width, int height, std::vector<Vec3> texels) {
+  levels_.push_back(Level{width, height, std::move(texels)});
+  // Each level averages 2 x 2 texels of the one above (a box filter); an odd last row or column
+  // is folded into its neighbour by clamping.
+  while (levels_.back().width > 1 || levels_.back().height > 1) {
+    const Level& up = levels_.back();
+    Level down{std::max(1, up.width / 2), std::max(1, up.height / 2), {}};
+    down.texels.resize(static_cast<size_t>(down.width) * static_cast<size_t>(down.height));
+    for (int y = 0; y < down.height; ++y)
+      for (int x = 0; x < down.width; ++x) {
+        const auto at = [&](int i, int j) -> const Vec3& {
+          i = std::min(i, up.width - 1);
+          j = std::min(j, up.height - 1);
+          return up.texels[static_cast<size_t>(j) * static_cast<size_t>(up.width) + static_cast<size_t>(i)];
+        };
+        down.texels[static_cast<size_t>(y) * static_cast<size_t>(down.width) + static_cast<size_t>(x)] =
+            0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+      }
+    levels_.push_back(std::move(down));
+  }
+}
+
+Vec3 Texture::nearest(Vec2 uv, TextureWrap wrap, int level) const {
+  const int w = width(level), h = height(level);
+  const int x = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.x, w, wrap))), w, wrap);
+  const int y = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.y, h, wrap))), h, wrap);
+  return texel(x, y, level);
+}
+
+Vec3 Texture::bilinear(Vec2 uv, TextureWrap wrap, int level) const {
+  const int w = width(level), h = height(level);
+  // Texel centres sit at half-integers: shift by half a texel so that they become integers.
+  const float x = texel_coordinate(uv.x, w, wrap) - 0.5f, y = texel_coordinate(uv.y, h, wrap) - 0.5f;
+  const float x0 = std::floor(x), y0 = std::floor(y);
+  const float fx = x - x0, fy = y - y0;
+  const int i0 = wrap_texel(static_cast<int>(x0), w, wrap), i1 = wrap_texel(static_cast<int>(x0) + 1, w, wrap);
+  const int j0 = wrap_texel(static_cast<int>(y0), h, wrap), j1 = wrap_texel(static_cast<int>(y0) + 1, h, wrap);
+  const Vec3 top = (1.0f - fx) * texel(i0, j0, level) + fx * texel(i1, j0, level);
+  const Vec3 bottom = (1.0f - fx) * texel(i0, j1, level) + fx * texel(i1, j1, level);
+  return (1.0f - fy) * top + fy * bottom;
+}
+
+float Texture::mip_level(float footprint) const {
+  const float texels = footprint * static_cast<float>(std::max(width(), height()));
+  if (!(texels > 1.0f)) return 0.0f;  // also NaN
+  return std::min(std::log2(texels), static_cast<float>(level_count() - 1));
+}
+
+Vec3 Texture::sample(Vec2 uv, TextureWrap wrap, TextureFilter filter, float footprint) const {
+  switch (filter) {
+    case TextureFilter::kNearest: return nearest(uv, wrap);
+    case TextureFilter::kTrilinear: {
+      const float level = mip_level(footprint);
+      const int lower = static_cast<int>(level);
+      const float t = level - static_cast<float>(lower);
+      if (t == 0.0f || lower + 1 >= level_count()) return bilinear(uv, wrap, lower);
+      return (1.0f - t) * bilinear(uv, wrap, lower) + t * bilinear(uv, wrap, lower + 1);
+    }
+    case TextureFilter::kBilinear:
+    default: return bilinear(uv, wrap);
+  }
+}
+
+}  // namespace rt

@@ -1,0 +1,74 @@
+#include "io/texture_file.h"
+
+#include <stb_image.h>
+
+#include <array>
+#include <memory>
+
+#include "core/color.h"
+#include "io/input_file.h"
+
+namespace rt {
+namespace {
+
+constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
+
+std::string stb_reason() { return stbi_failure_reason() ? stbi_failure_reason() : "unknown error"; }
+
+struct StbFree {
+  void operator()(void* p) const { stbi_image_free(p); }
+};
+
+}  // namespace
+
+std::optional<Texture> load_texture(const std::string& path, TextureEncoding encoding, uint64_t max_texels,
+                                    std::string& error) {
+  const auto bytes = read_input_bytes(path, kMaxFileBytes, error);
+  if (!bytes) {
+    error = "cannot read \"" + path + "\": " + error;
+    return std::nullopt;
+  }
+  const auto* data = bytes->data();
+  const int size = static_cast<int>(bytes->size());
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
+    error = "cannot read \"" + path + "\" as an image (PNG or JPEG): " + stb_reason();
+    return std::nullopt;
+  }
+  const uint64_t texels = static_cast<uint64_t>(w) * static_cast<uint64_t>(h);
+  if (w <= 0 || h <= 0 || texels > max_texels) {
+    error = "expected an image of 1 to " + std::to_string(max_texels) + " texels, found " + std::to_string(w) + " x " +
+            std::to_string(h) + " in \"" + path + "\"";
+    return std::nullopt;
+  }
+
+  std::vector<Vec3> linear(static_cast<size_t>(texels));
+  if (stbi_is_16_bit_from_memory(data, size)) {
+    const std::unique_ptr<uint16_t, StbFree> pixels(stbi_load_16_from_memory(data, size, &w, &h, &channels, 3));
+    if (!pixels) {
+      error = "cannot decode \"" + path + "\": " + stb_reason();
+      return std::nullopt;
+    }
+    for (size_t i = 0; i < linear.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float v = static_cast<float>(pixels.get()[3 * i + static_cast<size_t>(c)]) / 65535.0f;
+        linear[i][c] = encoding == TextureEncoding::kSrgb ? srgb_decode(v) : v;
+      }
+  } else {
+    const std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &w, &h, &channels, 3));
+    if (!pixels) {
+      error = "cannot decode \"" + path + "\": " + stb_reason();
+      return std::nullopt;
+    }
+    std::array<float, 256> decode{};  // one entry per 8-bit code
+    for (int v = 0; v < 256; ++v) {
+      const float f = static_cast<float>(v) / 255.0f;
+      decode[static_cast<size_t>(v)] = encoding == TextureEncoding::kSrgb ? srgb_decode(f) : f;
+    }
+    for (size_t i = 0; i < linear.size(); ++i)
+      for (int c = 0; c < 3; ++c) linear[i][c] = decode[pixels.get()[3 * i + static_cast<size_t>(c)]];
+  }
+  return Texture(w, h, std::move(linear));
+}
+
+}  // namespace rt

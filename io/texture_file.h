@@ -1,0 +1,21 @@
+// Texture image files (PNG, JPEG) through stb_image: 8- or 16-bit, grey, grey + alpha, RGB or
+// RGBA (alpha is not used yet), decoded to linear RGB. Colour textures are stored sRGB-encoded and
+// decoded; height and normal maps hold data, not colour, and are read as they are.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/texture/texture.h"
+
+namespace rt {
+
+enum class TextureEncoding { kSrgb, kLinear };
+
+// A file that is missing, unreadable, not an image, zero-sized or over `max_texels` (checked from
+// its header, before decoding) gives nullopt and an error saying what was found.
+std::optional<Texture> load_texture(const std::string& path, TextureEncoding encoding, uint64_t max_texels,
+                                    std::string& error);
+
+}  // namespace rt
