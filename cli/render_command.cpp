@@ -83,6 +83,25 @@ std::string beside(const std::string& output, const std::string& suffix) {
   return p.string();
 }
 
+// The scene's render settings with the command line's overrides applied.
+RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
+  if (cmd.width) s.width = *cmd.width;
+  if (cmd.height) s.height = *cmd.height;
+  if (cmd.seed) s.seed = *cmd.seed;
+  if (cmd.threads) s.threads = *cmd.threads;
+  if (cmd.integrator) s.integrator = *cmd.integrator;
+  if (cmd.glossy_samples) s.glossy_samples = *cmd.glossy_samples;
+  if (cmd.no_glossy) s.glossy = false;
+  if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
+  if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
+  if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
+  if (cmd.aa_threshold) s.antialias.threshold = *cmd.aa_threshold;
+  if (cmd.aa_depth) s.antialias.max_depth = *cmd.aa_depth;
+  if (cmd.aa_positions)
+    s.antialias.positions = *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
+  return s;
+}
+
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
@@ -115,22 +134,7 @@ int run_render(const RenderCommand& cmd) {
   }
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
 
-  RenderSettings settings = loaded->description.render;
-  if (cmd.width) settings.width = *cmd.width;
-  if (cmd.height) settings.height = *cmd.height;
-  if (cmd.seed) settings.seed = *cmd.seed;
-  if (cmd.threads) settings.threads = *cmd.threads;
-  if (cmd.integrator) settings.integrator = *cmd.integrator;
-  if (cmd.glossy_samples) settings.glossy_samples = *cmd.glossy_samples;
-  if (cmd.no_glossy) settings.glossy = false;
-  if (cmd.shadow_samples) settings.shadow_samples = *cmd.shadow_samples;
-  if (cmd.aa_mode) settings.antialias.mode = *cmd.aa_mode;
-  if (cmd.aa_samples) settings.antialias.samples = *cmd.aa_samples;
-  if (cmd.aa_threshold) settings.antialias.threshold = *cmd.aa_threshold;
-  if (cmd.aa_depth) settings.antialias.max_depth = *cmd.aa_depth;
-  if (cmd.aa_positions)
-    settings.antialias.positions =
-        *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
+  const RenderSettings settings = with_overrides(loaded->description.render, cmd);
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
