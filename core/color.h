@@ -23,10 +23,6 @@ inline float srgb_decode(float encoded) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-inline Vec3 srgb_encode(const Vec3& linear) {
-  return Vec3(srgb_encode(linear.x), srgb_encode(linear.y), srgb_encode(linear.z));
-}
-
 // The 8-bit code of srgb_encode(linear), rounded to the nearest of 256 levels: what a PNG holds.
 // Through an exact table (a code per bucket of floats plus one comparison, no pow); tests check
 // it against srgb8_by_formula for every level.

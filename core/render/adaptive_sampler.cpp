@@ -193,14 +193,11 @@ Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, FilmPixe
 }
 
 bool AdaptiveSampler::render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out) {
-  for (int y = tile.y0; y < tile.y1; ++y)
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      if (ctx.cancelled()) return false;
-      FilmPixel pixel;
-      pixel.color = refine_centres(x * kKeyCells, y * kKeyCells, kKeyCells, 0, pixel, ctx);
-      out.at(x, y) = pixel;
-    }
-  return true;
+  return render_pixels(tile, ctx, out, [&](int x, int y) {
+    FilmPixel pixel;
+    pixel.color = refine_centres(x * kKeyCells, y * kKeyCells, kKeyCells, 0, pixel, ctx);
+    return pixel;
+  });
 }
 
 }  // namespace rt

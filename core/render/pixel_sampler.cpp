@@ -26,12 +26,7 @@ SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx
 class PerPixelSampler : public PixelSampler {
  public:
   bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override {
-    for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) {
-        if (ctx.cancelled()) return false;
-        out.at(x, y) = pixel(x, y, ctx);
-      }
-    return true;
+    return render_pixels(tile, ctx, out, [&](int x, int y) { return pixel(x, y, ctx); });
   }
 
  private:

@@ -45,6 +45,18 @@ class PixelSampler {
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid);
 std::vector<std::string> pixel_sampler_names();
 
+// Fills a tile pixel by pixel with pixel(x, y) -> FilmPixel, for samplers whose pixels are
+// independent; stops (returning false) once the render is cancelled.
+template <class PixelFn>
+bool render_pixels(const Tile& tile, const PixelContext& ctx, FilmTile& out, PixelFn&& pixel) {
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      if (ctx.cancelled()) return false;
+      out.at(x, y) = pixel(x, y);
+    }
+  return true;
+}
+
 // Radiance of one camera ray through continuous pixel position (px, py), with the keyed numbers
 // of its sample (its lens position among them). Counts the camera ray.
 Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx);

@@ -2,6 +2,7 @@
 // a counting one, then traces rays through the BVH and shades pixels, and compares the counts.
 #include <atomic>
 #include <cstdlib>
+#include <memory>
 #include <new>
 
 #include <catch2/catch.hpp>
@@ -79,21 +80,35 @@ Scene small_scene() {
   return scene;
 }
 
+// Everything a worker thread needs to render one 64 x 48 tile of small_scene() with `antialias`,
+// built (and its allocations made) before a test starts counting.
+struct OneTile {
+  Scene scene = small_scene();
+  RenderSettings settings;
+  std::unique_ptr<Integrator> integrator = make_integrator("whitted");
+  RayCounters counters;
+  PixelContext ctx{scene, settings, *integrator, counters, 0};
+  TileGrid grid{64, 48, 64};
+  std::unique_ptr<PixelSampler> sampler;
+  FilmTile film;
+
+  explicit OneTile(const AntialiasSettings& antialias) {
+    settings.width = grid.width;
+    settings.height = grid.height;
+    settings.antialias = antialias;
+    sampler = make_pixel_sampler(settings, grid);
+    film.reset(grid.tile(0));
+  }
+  void render() { sampler->render_tile(grid.tile(0), ctx, film); }
+};
+
 }  // namespace
 
 TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through glass) allocate nothing per ray",
           "[bvh][alloc]") {
-  const Scene scene = small_scene();
-  RenderSettings settings;
-  settings.width = 64;
-  settings.height = 48;
-  const auto integrator = make_integrator("whitted");
-  RayCounters counters;
-  PixelContext ctx{scene, settings, *integrator, counters, 0};
-  const TileGrid grid(settings.width, settings.height, 64);
-  const auto sampler = make_pixel_sampler(settings, grid);
-  FilmTile film;
-  film.reset(grid.tile(0));
+  OneTile t{AntialiasSettings{}};
+  const Scene& scene = t.scene;
+  const RayCounters& counters = t.counters;
 
   const long before = g_allocations.load();
   Rng rng(3);
@@ -106,11 +121,11 @@ TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through 
     hits += scene.intersect(r, h);
     hits += scene.occluded(r);
   }
-  sampler->render_tile(grid.tile(0), ctx, film);
+  t.render();
   const long after = g_allocations.load();
   Vec3 sum(0.0f);
-  for (int y = 0; y < settings.height; ++y)
-    for (int x = 0; x < settings.width; ++x) sum += film.at(x, y).color;
+  for (int y = 0; y < t.grid.height; ++y)
+    for (int x = 0; x < t.grid.width; ++x) sum += t.film.at(x, y).color;
 
   CHECK(hits > 1000);
   CHECK(counters[RayKind::kShadow] > 0);
@@ -122,22 +137,14 @@ TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through 
 }
 
 TEST_CASE("the adaptive sampler allocates a few buffers per tile, none per ray", "[render][alloc][antialias]") {
-  const Scene scene = small_scene();
-  RenderSettings settings;
-  settings.width = 64;
-  settings.height = 48;
-  settings.antialias.mode = "adaptive";
-  settings.antialias.max_depth = 3;
-  const auto integrator = make_integrator("whitted");
-  RayCounters counters;
-  PixelContext ctx{scene, settings, *integrator, counters, 0};
-  const TileGrid grid(settings.width, settings.height, 64);
-  const auto sampler = make_pixel_sampler(settings, grid);
-  FilmTile film;
-  film.reset(grid.tile(0));
+  AntialiasSettings adaptive;
+  adaptive.mode = "adaptive";
+  adaptive.max_depth = 3;
+  OneTile t{adaptive};
+  const RayCounters& counters = t.counters;
 
   const long before = g_allocations.load();
-  sampler->render_tile(grid.tile(0), ctx, film);
+  t.render();
   const long after = g_allocations.load();
   CHECK(counters[RayKind::kCamera] > 65u * 49u);  // some pixels were refined
   CHECK(after - before <= 8);                     // the tile's edge buffers and one pixel lattice
