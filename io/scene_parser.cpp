@@ -21,9 +21,8 @@ constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
 // render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
 // the scene's parameters.
 void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr, const std::vector<std::string>& modes,
-                     RenderSettings& s) {
+                     AntialiasSettings& aa) {
   ObjectReader a(r, v, ptr);
-  AntialiasSettings& aa = s.antialias;
   if (const Json* mode = a.get("mode", true, join_quoted(modes))) {
     if (const auto k = read_choice(r, *mode, a.child("mode"), modes)) aa.mode = modes[*k];
   }
@@ -53,7 +52,8 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
     if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))
       s.integrator = options.integrators[*k];
   }
-  if (const Json* aa = o.get("antialias")) parse_antialias(r, *aa, o.child("antialias"), options.pixel_samplers, s);
+  if (const Json* aa = o.get("antialias"))
+    parse_antialias(r, *aa, o.child("antialias"), options.pixel_samplers, s.antialias);
   o.finish();
   if (pixel_count(s) > kMaxPixels) {
     r.error("/render",
