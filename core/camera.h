@@ -63,6 +63,9 @@ struct Camera {
     return r;
   }
 
+  // The angle one pixel subtends at the centre of a `height`-pixel image (ray-cone spread).
+  float pixel_spread(int height) const { return 2.0f * tan_half_fov / static_cast<float>(height); }
+
   // The same ray through a thin lens: `lens` in [0, 1)^2 picks the point of the lens disk
   // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0 returns the
   // pinhole ray exactly.

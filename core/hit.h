@@ -27,14 +27,25 @@ struct SurfacePatch {
   Vec3 dpdv{0.0f, 1.0f, 0.0f};
 };
 
+// Texture coordinates with their tangent frame: dP/du and dP/dv in world space.
+struct UvFrame {
+  Vec2 uv{0.0f};
+  Vec3 dpdu{1.0f, 0.0f, 0.0f};
+  Vec3 dpdv{0.0f, 1.0f, 0.0f};
+};
+
 // Everything shading needs about the closest hit, in world space.
 struct SurfaceInteraction {
   Vec3 position{0.0f};
   Vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // unit, outward (from the winding for triangles)
   Vec3 shading_normal{0.0f, 0.0f, 1.0f};    // unit, interpolated for smooth meshes
-  Vec2 uv{0.0f};
-  Vec3 dpdu{1.0f, 0.0f, 0.0f};
-  Vec3 dpdv{0.0f, 1.0f, 0.0f};
+  // [0]: the shape's own coordinates, or a mesh's TEXCOORD_0; [1]: a mesh's TEXCOORD_1 (a copy
+  // of [0] when it has none).
+  UvFrame texcoord[2];
+  Vec4 tangent{0.0f};  // a mesh's interpolated TANGENT attribute (xyz, handedness w); w = 0: none
+  // The hit in the shape's (or mesh instance's) object space, for the explicit projections.
+  Vec3 object_position{0.0f};
+  Mat3 object_from_world{1.0f};  // linear part of the world-to-object transform
   uint32_t material = 0;
   bool front_face = true;  // the ray arrived from the outward side
 };

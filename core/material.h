@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "core/texture/texture_mapping.h"
 
 namespace rt {
 
@@ -16,6 +17,12 @@ struct Material {
   float ior = 1.5f;         // index of refraction of the inside, > 0; used where transmission > 0
   Vec3 absorption{0.0f};    // Beer-Lambert coefficient per unit distance inside, >= 0
   float glossy = 0.0f;      // blur-square width of reflections (0 = perfect mirror), >= 0
+  // Surface detail (README, "Textures"). A colour texture replaces kd and a specular texture ks:
+  // kd and ks then multiply them, and default to 1 when the scene does not give them.
+  TextureSlot texture;
+  TextureSlot specular_texture;
+  BumpMap bump;
+  NormalMap normal_map;
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
   bool absorbing() const { return max_component(absorption) > 0.0f; }

@@ -1,6 +1,35 @@
 #include "core/mesh.h"
 
 namespace rt {
+namespace {
+
+// The texture coordinates at barycentrics (b1, b2) and the tangent frame that makes them
+// linear over the triangle: solve [du1 dv1; du2 dv2] [dpdu; dpdv] = [e1; e2].
+UvFrame interpolate_uv_frame(const std::vector<Vec2>& uvs, uint32_t i0, uint32_t i1, uint32_t i2, const Hit& hit,
+                             Vec3 e1, Vec3 e2, Vec3 normal) {
+  Vec2 uv0(0.0f, 0.0f), uv1(1.0f, 0.0f), uv2(1.0f, 1.0f);  // pbrt's convention when a mesh has no UVs
+  if (!uvs.empty()) {
+    uv0 = uvs[i0];
+    uv1 = uvs[i1];
+    uv2 = uvs[i2];
+  }
+  UvFrame f;
+  f.uv = (1.0f - hit.b1 - hit.b2) * uv0 + hit.b1 * uv1 + hit.b2 * uv2;
+  const Vec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
+  const float det = d1.x * d2.y - d1.y * d2.x;
+  if (std::fabs(det) > 1e-12f) {
+    const float inv = 1.0f / det;
+    f.dpdu = (d2.y * e1 - d1.y * e2) * inv;
+    f.dpdv = (d1.x * e2 - d2.x * e1) * inv;
+  }
+  if (std::fabs(det) <= 1e-12f || !is_finite(f.dpdu) || !is_finite(f.dpdv) ||
+      glm::length(glm::cross(f.dpdu, f.dpdv)) == 0.0f) {
+    orthonormal_basis(normal, f.dpdu, f.dpdv);
+  }
+  return f;
+}
+
+}  // namespace
 
 SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit) {
   const uint32_t i0 = mesh.indices[3 * triangle], i1 = mesh.indices[3 * triangle + 1],
@@ -23,25 +52,13 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
     }
   }
 
-  Vec2 uv0(0.0f, 0.0f), uv1(1.0f, 0.0f), uv2(1.0f, 1.0f);  // pbrt's convention when a mesh has no UVs
-  if (!mesh.uvs.empty()) {
-    uv0 = mesh.uvs[i0];
-    uv1 = mesh.uvs[i1];
-    uv2 = mesh.uvs[i2];
-  }
-  si.uv = b0 * uv0 + hit.b1 * uv1 + hit.b2 * uv2;
-  // Solve [du1 dv1; du2 dv2] [dpdu; dpdv] = [e1; e2] for the tangent frame.
-  const Vec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
-  const float det = d1.x * d2.y - d1.y * d2.x;
-  if (std::fabs(det) > 1e-12f) {
-    const float inv = 1.0f / det;
-    si.dpdu = (d2.y * e1 - d1.y * e2) * inv;
-    si.dpdv = (d1.x * e2 - d2.x * e1) * inv;
-  }
-  if (std::fabs(det) <= 1e-12f || !is_finite(si.dpdu) || !is_finite(si.dpdv) ||
-      glm::length(glm::cross(si.dpdu, si.dpdv)) == 0.0f) {
-    orthonormal_basis(si.geometric_normal, si.dpdu, si.dpdv);
-  }
+  si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, si.geometric_normal);
+  si.texcoord[1] = mesh.uvs1.empty() ? si.texcoord[0]
+                                     : interpolate_uv_frame(mesh.uvs1, i0, i1, i2, hit, e1, e2, si.geometric_normal);
+  if (!mesh.tangents.empty())
+    si.tangent = b0 * mesh.tangents[i0] + hit.b1 * mesh.tangents[i1] + hit.b2 * mesh.tangents[i2];
+  si.object_position = mesh.placement.point_to_object(si.position);
+  si.object_from_world = Mat3(mesh.placement.to_object);
   si.material = mesh.material;
   si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
   return si;
@@ -52,8 +69,16 @@ TriangleMesh transformed(const TriangleMesh& mesh, const Transform& t) {
   for (Vec3& p : out.positions) p = t.point_to_world(p);
   for (Vec3& n : out.normals)
     if (n != Vec3(0.0f)) n = t.normal_to_world_unit(n);
-  if (glm::determinant(Mat3(t.to_world)) < 0.0f)
+  const bool mirrors = glm::determinant(Mat3(t.to_world)) < 0.0f;
+  // The bitangent is cross(normal, tangent) * w; a mirror flips that cross product, so w flips too.
+  for (Vec4& tangent : out.tangents) {
+    const Vec3 xyz = t.vector_to_world(Vec3(tangent));
+    const float len = glm::length(xyz);
+    tangent = len > 0.0f && std::isfinite(len) ? Vec4(xyz / len, mirrors ? -tangent.w : tangent.w) : Vec4(0.0f);
+  }
+  if (mirrors)
     for (size_t i = 0; i + 2 < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
+  out.placement = compose(t, mesh.placement);
   return out;
 }
 

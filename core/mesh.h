@@ -17,13 +17,18 @@ struct TriangleMesh {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;      // per vertex, unit; empty = flat shading
   std::vector<Vec2> uvs;          // per vertex (TEXCOORD_0, origin top-left); empty = none
+  std::vector<Vec2> uvs1;         // per vertex (TEXCOORD_1); empty = none
+  std::vector<Vec4> tangents;     // per vertex (TANGENT: unit xyz, handedness w = +-1); empty = none
   std::vector<uint32_t> indices;  // three per triangle, each < positions.size()
   uint32_t material = 0;
+  // Where the mesh's own (object) space went: the projections of texture mapping work there.
+  Transform placement;
 
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
-// The mesh moved by an affine transform: positions by it, normals by its inverse transpose. A
+// The mesh moved by an affine transform: positions by it, normals by its inverse transpose,
+// tangents by its linear part; `placement` records the move. A
 // mirroring transform (negative determinant) also reverses the winding, so that the geometric
 // normal from the winding keeps pointing the same way relative to the surface.
 TriangleMesh transformed(const TriangleMesh& mesh, const Transform& t);

@@ -8,6 +8,7 @@
 #include "core/lights/light.h"
 #include "core/material.h"
 #include "core/mesh.h"
+#include "core/texture/texture.h"
 
 namespace rt {
 
@@ -16,6 +17,7 @@ struct Scene {
   Vec3 background{0.0f};  // radiance of rays that hit nothing
   Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
   std::vector<Material> materials;
+  std::vector<Texture> textures;  // what materials' texture slots index, each file loaded once
   std::vector<Light> lights;
   std::vector<TriangleMesh> meshes;           // world space, for surface details of triangle hits
   std::vector<uint32_t> mesh_first_triangle;  // primitive id of each mesh's first triangle

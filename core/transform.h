@@ -26,6 +26,12 @@ struct Transform {
 // a degenerate 4x4) or not finite: such an object has no inside, no normals, no inverse.
 std::optional<Transform> make_transform(const Mat4& to_world);
 
+// `outer` after `inner`: points go through inner, then outer.
+inline Transform compose(const Transform& outer, const Transform& inner) {
+  return Transform{outer.to_world * inner.to_world, inner.to_object * outer.to_object,
+                   outer.normal_to_world * inner.normal_to_world};
+}
+
 // Translate-rotate-scale as written in scene files: M = T * Rz * Ry * Rx * S, i.e. a point is
 // scaled first, then rotated about X, then Y, then Z (degrees), then translated.
 Mat4 compose_trs(Vec3 translate, Vec3 rotate_degrees, Vec3 scale);

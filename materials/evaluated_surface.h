@@ -1,11 +1,14 @@
 // The shading stage: between the hit and the integrator. Scene::surface gives the geometry of a
 // hit; evaluate_surface turns it and the hit's material into everything the integrator reads,
-// with the normals turned to face the ray. Textures and bump maps plug in here: they will change
-// kd or the shading frame at this point and nowhere else.
+// with the normals turned to face the ray. Textures change kd and ks here, and bump and normal
+// maps the shading normal, at this point and nowhere else.
 #pragma once
+
+#include <vector>
 
 #include "core/hit.h"
 #include "core/material.h"
+#include "core/texture/texture.h"
 
 namespace rt {
 
@@ -15,10 +18,6 @@ struct EvaluatedSurface {
   Vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal, same side
   Vec3 wo{0.0f, 0.0f, 1.0f};  // unit, towards where the ray came from
   bool entering = true;       // the ray arrived from the outward side (for refraction)
-  // Shading frame, as Scene::surface gave it.
-  Vec2 uv{0.0f};
-  Vec3 dpdu{1.0f, 0.0f, 0.0f};
-  Vec3 dpdv{0.0f, 1.0f, 0.0f};
   // The material at this point.
   uint32_t material = 0;
   Vec3 diffuse{0.0f};  // kd x (1 - transmission): light that passes through is not also scattered
@@ -33,29 +32,10 @@ struct EvaluatedSurface {
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };
 
-// `ray_direction` is the direction of the ray that hit (any length).
-inline EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction) {
-  EvaluatedSurface s;
-  s.position = si.position;
-  // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
-  const float side = si.front_face ? 1.0f : -1.0f;
-  s.n = side * si.shading_normal;
-  s.ng = side * si.geometric_normal;
-  s.wo = -glm::normalize(ray_direction);
-  s.entering = si.front_face;
-  s.uv = si.uv;
-  s.dpdu = si.dpdu;
-  s.dpdv = si.dpdv;
-  s.material = si.material;
-  s.diffuse = m.kd * (Vec3(1.0f) - m.transmission);
-  s.specular = m.ks;
-  s.shininess = m.shininess;
-  s.reflectivity = m.reflectivity;
-  s.transmission = m.transmission;
-  s.ior = m.ior;
-  s.absorption = m.absorption;
-  s.glossy = m.glossy;
-  return s;
-}
+// `ray_direction` is the direction of the ray that hit (any length); `cone_width` the world-space
+// width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks
+// the mip level of trilinear textures. Never allocates.
+EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
+                                  const std::vector<Texture>& textures, float cone_width = 0.0f);
 
 }  // namespace rt

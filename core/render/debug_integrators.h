@@ -34,7 +34,7 @@ class DebugIntegrator final : public Integrator {
 inline Vec3 normals_view(const DebugHit& h, const Scene&) { return 0.5f * (h.surface.shading_normal + 1.0f); }
 
 inline Vec3 uv_view(const DebugHit& h, const Scene&) {
-  const Vec2 uv = h.surface.uv - glm::floor(h.surface.uv);
+  const Vec2 uv = h.surface.texcoord[0].uv - glm::floor(h.surface.texcoord[0].uv);
   return Vec3(uv.x, uv.y, 0.0f);
 }
 
@@ -53,7 +53,7 @@ inline Vec3 depth_view(const DebugHit& h, const Scene& scene) {
 }
 
 inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
-  return evaluate_surface(scene.materials[h.surface.material], h.surface, h.ray.direction).diffuse;
+  return evaluate_surface(scene.materials[h.surface.material], h.surface, h.ray.direction, scene.textures).diffuse;
 }
 
 using NormalsIntegrator = DebugIntegrator<normals_view>;

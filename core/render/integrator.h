@@ -14,12 +14,15 @@
 
 namespace rt {
 
-// Per-thread state handed down a ray tree: counters and the camera sample's keyed numbers.
+// Per-thread state handed down a ray tree: counters, the camera sample's keyed numbers, its cone.
 struct TraceContext {
   const Scene& scene;
   const RenderSettings& settings;
   RayCounters& counters;
   SampleStream samples;
+  // The angle one pixel subtends at the camera: the spread of each camera ray's cone, whose width
+  // where a ray meets a surface picks the mip level of its textures. 0: finest level everywhere.
+  float pixel_spread = 0.0f;
 };
 
 class Integrator {

@@ -6,7 +6,7 @@ namespace rt {
 
 Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
-  TraceContext trace{ctx.scene, s, ctx.counters, samples};
+  TraceContext trace{ctx.scene, s, ctx.counters, samples, ctx.scene.camera.pixel_spread(s.height)};
   ++ctx.counters[RayKind::kCamera];
   // The lens sample is keyed like every other number: a pinhole camera ignores it.
   const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);

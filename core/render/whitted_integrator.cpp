@@ -16,6 +16,7 @@ float index_of(const MediumStack& media, const Scene& scene) {
 Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int depth, TraceContext& ctx) const {
   PathState state;
   state.depth = depth;
+  state.cone_spread = ctx.pixel_spread;
   return trace(camera_ray, state, ctx);
 }
 
@@ -38,10 +39,16 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   }
   if (found) {
     const SurfaceInteraction si = scene.surface(ray, hit);
-    const EvaluatedSurface s = evaluate_surface(scene.materials[si.material], si, ray.direction);
+    const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
+    const EvaluatedSurface s =
+        evaluate_surface(scene.materials[si.material], si, ray.direction, scene.textures, cone_width);
     radiance = direct_lighting(s, state.path, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
-    if (bounces && state.depth < ctx.settings.max_depth) radiance += secondary(s, ray.direction, state, ctx);
+    if (bounces && state.depth < ctx.settings.max_depth) {
+      PathState onward = state;
+      onward.cone_width = cone_width;
+      radiance += secondary(s, ray.direction, onward, ctx);
+    }
   }
   // Beer-Lambert along the segment just travelled (ray.tmax: to the surface or light it met),
   // inside the innermost medium. A ray that leaves through an open mesh without hitting anything

@@ -21,6 +21,10 @@ class WhittedIntegrator final : public Integrator {
     MediumStack media;   // what the ray travels through
     bool split = false;  // a glossy reflection above already split the path into glossy_samples rays
     uint64_t path = 0;   // where in the ray tree: keys its random numbers (core/sampling.h)
+    // The ray cone (Akenine-Moller et al. 2019): width at the ray's origin and spread angle. A
+    // mirror or refraction passes the width on and keeps the spread (surface curvature ignored).
+    float cone_width = 0.0f;
+    float cone_spread = 0.0f;
   };
   // A secondary ray whose weight in the pixel is below this is not traced (Hall and Greenberg's
   // adaptive tree depth): it bounds the ray tree of glass, whose every hit branches in two.

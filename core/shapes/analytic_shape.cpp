@@ -53,9 +53,11 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
   si.position = shape.transform.point_to_world(p_object);
   si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
   si.shading_normal = si.geometric_normal;
-  si.uv = patch.uv;
-  si.dpdu = shape.transform.vector_to_world(patch.dpdu);
-  si.dpdv = shape.transform.vector_to_world(patch.dpdv);
+  si.texcoord[0] = UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu),
+                           shape.transform.vector_to_world(patch.dpdv)};
+  si.texcoord[1] = si.texcoord[0];
+  si.object_position = p_object;
+  si.object_from_world = Mat3(shape.transform.to_object);
   si.material = shape.material;
   si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
   return si;

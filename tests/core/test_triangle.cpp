@@ -48,10 +48,10 @@ TEST_CASE("mesh surface: interpolated normal, uv and tangent frame from uvs", "[
   CHECK(si.shading_normal.x > 0.0f);
   CHECK(si.shading_normal.y > 0.0f);
   CHECK(glm::length(si.shading_normal) == Approx(1.0f));
-  CHECK(si.uv.x == Approx(0.25f));
-  CHECK(si.uv.y == Approx(0.25f));
-  CHECK(si.dpdu.x == Approx(2.0f));  // u runs along +X over 2 units
-  CHECK(si.dpdv.y == Approx(2.0f));
+  CHECK(si.texcoord[0].uv.x == Approx(0.25f));
+  CHECK(si.texcoord[0].uv.y == Approx(0.25f));
+  CHECK(si.texcoord[0].dpdu.x == Approx(2.0f));  // u runs along +X over 2 units
+  CHECK(si.texcoord[0].dpdv.y == Approx(2.0f));
   CHECK(si.front_face);
 }
 

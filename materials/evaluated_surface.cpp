@@ -1,0 +1,74 @@
+#include "materials/evaluated_surface.h"
+
+#include "materials/surface_detail.h"
+#include "materials/texture_mapping.h"
+
+namespace rt {
+namespace {
+
+// The outward shading normal after the material's normal map, then its bump map.
+Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direction,
+                     const std::vector<Texture>& textures, float cone_width) {
+  Vec3 n = si.shading_normal;
+  if (m.normal_map.map.present()) {
+    const MappedPoint p = map_point(m.normal_map.map.mapping, si);
+    const Vec3 texel = sample_slot(m.normal_map.map, textures, p.uv, uv_footprint(p, n, direction, cone_width));
+    // The file's own tangents (glTF TANGENT) belong to its first texture coordinates, unmoved.
+    const TextureMapping& mapping = m.normal_map.map.mapping;
+    const bool file_tangents = si.tangent.w != 0.0f && mapping.projection == Projection::kUv && mapping.uv_set == 0 &&
+                               mapping.scale == Vec2(1.0f) && mapping.rotation_degrees == 0.0f;
+    n = file_tangents ? tangent_space_normal(n, Vec3(si.tangent), si.tangent.w, texel, m.normal_map.scale)
+                      : tangent_space_normal(n, p.dpdu, handedness_from_uv(n, p.dpdu, p.dpdv), texel,
+                                             m.normal_map.scale);
+  }
+  if (m.bump.height.present()) {
+    SurfaceInteraction tilted = si;
+    tilted.shading_normal = n;
+    const MappedPoint p = map_point(m.bump.height.mapping, tilted);
+    const Vec2 h = height_gradient(m.bump, textures, p.uv, uv_footprint(p, n, direction, cone_width));
+    n = blinn_bump(n, p.dpdu, p.dpdv, h.x, h.y);
+  }
+  return n;
+}
+
+}  // namespace
+
+EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
+                                  const std::vector<Texture>& textures, float cone_width) {
+  EvaluatedSurface s;
+  s.position = si.position;
+  s.wo = -glm::normalize(ray_direction);
+  // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
+  const float side = si.front_face ? 1.0f : -1.0f;
+  s.ng = side * si.geometric_normal;
+  const bool detailed = m.normal_map.map.present() || m.bump.height.present();
+  s.n = side * (detailed ? detailed_normal(m, si, -s.wo, textures, cone_width) : si.shading_normal);
+  // A tilted normal can turn away from the viewer near a silhouette, where Phong would go black:
+  // bend it back just past the edge of visibility.
+  if (detailed) {
+    const float facing = glm::dot(s.n, s.wo);
+    if (facing < 1e-3f) s.n = glm::normalize(s.n + (1e-3f - facing) * s.wo);
+  }
+  s.entering = si.front_face;
+  s.material = si.material;
+  Vec3 kd = m.kd, ks = m.ks;
+  if (m.texture.present()) {
+    const MappedPoint p = map_point(m.texture.mapping, si);
+    kd *= sample_slot(m.texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
+  }
+  if (m.specular_texture.present()) {
+    const MappedPoint p = map_point(m.specular_texture.mapping, si);
+    ks *= sample_slot(m.specular_texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
+  }
+  s.diffuse = kd * (Vec3(1.0f) - m.transmission);
+  s.specular = ks;
+  s.shininess = m.shininess;
+  s.reflectivity = m.reflectivity;
+  s.transmission = m.transmission;
+  s.ior = m.ior;
+  s.absorption = m.absorption;
+  s.glossy = m.glossy;
+  return s;
+}
+
+}  // namespace rt
