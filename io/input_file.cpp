@@ -1,5 +1,7 @@
 #include "io/input_file.h"
 
+#include <filesystem>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -120,6 +122,11 @@ std::string format_bytes(uint64_t bytes) {
   else if (bytes >= kKiB) show(kKiB, "KiB");
   else std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(bytes));
   return buf;
+}
+
+std::string resolve_path(const std::string& folder, const std::string& file) {
+  const std::filesystem::path p(file);
+  return p.is_absolute() ? p.string() : (std::filesystem::path(folder) / p).lexically_normal().string();
 }
 
 }  // namespace rt

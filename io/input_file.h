@@ -16,6 +16,9 @@ std::optional<std::string> read_input_text(const std::string& path, uint64_t max
 std::optional<std::vector<unsigned char>> read_input_bytes(const std::string& path, uint64_t max_bytes,
                                                            std::string& error);
 
+// A path as written in a scene file: relative paths resolve against the scene file's folder.
+std::string resolve_path(const std::string& folder, const std::string& file);
+
 // "64 MiB", "1.5 GiB", "812 bytes": sizes in limit messages.
 std::string format_bytes(uint64_t bytes);
 

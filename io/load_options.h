@@ -20,6 +20,8 @@ struct LoadLimits {
   uint64_t triangles = uint64_t{1} << 25;          // in the whole scene, every instance counted
   uint64_t instances = uint64_t{1} << 20;          // analytic shapes plus placed mesh primitives
   uint64_t nodes = uint64_t{1} << 20;              // scene-file nodes, and glTF nodes per file
+  uint64_t texture_texels = uint64_t{1} << 25;     // in one texture image (e.g. 8192 x 4096)
+  uint64_t scene_texels = uint64_t{1} << 27;       // in all of a scene's textures together
 };
 
 struct LoadOptions {

@@ -1,8 +1,7 @@
 #include "io/node_parser.h"
 
-#include <filesystem>
-
 #include "core/transform.h"
+#include "io/input_file.h"
 #include "io/json_locate.h"
 
 namespace rt {
@@ -70,9 +69,7 @@ std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const J
     return std::nullopt;
   }
   ref.file = *file;
-  const std::filesystem::path p(*file);
-  ref.resolved_path =
-      p.is_absolute() ? p.string() : (std::filesystem::path(ctx.scene_folder) / p).lexically_normal().string();
+  ref.resolved_path = resolve_path(ctx.scene_folder, *file);
   ref.mesh_name = name;
   return ref;
 }

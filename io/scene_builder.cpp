@@ -7,6 +7,7 @@
 #include "core/thread_count.h"
 #include "io/gltf_loader.h"
 #include "io/json_reader.h"
+#include "io/texture_file.h"
 
 namespace rt {
 namespace {
@@ -28,7 +29,7 @@ class Builder {
   // glTF files append theirs as they are loaded.
   Builder(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options, Diagnostics& diags)
       : desc_(desc), source_(source), options_(options), diags_(diags) {
-    for (const MaterialDescription& m : desc_.materials) materials_.push_back(m.material);
+    for (const MaterialDescription& m : desc_.materials) materials_.push_back(with_textures(m));
   }
 
   void add_nodes(const std::vector<NodeDescription>& nodes, const Mat4& parent) {
@@ -62,6 +63,7 @@ class Builder {
     scene.ambient = desc_.ambient;
     scene.lights = desc_.lights;
     scene.materials = std::move(materials_);
+    scene.textures = std::move(textures_);
     uint32_t first = 0;
     for (const TriangleMesh& m : meshes_) {
       scene.mesh_first_triangle.push_back(first);
@@ -77,6 +79,45 @@ class Builder {
   std::vector<std::string> take_files() { return std::move(files_); }
 
  private:
+  // The material with its slots pointing at loaded textures; a slot whose file failed stays empty
+  // (the error is recorded, so the scene is not built).
+  Material with_textures(const MaterialDescription& m) {
+    Material out = m.material;
+    const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
+      if (ref) slot.texture = texture_index(*ref);
+    };
+    fill(m.texture, out.texture);
+    fill(m.specular_texture, out.specular_texture);
+    fill(m.bump, out.bump.height);
+    fill(m.normal_map, out.normal_map.map);
+    return out;
+  }
+
+  // Each file is loaded once per encoding (a colour texture is decoded from sRGB, a height map not).
+  uint32_t texture_index(const TextureFileReference& ref) {
+    const std::string key = ref.resolved_path + (ref.encoding == TextureEncoding::kSrgb ? "\nsrgb" : "\nlinear");
+    if (const auto it = texture_indices_.find(key); it != texture_indices_.end()) return it->second;
+    const LoadLimits& limits = options_.limits;
+    const uint64_t budget = std::min(limits.texture_texels, limits.scene_texels - texels_);
+    std::string why;
+    auto texture = load_texture(ref.resolved_path, ref.encoding, budget, why);
+    uint32_t index = kNoTexture;
+    if (!texture) {
+      if (budget < limits.texture_texels)
+        why += " (all the scene's textures together may hold at most " + std::to_string(limits.scene_texels) +
+               " texels; README, \"Limits\")";
+      error(ref.pointer, "expected a readable PNG or JPEG image, found \"" + ref.file + "\": " + why);
+    } else {
+      for (int level = 0; level < texture->level_count(); ++level)
+        texels_ += static_cast<uint64_t>(texture->width(level)) * static_cast<uint64_t>(texture->height(level));
+      files_.push_back(ref.resolved_path);
+      index = static_cast<uint32_t>(textures_.size());
+      textures_.push_back(std::move(*texture));
+    }
+    texture_indices_.emplace(key, index);
+    return index;
+  }
+
   // Shapes and placed mesh primitives together; one error when the limit is passed, then stop.
   bool take_instance(const std::string& pointer) {
     if (++instances_ <= options_.limits.instances) return true;
@@ -190,6 +231,9 @@ class Builder {
   const LoadOptions& options_;
   Diagnostics& diags_;
   std::vector<Material> materials_;
+  std::vector<Texture> textures_;
+  std::map<std::string, uint32_t> texture_indices_;  // resolved path + encoding -> index (kNoTexture: failed)
+  uint64_t texels_ = 0;                              // in textures_, mip levels included
   std::vector<AnalyticShape> shapes_;
   std::vector<TriangleMesh> meshes_;
   std::map<std::string, LoadedModel> models_;

@@ -12,6 +12,7 @@
 #include "core/material.h"
 #include "core/render_settings.h"
 #include "core/shapes/analytic_shape.h"
+#include "io/texture_parser.h"
 
 namespace rt {
 
@@ -26,7 +27,8 @@ struct CameraDescription {
 
 struct MaterialDescription {
   std::string name;
-  Material material;
+  Material material;  // texture slots hold their mappings; the builder fills in the texture indices
+  std::optional<TextureFileReference> texture, specular_texture, bump, normal_map;
 };
 
 // A triangle mesh taken from a glTF file: one named mesh, or every mesh the file's scene uses.

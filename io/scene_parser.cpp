@@ -95,7 +95,37 @@ void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
   }
 }
 
-std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json& v) {
+// The texture keys of one material. A texture replaces kd (or ks) and kd multiplies it, so that
+// kd can tint it; without an explicit kd that is white.
+void parse_texture_slots(const JsonReader& r, ObjectReader& o, const std::string& folder, MaterialDescription& m) {
+  Material& mat = m.material;
+  if (const Json* t = o.get("texture")) {
+    m.texture = parse_texture_slot(r, *t, o.child("texture"), folder, TextureEncoding::kSrgb, mat.texture.mapping);
+    if (!o.has("kd")) mat.kd = Vec3(1.0f);
+  }
+  if (const Json* t = o.get("specular_texture")) {
+    m.specular_texture = parse_texture_slot(r, *t, o.child("specular_texture"), folder, TextureEncoding::kSrgb,
+                                            mat.specular_texture.mapping);
+    if (!o.has("ks")) mat.ks = Vec3(1.0f);
+  }
+  if (const Json* t = o.get("bump")) {
+    m.bump = parse_texture_slot(r, *t, o.child("bump"), folder, TextureEncoding::kLinear, mat.bump.height.mapping,
+                                [&](ObjectReader& b) {
+                                  if (const auto s = b.number("strength")) mat.bump.strength = static_cast<float>(*s);
+                                  if (const auto e = b.number("epsilon", NumberRule{0, 1, true, false, false}))
+                                    mat.bump.epsilon = static_cast<float>(*e);
+                                });
+  }
+  if (const Json* t = o.get("normal_map")) {
+    m.normal_map = parse_texture_slot(r, *t, o.child("normal_map"), folder, TextureEncoding::kLinear,
+                                      mat.normal_map.map.mapping, [&](ObjectReader& n) {
+                                        if (const auto s = n.number("strength"))
+                                          mat.normal_map.scale = static_cast<float>(*s);
+                                      });
+  }
+}
+
+std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json& v, const std::string& folder) {
   std::vector<MaterialDescription> out;
   if (!v.is_object()) {
     r.expected("/materials", "an object mapping material names to materials", v);
@@ -131,6 +161,7 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     } else if (const auto g = o.number("glossy", kNonNegative)) {
       mat.glossy = static_cast<float>(*g);
     }
+    parse_texture_slots(r, o, folder, m);
     o.finish();
     out.push_back(std::move(m));
   }
@@ -226,11 +257,11 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
     parse_camera(r, *v, scene.camera);
   if (const auto bg = top.colour("background")) scene.background = *bg;
   if (const auto ambient = top.colour("ambient")) scene.ambient = *ambient;
-  if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v);
+  const std::string folder = std::filesystem::path(doc.path).parent_path().string();
+  if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v, folder);
   if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
   if (const Json* v = top.get("nodes", true, "an array of nodes")) {
-    NodeParseContext ctx{
-        r, std::filesystem::path(doc.path).parent_path().string(), scene.materials, {}, options.limits.nodes, 0};
+    NodeParseContext ctx{r, folder, scene.materials, {}, options.limits.nodes, 0};
     scene.nodes = parse_nodes(ctx, *v, "/nodes");
   }
   top.finish();

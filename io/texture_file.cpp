@@ -28,8 +28,17 @@ std::optional<Texture> load_texture(const std::string& path, TextureEncoding enc
     error = "cannot read \"" + path + "\": " + error;
     return std::nullopt;
   }
-  const auto* data = bytes->data();
-  const int size = static_cast<int>(bytes->size());
+  return decode_texture(*bytes, path, encoding, max_texels, error);
+}
+
+std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& path,
+                                      TextureEncoding encoding, uint64_t max_texels, std::string& error) {
+  if (bytes.size() > kMaxFileBytes) {
+    error = "cannot read \"" + path + "\" as an image: it is larger than " + format_bytes(kMaxFileBytes);
+    return std::nullopt;
+  }
+  const auto* data = bytes.data();
+  const int size = static_cast<int>(bytes.size());
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
     error = "cannot read \"" + path + "\" as an image (PNG or JPEG): " + stb_reason();

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/texture/texture.h"
 
@@ -17,5 +18,9 @@ enum class TextureEncoding { kSrgb, kLinear };
 // its header, before decoding) gives nullopt and an error saying what was found.
 std::optional<Texture> load_texture(const std::string& path, TextureEncoding encoding, uint64_t max_texels,
                                     std::string& error);
+
+// The same from an image already in memory (a glTF buffer view or data URI); `path` names it in errors.
+std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& path,
+                                      TextureEncoding encoding, uint64_t max_texels, std::string& error);
 
 }  // namespace rt

@@ -36,8 +36,8 @@ SurfacePatch cone_patch(Vec3 p, uint32_t part) {
   // Gradient of x^2 + y^2 - z^2 at radius z is (radial, -1) * z: the side leans at 45 degrees.
   s.normal = glm::normalize(Vec3(radial.x, radial.y, -1.0f));
   const float z = std::max(p.z, 0.0f);
-  s.uv = Vec2(phi / (2.0f * kPi), z);
-  s.dpdu = 2.0f * kPi * z * Vec3(-radial.y, radial.x, 0.0f);  // vanishes at the apex
+  s.uv = Vec2(1.0f - phi / (2.0f * kPi), z);
+  s.dpdu = -2.0f * kPi * z * Vec3(-radial.y, radial.x, 0.0f);  // vanishes at the apex
   s.dpdv = Vec3(radial.x, radial.y, 1.0f);
   return s;
 }

@@ -37,20 +37,19 @@ bool intersect_cube(const Ray& ray, Hit& hit) {
 }
 
 SurfacePatch cube_patch(Vec3 p, uint32_t part) {
-  const int axis = static_cast<int>(part / 2);
-  const bool negative = (part & 1u) != 0;
-  // Cyclic axes: e_a x e_{a+1} = e_{a+2}. On the + face (u, v) follow (a+1, a+2); on the - face
-  // they are swapped so that dpdu x dpdv still points outwards.
-  int axis_u = (axis + 1) % 3, axis_v = (axis + 2) % 3;
-  if (negative) std::swap(axis_u, axis_v);
+  // Per face (+X, -X, +Y, -Y, +Z, -Z): the directions of growing u (right) and v (down) seen from
+  // outside, like the faces of a die standing on -Y with +Z towards the viewer.
+  static constexpr float kFrames[6][2][3] = {
+      {{0, 0, -1}, {0, -1, 0}}, {{0, 0, 1}, {0, -1, 0}}, {{1, 0, 0}, {0, 0, 1}},
+      {{1, 0, 0}, {0, 0, -1}},  {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}},
+  };
+  const auto& f = kFrames[part < 6 ? part : 0];
+  const Vec3 right(f[0][0], f[0][1], f[0][2]), down(f[1][0], f[1][1], f[1][2]);
   SurfacePatch s;
-  s.normal = Vec3(0.0f);
-  s.normal[axis] = negative ? -1.0f : 1.0f;
-  s.uv = Vec2(0.5f * (p[axis_u] + 1.0f), 0.5f * (p[axis_v] + 1.0f));
-  s.dpdu = Vec3(0.0f);
-  s.dpdu[axis_u] = 2.0f;
-  s.dpdv = Vec3(0.0f);
-  s.dpdv[axis_v] = 2.0f;
+  s.normal = glm::cross(down, right);  // right x down points in: the image reads correctly from outside
+  s.uv = Vec2(0.5f * (1.0f + glm::dot(p, right)), 0.5f * (1.0f + glm::dot(p, down)));
+  s.dpdu = 2.0f * right;
+  s.dpdv = 2.0f * down;
   return s;
 }
 

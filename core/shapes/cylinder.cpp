@@ -52,9 +52,9 @@ bool intersect_cylinder(const Ray& ray, Hit& hit) {
 SurfacePatch cap_patch(Vec3 p, bool top) {
   SurfacePatch s;
   s.normal = Vec3(0.0f, 0.0f, top ? 1.0f : -1.0f);
-  s.uv = Vec2(0.5f * (p.x + 1.0f), top ? 0.5f * (p.y + 1.0f) : 0.5f * (1.0f - p.y));
-  s.dpdu = Vec3(2.0f, 0.0f, 0.0f);
-  s.dpdv = Vec3(0.0f, top ? 2.0f : -2.0f, 0.0f);
+  s.uv = Vec2(0.5f * (top ? 1.0f + p.x : 1.0f - p.x), 0.5f * (1.0f - p.y));
+  s.dpdu = Vec3(top ? 2.0f : -2.0f, 0.0f, 0.0f);
+  s.dpdv = Vec3(0.0f, -2.0f, 0.0f);
   return s;
 }
 
@@ -65,9 +65,9 @@ SurfacePatch cylinder_patch(Vec3 p, uint32_t part) {
   if (phi < 0.0f) phi += 2.0f * kPi;
   const Vec3 radial(std::cos(phi), std::sin(phi), 0.0f);
   s.normal = radial;
-  s.uv = Vec2(phi / (2.0f * kPi), p.z);
+  s.uv = Vec2(phi / (2.0f * kPi), 1.0f - p.z);
   s.dpdu = 2.0f * kPi * Vec3(-radial.y, radial.x, 0.0f);
-  s.dpdv = Vec3(0.0f, 0.0f, 1.0f);
+  s.dpdv = Vec3(0.0f, 0.0f, -1.0f);
   return s;
 }
 

@@ -17,9 +17,9 @@ bool intersect_plane(const Ray& ray, Hit& hit) {
 SurfacePatch plane_patch(Vec3 p, uint32_t /*part*/) {
   SurfacePatch s;
   s.normal = Vec3(0.0f, 1.0f, 0.0f);
-  s.uv = Vec2(0.5f * (p.x + 1.0f), 0.5f * (1.0f - p.z));
+  s.uv = Vec2(0.5f * (p.x + 1.0f), 0.5f * (p.z + 1.0f));
   s.dpdu = Vec3(2.0f, 0.0f, 0.0f);
-  s.dpdv = Vec3(0.0f, 0.0f, -2.0f);  // (2,0,0) x (0,0,-2) = (0,4,0): along the normal
+  s.dpdv = Vec3(0.0f, 0.0f, 2.0f);  // towards +Z: upright seen from above, +Z towards the viewer
   return s;
 }
 

@@ -47,7 +47,8 @@ struct BumpMap {
 
 // A tangent-space normal map (glTF's normalTexture): RGB = (x, y, z) * 0.5 + 0.5, x along the
 // tangent (increasing u), y along the bitangent (decreasing v: up in the image), z the normal;
-// `scale` multiplies x and y.
+// `scale` multiplies x and y (glTF's normalTexture.scale; "strength" in scene files, where
+// "scale" tiles the map like any texture's).
 struct NormalMap {
   TextureSlot map;
   float scale = 1.0f;

@@ -87,11 +87,3 @@ TEST_CASE("cone: the apex is on the surface", "[shapes][cone]") {
   CHECK(h.t == Approx(1.0f));
 }
 
-TEST_CASE("cone: uv and tangent frame", "[shapes][cone]") {
-  const SurfacePatch s = cone_patch({0, 0.5f, 0.5f}, kConeSide);
-  CHECK(s.uv.x == Approx(0.25f));
-  CHECK(s.uv.y == Approx(0.5f));
-  CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) > 0.0f);
-  CHECK(glm::dot(s.dpdu, s.normal) == Approx(0.0f).margin(1e-6));
-  CHECK(glm::dot(s.dpdv, s.normal) == Approx(0.0f).margin(1e-6));
-}

@@ -73,19 +73,6 @@ TEST_CASE("cylinder: misses above, beside and pointing away", "[shapes][cylinder
   CHECK_FALSE(intersect_cylinder(make_ray({-3, 0, 0.5f}, {-1, 0, 0}), h));
 }
 
-TEST_CASE("cylinder: uv and tangent frame", "[shapes][cylinder]") {
-  const SurfacePatch side = cylinder_patch({0, 1, 0.25f}, kCylinderSide);
-  CHECK(side.uv.x == Approx(0.25f));
-  CHECK(side.uv.y == Approx(0.25f));
-  check_vec(side.dpdv, {0, 0, 1});
-  CHECK(glm::dot(glm::cross(side.dpdu, side.dpdv), side.normal) > 0.0f);
-  for (uint32_t cap : {kCylinderBase, kCylinderTop}) {
-    const SurfacePatch s = cylinder_patch({1, 1, cap == kCylinderTop ? 1.0f : 0.0f}, cap);
-    CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) > 0.0f);
-    CHECK(s.uv.x == Approx(1.0f));
-  }
-}
-
 TEST_CASE("cylinder under non-uniform scale and rotation: exact world normal", "[shapes][cylinder][transform]") {
   AnalyticShape s;
   s.kind = ShapeKind::kCylinder;

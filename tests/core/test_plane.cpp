@@ -17,8 +17,8 @@ TEST_CASE("plane: hit from above and from below, normal +Y", "[shapes][plane]") 
   const SurfacePatch s = plane_patch({0.5f, 0, -0.5f}, 0);
   CHECK(s.normal == Vec3(0, 1, 0));
   CHECK(s.uv.x == Approx(0.75f));
-  CHECK(s.uv.y == Approx(0.75f));
-  CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) > 0.0f);
+  CHECK(s.uv.y == Approx(0.25f));
+  CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) < 0.0f);  // u right, v down seen from above
 }
 
 TEST_CASE("plane: finite extent, parallel rays, behind the origin", "[shapes][plane]") {

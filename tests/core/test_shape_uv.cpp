@@ -1,0 +1,100 @@
+// Natural texture coordinates of every analytic shape at known points (poles, seams, caps, cube
+// faces), and their tangent frames: orthogonal, u right and v down seen from outside (so images
+// read unmirrored), and equal to finite differences of the surface position.
+#include <catch2/catch.hpp>
+
+#include "core/shapes/analytic_shape.h"
+#include "core/shapes/cone.h"
+#include "core/shapes/cube.h"
+#include "core/shapes/cylinder.h"
+
+using namespace rt;
+
+namespace {
+
+struct Known {
+  ShapeKind kind;
+  uint32_t part;
+  Vec3 p;
+  Vec2 uv;
+  const char* where;
+};
+
+// The point moved back onto the surface of `kind` (part), after a small step off it.
+Vec3 onto_surface(ShapeKind kind, uint32_t part, Vec3 p) {
+  switch (kind) {
+    case ShapeKind::kSphere: return glm::normalize(p);
+    case ShapeKind::kPlane: return Vec3(p.x, 0.0f, p.z);
+    case ShapeKind::kCube: p[static_cast<int>(part / 2)] = (part & 1u) ? -1.0f : 1.0f; return p;
+    case ShapeKind::kCylinder:
+      if (part == kCylinderSide) return Vec3(glm::normalize(Vec2(p)), p.z);
+      return Vec3(p.x, p.y, part == kCylinderTop ? 1.0f : 0.0f);
+    case ShapeKind::kCone:
+      if (part == kConeSide) return Vec3(p.z * glm::normalize(Vec2(p)), p.z);
+      return Vec3(p.x, p.y, 1.0f);
+  }
+  return p;
+}
+
+const Known kKnown[] = {
+    {ShapeKind::kSphere, 0, {0, 0, 1}, {0.0f, 0.5f}, "sphere: +Z on the equator, the seam"},
+    {ShapeKind::kSphere, 0, {1, 0, 0}, {0.25f, 0.5f}, "sphere: +X"},
+    {ShapeKind::kSphere, 0, {0, 0, -1}, {0.5f, 0.5f}, "sphere: -Z"},
+    {ShapeKind::kSphere, 0, {-1, 0, 0}, {0.75f, 0.5f}, "sphere: -X"},
+    {ShapeKind::kSphere, 0, {0, 1, 0}, {0.0f, 0.0f}, "sphere: north pole"},
+    {ShapeKind::kSphere, 0, {0, -1, 0}, {0.0f, 1.0f}, "sphere: south pole"},
+    {ShapeKind::kPlane, 0, {-1, 0, -1}, {0.0f, 0.0f}, "plane: far left corner"},
+    {ShapeKind::kPlane, 0, {1, 0, 1}, {1.0f, 1.0f}, "plane: near right corner"},
+    {ShapeKind::kCube, 4, {0, 0, 1}, {0.5f, 0.5f}, "cube +Z: centre"},
+    {ShapeKind::kCube, 4, {-1, 1, 1}, {0.0f, 0.0f}, "cube +Z: top left"},
+    {ShapeKind::kCube, 5, {1, 1, -1}, {0.0f, 0.0f}, "cube -Z: top left"},
+    {ShapeKind::kCube, 0, {1, 1, 1}, {0.0f, 0.0f}, "cube +X: top left"},
+    {ShapeKind::kCube, 1, {-1, 1, -1}, {0.0f, 0.0f}, "cube -X: top left"},
+    {ShapeKind::kCube, 2, {-1, 1, -1}, {0.0f, 0.0f}, "cube +Y: top left (far side)"},
+    {ShapeKind::kCube, 3, {-1, -1, 1}, {0.0f, 0.0f}, "cube -Y: top left (near side)"},
+    {ShapeKind::kCube, 0, {1, -1, -1}, {1.0f, 1.0f}, "cube +X: bottom right"},
+    {ShapeKind::kCylinder, kCylinderSide, {1, 0, 1}, {0.0f, 0.0f}, "cylinder side: +X at the top, the seam"},
+    {ShapeKind::kCylinder, kCylinderSide, {0, 1, 0}, {0.25f, 1.0f}, "cylinder side: +Y at the base"},
+    {ShapeKind::kCylinder, kCylinderTop, {-1, 1, 1}, {0.0f, 0.0f}, "cylinder top cap"},
+    {ShapeKind::kCylinder, kCylinderBase, {1, 1, 0}, {0.0f, 0.0f}, "cylinder base cap"},
+    {ShapeKind::kCone, kConeSide, {0, 0.5f, 0.5f}, {0.75f, 0.5f}, "cone side: +Y half way"},
+    {ShapeKind::kCone, kConeSide, {-1, 0, 1}, {0.5f, 1.0f}, "cone side: -X at the base"},
+    {ShapeKind::kCone, kConeBase, {-1, 1, 1}, {0.0f, 0.0f}, "cone base cap"},
+};
+
+}  // namespace
+
+TEST_CASE("natural uv: each shape at known points", "[shapes][uv]") {
+  for (const Known& k : kKnown) {
+    INFO(k.where);
+    const SurfacePatch s = object_space_patch(k.kind, k.p, k.part);
+    CHECK(s.uv.x == Approx(k.uv.x).margin(1e-6));
+    CHECK(s.uv.y == Approx(k.uv.y).margin(1e-6));
+  }
+  // Just west of the sphere's seam, u is nearly 1: the seam is where u wraps.
+  CHECK(object_space_patch(ShapeKind::kSphere, glm::normalize(Vec3(-1e-3f, 0, 1)), 0).uv.x == Approx(1.0f).margin(1e-3));
+}
+
+TEST_CASE("natural uv: tangent frames are orthogonal, read unmirrored and match finite differences",
+          "[shapes][uv]") {
+  for (const Known& k : kKnown) {
+    INFO(k.where);
+    // Moved a little towards an interior point, off poles, seams and edges, so that a small step
+    // stays on the same part.
+    const Vec3 p = onto_surface(k.kind, k.part, glm::mix(k.p, Vec3(0.3f, 0.4f, 0.5f), 0.3f));
+    const SurfacePatch s = object_space_patch(k.kind, p, k.part);
+    const Vec3 t = glm::normalize(s.dpdu), b = glm::normalize(s.dpdv);
+    CHECK(glm::dot(t, b) == Approx(0.0f).margin(1e-5));
+    CHECK(glm::dot(t, s.normal) == Approx(0.0f).margin(1e-5));
+    CHECK(glm::dot(b, s.normal) == Approx(0.0f).margin(1e-5));
+    CHECK(glm::dot(glm::cross(s.dpdu, s.dpdv), s.normal) < 0.0f);  // right x down points into the surface
+    const float e = 1e-3f;
+    for (int axis = 0; axis < 2; ++axis) {
+      const Vec3 step = axis == 0 ? s.dpdu : s.dpdv;
+      const Vec2 du = object_space_patch(k.kind, onto_surface(k.kind, k.part, p + e * step), k.part).uv -
+                      object_space_patch(k.kind, onto_surface(k.kind, k.part, p - e * step), k.part).uv;
+      CHECK(du[axis] / (2.0f * e) == Approx(1.0f).epsilon(2e-3));
+      CHECK(du[1 - axis] / (2.0f * e) == Approx(0.0f).margin(2e-3));
+    }
+  }
+}

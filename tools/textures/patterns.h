@@ -1,0 +1,24 @@
+// The procedural patterns behind every texture the example scenes use (tools/textures/main.cpp
+// writes them as PNG files). Each is a pure function of the point (x, y) in [0, 1)^2 of the image
+// (y down), returning 8-bit-scale values in [0, 1]: sRGB-encoded colour for colour textures, plain
+// data for height and normal maps. No randomness: the same program writes the same bytes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace rt::textures {
+
+struct Pattern {
+  std::string file;  // written as <folder>/<file>
+  int width = 0, height = 0;
+  Vec3 (*at)(float x, float y) = nullptr;
+  const char* what = "";
+};
+
+// Every texture, in the order the tool writes them.
+const std::vector<Pattern>& patterns();
+
+}  // namespace rt::textures
