@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
       ->check(CLI::Range(1, kMaxGlossySamples));
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
+  render_cmd->add_flag("--no-textures", render.no_textures, "Ignore colour and specular textures (kd and ks alone)");
+  render_cmd->add_flag("--no-bumps", render.no_bumps, "Ignore bump and normal maps");
   render_cmd
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")

@@ -92,6 +92,8 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.integrator) s.integrator = *cmd.integrator;
   if (cmd.glossy_samples) s.glossy_samples = *cmd.glossy_samples;
   if (cmd.no_glossy) s.glossy = false;
+  if (cmd.no_textures) s.detail.textures = false;
+  if (cmd.no_bumps) s.detail.bumps = false;
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
   if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;

@@ -1,5 +1,5 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--shadow-samples N]
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--quiet]`
 #pragma once
@@ -26,6 +26,8 @@ struct RenderCommand {
   std::optional<std::string> aa_positions;
   bool aa_debug = false;  // also write <output>.aa-refined.png and <output>.aa-depth.png
   bool no_glossy = false;
+  bool no_textures = false;
+  bool no_bumps = false;
   bool quiet = false;
 };
 

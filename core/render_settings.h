@@ -20,6 +20,12 @@ struct AntialiasSettings {
   SamplePositions positions = SamplePositions::kCorners;
 };
 
+// Switches for comparisons (README shows the bump scene both ways; --no-textures measures their cost).
+struct SurfaceDetailSwitches {
+  bool textures = true;  // false (--no-textures): colour and specular textures are not read
+  bool bumps = true;     // false (--no-bumps): bump and normal maps leave the normal as it is
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 480;
@@ -32,6 +38,7 @@ struct RenderSettings {
   int glossy_samples = 8;   // the proposal's glossy_count: rays per glossy reflection
   bool glossy = true;       // false (--no-glossy): glossy surfaces reflect as perfect mirrors
   int shadow_samples = 16;  // the proposal's shadow_count: shadow rays per area light and point
+  SurfaceDetailSwitches detail;
 };
 
 // Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel

@@ -5,18 +5,27 @@
 namespace rt {
 namespace {
 
-constexpr std::string_view kPairExpected = "an array of 2 numbers [u, v], or one number for both";
-
-// [u, v] or one number for both, each finite (and not zero where `nonzero`).
+// [u, v] or one number for both, each a finite float; a scale must not be zero.
 std::optional<Vec2> read_pair(const JsonReader& r, const Json& v, const std::string& ptr, bool nonzero) {
-  const auto ok = [&](const Json& x) {
-    return x.is_number() && std::isfinite(x.get<double>()) && !(nonzero && x.get<double>() == 0.0);
+  const auto one = [&](const Json& x, const std::string& at) -> std::optional<float> {
+    const auto n = read_number(r, x, at, kAnyNumber);
+    if (!n) return std::nullopt;
+    if (nonzero && *n == 0.0) {
+      r.expected(at, "a scale that is not zero", x);
+      return std::nullopt;
+    }
+    return static_cast<float>(*n);
   };
-  if (ok(v)) return Vec2(static_cast<float>(v.get<double>()));
-  if (v.is_array() && v.size() == 2 && ok(v[0]) && ok(v[1]))
-    return Vec2(static_cast<float>(v[0].get<double>()), static_cast<float>(v[1].get<double>()));
-  r.expected(ptr, nonzero ? std::string(kPairExpected) + ", not zero" : std::string(kPairExpected), v);
-  return std::nullopt;
+  if (v.is_number()) {
+    const auto n = one(v, ptr);
+    return n ? std::optional<Vec2>(Vec2(*n)) : std::nullopt;
+  }
+  if (!v.is_array() || v.size() != 2) {
+    r.expected(ptr, "an array of 2 numbers [u, v], or one number for both", v);
+    return std::nullopt;
+  }
+  const auto a = one(v[0], ptr + "/0"), b = one(v[1], ptr + "/1");
+  return a && b ? std::optional<Vec2>(Vec2(*a, *b)) : std::nullopt;
 }
 
 void parse_mapping(const JsonReader& r, ObjectReader& o, TextureMapping& m) {

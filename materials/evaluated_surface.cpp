@@ -34,14 +34,15 @@ Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direc
 }  // namespace
 
 EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
-                                  const std::vector<Texture>& textures, float cone_width) {
+                                  const std::vector<Texture>& textures, float cone_width,
+                                  SurfaceDetailSwitches detail) {
   EvaluatedSurface s;
   s.position = si.position;
   s.wo = -glm::normalize(ray_direction);
   // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
   const float side = si.front_face ? 1.0f : -1.0f;
   s.ng = side * si.geometric_normal;
-  const bool detailed = m.normal_map.map.present() || m.bump.height.present();
+  const bool detailed = detail.bumps && (m.normal_map.map.present() || m.bump.height.present());
   s.n = side * (detailed ? detailed_normal(m, si, -s.wo, textures, cone_width) : si.shading_normal);
   // A tilted normal can turn away from the viewer near a silhouette, where Phong would go black:
   // bend it back just past the edge of visibility.
@@ -52,11 +53,11 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   s.entering = si.front_face;
   s.material = si.material;
   Vec3 kd = m.kd, ks = m.ks;
-  if (m.texture.present()) {
+  if (detail.textures && m.texture.present()) {
     const MappedPoint p = map_point(m.texture.mapping, si);
     kd *= sample_slot(m.texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
   }
-  if (m.specular_texture.present()) {
+  if (detail.textures && m.specular_texture.present()) {
     const MappedPoint p = map_point(m.specular_texture.mapping, si);
     ks *= sample_slot(m.specular_texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
   }

@@ -8,6 +8,7 @@
 
 #include "core/hit.h"
 #include "core/material.h"
+#include "core/render_settings.h"
 #include "core/texture/texture.h"
 
 namespace rt {
@@ -34,8 +35,9 @@ struct EvaluatedSurface {
 
 // `ray_direction` is the direction of the ray that hit (any length); `cone_width` the world-space
 // width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks
-// the mip level of trilinear textures. Never allocates.
+// the mip level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
 EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
-                                  const std::vector<Texture>& textures, float cone_width = 0.0f);
+                                  const std::vector<Texture>& textures, float cone_width = 0.0f,
+                                  SurfaceDetailSwitches detail = {});
 
 }  // namespace rt
