@@ -50,7 +50,21 @@ Scene small_scene() {
   glass.absorption = Vec3(0.5f, 0.1f, 0.2f);
   glossy.reflectivity = Vec3(0.7f);
   glossy.glossy = 0.2f;
-  scene.materials = {Material{}, mirror, glass, glossy};
+  // Textures on them all: colour, specular (projected), bump and normal maps, trilinear.
+  const auto ramp = [](int n) {
+    std::vector<Vec3> texels;
+    for (int i = 0; i < n * n; ++i) texels.push_back(Vec3(static_cast<float>(i % n) / static_cast<float>(n)));
+    return Texture(n, n, texels);
+  };
+  scene.textures = {ramp(16), ramp(8), Texture(2, 2, std::vector<Vec3>(4, Vec3(0.6f, 0.4f, 0.9f)))};
+  Material matte;
+  matte.texture.texture = 0;
+  matte.bump.height.texture = 1;
+  mirror.normal_map.map.texture = 2;
+  glossy.specular_texture.texture = 0;
+  glossy.specular_texture.mapping.projection = Projection::kSpherical;
+  glossy.specular_texture.mapping.scale = Vec2(3.0f, 2.0f);
+  scene.materials = {matte, mirror, glass, glossy};
   scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), {}},
                   RectLight{{-1, 4, -1}, {2, 0, 0}, {0, 0, 2}, Vec3(0.5f), {}, true}};
   PrimitiveSet prims;
@@ -104,7 +118,7 @@ struct OneTile {
 
 }  // namespace
 
-TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through glass) allocate nothing per ray",
+TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps) allocate nothing per ray",
           "[bvh][alloc]") {
   OneTile t{AntialiasSettings{}};
   const Scene& scene = t.scene;

@@ -9,7 +9,9 @@
 #include <catch2/catch.hpp>
 
 #include "core/color.h"
+#include "io/png_file.h"
 #include "io/texture_file.h"
+#include "tools/textures/patterns.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
@@ -118,4 +120,17 @@ TEST_CASE("texture files: missing, not an image, zero-sized or too large are err
   error.clear();
   CHECK_FALSE(load_texture(empty, TextureEncoding::kLinear, 1000, error));
   CHECK_FALSE(error.empty());
+}
+
+TEST_CASE("make_textures: the checked-in example textures are exactly what the generator makes", "[texture][tools]") {
+  for (const textures::Pattern& p : textures::patterns()) {
+    INFO(p.file);
+    std::string error;
+    const auto stored = read_png(rt::test::source_path("scenes/textures/" + p.file), error);
+    REQUIRE(stored);
+    const Rgb8Image generated = textures::render_pattern(p);
+    CHECK(stored->width == generated.width);
+    CHECK(stored->height == generated.height);
+    CHECK(stored->rgb == generated.rgb);
+  }
 }

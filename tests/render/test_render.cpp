@@ -152,3 +152,12 @@ TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
   }
   CHECK(scenes >= 2);
 }
+
+TEST_CASE("golden image: textures (every shape, natural and projected, a normal-mapped wall)",
+          "[render][golden][textures]") {
+  check_golden("textures", "scenes/textures.json", 200, 112);
+}
+
+TEST_CASE("golden image: bump maps on sphere, cube, cylinder and cone", "[render][golden][bump]") {
+  check_golden("bumps", "scenes/bumps.json", 200, 100);
+}

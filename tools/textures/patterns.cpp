@@ -135,4 +135,22 @@ const std::vector<Pattern>& patterns() {
   return all;
 }
 
+Rgb8Image render_pattern(const Pattern& p) {
+  Rgb8Image image{p.width, p.height, std::vector<uint8_t>(static_cast<size_t>(p.width) * p.height * 3)};
+  constexpr int kSub = 4;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      Vec3 sum(0.0f);
+      for (int j = 0; j < kSub; ++j)
+        for (int i = 0; i < kSub; ++i)
+          sum += p.at((static_cast<float>(x) + (static_cast<float>(i) + 0.5f) / kSub) / static_cast<float>(p.width),
+                      (static_cast<float>(y) + (static_cast<float>(j) + 0.5f) / kSub) / static_cast<float>(p.height));
+      const Vec3 v = glm::clamp(sum / static_cast<float>(kSub * kSub), Vec3(0.0f), Vec3(1.0f));
+      for (int c = 0; c < 3; ++c)
+        image.rgb[(static_cast<size_t>(y) * static_cast<size_t>(p.width) + static_cast<size_t>(x)) * 3 +
+                  static_cast<size_t>(c)] = static_cast<uint8_t>(std::lround(v[c] * 255.0f));
+    }
+  return image;
+}
+
 }  // namespace rt::textures

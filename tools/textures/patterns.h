@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "io/rgb8_image.h"
 
 namespace rt::textures {
 
@@ -20,5 +21,8 @@ struct Pattern {
 
 // Every texture, in the order the tool writes them.
 const std::vector<Pattern>& patterns();
+
+// The pattern as an 8-bit image, each texel the average of 4 x 4 points so that edges are smooth.
+Rgb8Image render_pattern(const Pattern& p);
 
 }  // namespace rt::textures
