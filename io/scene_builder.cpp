@@ -106,7 +106,9 @@ class Builder {
       if (budget < limits.texture_texels)
         why += " (all the scene's textures together may hold at most " + std::to_string(limits.scene_texels) +
                " texels; README, \"Limits\")";
-      error(ref.pointer, "expected a readable PNG or JPEG image, found \"" + ref.file + "\": " + why);
+      // load_texture says what it found: a size ("expected an image of 1 to N texels, found ...")
+      // or why the file could not be read.
+      error(ref.pointer, why.rfind("expected", 0) == 0 ? why : "expected a readable PNG or JPEG image; " + why);
     } else {
       for (int level = 0; level < texture->level_count(); ++level)
         texels_ += static_cast<uint64_t>(texture->width(level)) * static_cast<uint64_t>(texture->height(level));

@@ -2,7 +2,9 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <array>
+#include <cstring>
 #include <memory>
 
 #include "core/color.h"
@@ -18,6 +20,21 @@ std::string stb_reason() { return stbi_failure_reason() ? stbi_failure_reason() 
 struct StbFree {
   void operator()(void* p) const { stbi_image_free(p); }
 };
+
+// Width and height from a PNG file's IHDR chunk (it must come first), or false if there is none.
+bool png_header_size(const std::vector<unsigned char>& b, int& w, int& h) {
+  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() < 24 || !std::equal(kSignature, kSignature + 8, b.begin()) || std::memcmp(&b[12], "IHDR", 4) != 0)
+    return false;
+  const auto be32 = [&](size_t i) {
+    return (uint32_t{b[i]} << 24) | (uint32_t{b[i + 1]} << 16) | (uint32_t{b[i + 2]} << 8) | uint32_t{b[i + 3]};
+  };
+  const uint32_t width = be32(16), height = be32(20);
+  if (width > 0x7fffffffu || height > 0x7fffffffu) return false;
+  w = static_cast<int>(width);
+  h = static_cast<int>(height);
+  return true;
+}
 
 }  // namespace
 
@@ -40,12 +57,14 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, c
   const auto* data = bytes.data();
   const int size = static_cast<int>(bytes.size());
   int w = 0, h = 0, channels = 0;
-  if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
+  const bool known = stbi_info_from_memory(data, size, &w, &h, &channels);
+  // stb_image refuses empty and enormous PNG files without saying their size; the header does.
+  if (!known && !png_header_size(bytes, w, h)) {
     error = "cannot read \"" + path + "\" as an image (PNG or JPEG): " + stb_reason();
     return std::nullopt;
   }
   const uint64_t texels = static_cast<uint64_t>(w) * static_cast<uint64_t>(h);
-  if (w <= 0 || h <= 0 || texels > max_texels) {
+  if (!known || w <= 0 || h <= 0 || texels > max_texels) {
     error = "expected an image of 1 to " + std::to_string(max_texels) + " texels, found " + std::to_string(w) + " x " +
             std::to_string(h) + " in \"" + path + "\"";
     return std::nullopt;
