@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
   render_cmd->add_flag("--no-textures", render.no_textures, "Ignore colour and specular textures (kd and ks alone)");
   render_cmd->add_flag("--no-bumps", render.no_bumps, "Ignore bump and normal maps");
+  render_cmd->add_option("--texture-filter", render.texture_filter,
+                         "nearest, bilinear or trilinear: every texture filtered so (overrides the scene)");
   render_cmd
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")

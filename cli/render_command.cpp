@@ -94,6 +94,11 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.no_glossy) s.glossy = false;
   if (cmd.no_textures) s.detail.textures = false;
   if (cmd.no_bumps) s.detail.bumps = false;
+  if (cmd.texture_filter) {
+    const std::vector<std::string> names = texture_filter_names();
+    s.detail.override_filter = true;
+    s.detail.filter = static_cast<TextureFilter>(std::find(names.begin(), names.end(), *cmd.texture_filter) - names.begin());
+  }
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
   if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
@@ -112,6 +117,8 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.integrator && !check_name("--integrator", "integrator", *cmd.integrator, integrator_names()))
     return kExitBadInput;
   if (cmd.aa_mode && !check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names()))
+    return kExitBadInput;
+  if (cmd.texture_filter && !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
     return kExitBadInput;
   if (!check_output(output, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());

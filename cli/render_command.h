@@ -1,5 +1,5 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--shadow-samples N]
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME] [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--quiet]`
 #pragma once
@@ -28,6 +28,7 @@ struct RenderCommand {
   bool no_glossy = false;
   bool no_textures = false;
   bool no_bumps = false;
+  std::optional<std::string> texture_filter;
   bool quiet = false;
 };
 

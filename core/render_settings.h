@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/texture/texture.h"
+
 namespace rt {
 
 // Where the adaptive sampler places the rays of a cell (README, "Anti-aliasing").
@@ -24,6 +26,8 @@ struct AntialiasSettings {
 struct SurfaceDetailSwitches {
   bool textures = true;  // false (--no-textures): colour and specular textures are not read
   bool bumps = true;     // false (--no-bumps): bump and normal maps leave the normal as it is
+  bool override_filter = false;  // --texture-filter: every texture uses `filter` instead of its own
+  TextureFilter filter = TextureFilter::kTrilinear;
 };
 
 struct RenderSettings {

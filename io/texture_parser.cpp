@@ -46,7 +46,7 @@ void parse_mapping(const JsonReader& r, ObjectReader& o, TextureMapping& m) {
       m.wrap = static_cast<TextureWrap>(*k);
   }
   if (const Json* f = o.get("filter")) {
-    if (const auto k = read_choice(r, *f, o.child("filter"), {"nearest", "bilinear", "trilinear"}))
+    if (const auto k = read_choice(r, *f, o.child("filter"), texture_filter_names()))
       m.filter = static_cast<TextureFilter>(*k);
   }
 }

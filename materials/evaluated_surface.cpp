@@ -6,13 +6,19 @@
 namespace rt {
 namespace {
 
+Vec3 sample(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 uv, float footprint,
+            SurfaceDetailSwitches detail) {
+  const TextureFilter filter = detail.override_filter ? detail.filter : slot.mapping.filter;
+  return textures[slot.texture].sample(uv, slot.mapping.wrap, filter, footprint);
+}
+
 // The outward shading normal after the material's normal map, then its bump map.
 Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direction,
-                     const std::vector<Texture>& textures, float cone_width) {
+                     const std::vector<Texture>& textures, float cone_width, SurfaceDetailSwitches detail) {
   Vec3 n = si.shading_normal;
   if (m.normal_map.map.present()) {
     const MappedPoint p = map_point(m.normal_map.map.mapping, si);
-    const Vec3 texel = sample_slot(m.normal_map.map, textures, p.uv, uv_footprint(p, n, direction, cone_width));
+    const Vec3 texel = sample(m.normal_map.map, textures, p.uv, uv_footprint(p, n, direction, cone_width), detail);
     // The file's own tangents (glTF TANGENT) belong to its first texture coordinates, unmoved.
     const TextureMapping& mapping = m.normal_map.map.mapping;
     const bool file_tangents = si.tangent.w != 0.0f && mapping.projection == Projection::kUv && mapping.uv_set == 0 &&
@@ -25,7 +31,8 @@ Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direc
     SurfaceInteraction tilted = si;
     tilted.shading_normal = n;
     const MappedPoint p = map_point(m.bump.height.mapping, tilted);
-    const Vec2 h = height_gradient(m.bump, textures, p.uv, uv_footprint(p, n, direction, cone_width));
+    const Vec2 h = height_gradient(m.bump, textures, p.uv, uv_footprint(p, n, direction, cone_width),
+                                   detail.override_filter ? detail.filter : m.bump.height.mapping.filter);
     n = blinn_bump(n, p.dpdu, p.dpdv, h.x, h.y);
   }
   return n;
@@ -43,7 +50,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   const float side = si.front_face ? 1.0f : -1.0f;
   s.ng = side * si.geometric_normal;
   const bool detailed = detail.bumps && (m.normal_map.map.present() || m.bump.height.present());
-  s.n = side * (detailed ? detailed_normal(m, si, -s.wo, textures, cone_width) : si.shading_normal);
+  s.n = side * (detailed ? detailed_normal(m, si, -s.wo, textures, cone_width, detail) : si.shading_normal);
   // A tilted normal can turn away from the viewer near a silhouette, where Phong would go black:
   // bend it back just past the edge of visibility.
   if (detailed) {
@@ -55,11 +62,12 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   Vec3 kd = m.kd, ks = m.ks;
   if (detail.textures && m.texture.present()) {
     const MappedPoint p = map_point(m.texture.mapping, si);
-    kd *= sample_slot(m.texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
+    kd *= sample(m.texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width), detail);
   }
   if (detail.textures && m.specular_texture.present()) {
     const MappedPoint p = map_point(m.specular_texture.mapping, si);
-    ks *= sample_slot(m.specular_texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width));
+    ks *= sample(m.specular_texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width),
+                 detail);
   }
   s.diffuse = kd * (Vec3(1.0f) - m.transmission);
   s.specular = ks;

@@ -12,11 +12,12 @@ Vec3 blinn_bump(Vec3 n, Vec3 dpdu, Vec3 dpdv, float hu, float hv) {
   return len > 0.0f && std::isfinite(len) ? tilted / len : n;
 }
 
-Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, float footprint) {
+Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, float footprint,
+                     TextureFilter filter) {
   const Texture& map = textures[bump.height.texture];
   const TextureMapping& m = bump.height.mapping;
   const auto height = [&](Vec2 at) {
-    const Vec3 t = map.sample(at, m.wrap, m.filter, footprint);
+    const Vec3 t = map.sample(at, m.wrap, filter, footprint);
     return (t.x + t.y + t.z) / 3.0f;
   };
   const float eu = std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.width()),

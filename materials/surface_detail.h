@@ -20,7 +20,9 @@ Vec3 blinn_bump(Vec3 n, Vec3 dpdu, Vec3 dpdv, float hu, float hv);
 // The height map's derivatives by central differences, Bu = (B(u + E, v) - B(u - E, v)) / 2E and
 // likewise Bv, times bump.strength; B is the mean of a texel's channels. E is bump.epsilon, or
 // one texel when that is 0, widened to half the footprint so that a far surface is not aliased.
-Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, float footprint);
+// `filter` is the mapping's, or the one --texture-filter imposes.
+Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, float footprint,
+                     TextureFilter filter);
 
 // A tangent-space normal map's texel (RGB in [0, 1]) in the frame of unit normal n: tangent t
 // (made perpendicular to n here), bitangent cross(n, t) * handedness; scale multiplies x and y.

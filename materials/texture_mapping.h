@@ -3,8 +3,6 @@
 // tangent plane (du/dP, dv/dP: how fast the texture runs past, which picks the mip level).
 #pragma once
 
-#include <vector>
-
 #include "core/hit.h"
 #include "core/texture/texture_mapping.h"
 
@@ -34,10 +32,5 @@ MappedPoint map_point(const TextureMapping& mapping, const SurfaceInteraction& s
 // meets the surface along unit `direction`: the larger axis of its elliptical footprint
 // (width across, width / cos(theta) along the surface), as a GPU picks its level of detail.
 float uv_footprint(const MappedPoint& p, Vec3 normal, Vec3 direction, float width);
-
-// The slot's texture at the point, filtered for `footprint` (uv units).
-inline Vec3 sample_slot(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 uv, float footprint) {
-  return textures[slot.texture].sample(uv, slot.mapping.wrap, slot.mapping.filter, footprint);
-}
 
 }  // namespace rt

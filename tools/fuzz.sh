@@ -2,11 +2,12 @@
 # Builds the libFuzzer targets (clang, with AddressSanitizer and UndefinedBehaviorSanitizer) in
 # build-fuzz/ and runs one of them:
 #
-#   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]      TARGET: scene | gltf | bvh
+#   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]      TARGET: scene | gltf | bvh | texture
 #
 #   scene  JSON scene files: parse, check, build, render a few pixels
 #   gltf   glTF models (.gltf text and .glb): import, place, build a BVH
 #   bvh    the BVH builder and traversal on triangles with extreme coordinates
+#   texture  image files (PNG, JPEG): decode, build mip levels, sample with every filter and wrap
 #
 # The corpus lives in build-fuzz/corpus/TARGET, seeded on the first run from scenes/, tests/,
 # ../shared/gltf and tests/fuzz/regressions/TARGET. An input that crashes, leaks, hangs (10 s),
@@ -14,8 +15,8 @@
 # Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-if [ $# -lt 2 ] || ! [[ "$1" =~ ^(scene|gltf|bvh)$ ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
-  echo "usage: tools/fuzz.sh scene|gltf|bvh SECONDS [libFuzzer options...]" >&2
+if [ $# -lt 2 ] || ! [[ "$1" =~ ^(scene|gltf|bvh|texture)$ ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
+  echo "usage: tools/fuzz.sh scene|gltf|bvh|texture SECONDS [libFuzzer options...]" >&2
   exit 2
 fi
 target="$1" seconds="$2"
@@ -41,6 +42,7 @@ if [ -z "$(ls -A "$corpus")" ]; then
     scene) seed "$root"/scenes/*.json "$root"/tests/data/**/*.json ;;
     gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
     bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
+    texture) seed "$root"/scenes/textures/*.png "$root"/tests/data/bad/textures/*.png "$root"/../shared/gltf/**/*.png ;;
   esac
   seed "$root"/tests/fuzz/regressions/"$target"/*
 fi

@@ -4,9 +4,9 @@
 
 namespace rt {
 
-Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx) {
+Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx, float spacing) {
   const RenderSettings& s = ctx.settings;
-  TraceContext trace{ctx.scene, s, ctx.counters, samples, ctx.scene.camera.pixel_spread(s.height)};
+  TraceContext trace{ctx.scene, s, ctx.counters, samples, spacing * ctx.scene.camera.pixel_spread(s.height)};
   ++ctx.counters[RayKind::kCamera];
   // The lens sample is keyed like every other number: a pinhole camera ignores it.
   const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
@@ -58,7 +58,8 @@ class UniformSampler final : public PerPixelSampler {
         const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
         const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
         sum += trace_camera_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx);
+                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx,
+                                   step);
       }
     return FilmPixel{sum * (step * step), static_cast<uint16_t>(n_ * n_), 0};
   }

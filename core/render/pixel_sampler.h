@@ -58,7 +58,9 @@ bool render_pixels(const Tile& tile, const PixelContext& ctx, FilmTile& out, Pix
 }
 
 // Radiance of one camera ray through continuous pixel position (px, py), with the keyed numbers
-// of its sample (its lens position among them). Counts the camera ray.
-Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx);
+// of its sample (its lens position among them). Counts the camera ray. `spacing`: the distance in
+// pixels to the neighbouring camera samples (1 / n for n x n per pixel), which narrows the ray
+// cone that picks texture mip levels.
+Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx, float spacing = 1.0f);
 
 }  // namespace rt

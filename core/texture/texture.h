@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/math.h"
@@ -16,6 +17,9 @@ namespace rt {
 
 enum class TextureWrap : uint8_t { kRepeat, kClamp, kMirror };
 enum class TextureFilter : uint8_t { kNearest, kBilinear, kTrilinear };
+
+// The names scene files and --texture-filter use, in enum order.
+inline std::vector<std::string> texture_filter_names() { return {"nearest", "bilinear", "trilinear"}; }
 
 class Texture {
  public:

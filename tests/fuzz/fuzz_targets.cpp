@@ -17,6 +17,7 @@
 #include "io/json_document.h"
 #include "io/scene_builder.h"
 #include "io/scene_parser.h"
+#include "io/texture_file.h"
 
 namespace rt::fuzz {
 namespace {
@@ -158,6 +159,26 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (!std::includes(seen_brute.begin(), seen_brute.end(), seen_bvh.begin(), seen_bvh.end()))
       return "for_each_hit reported a crossing brute force did not";
     if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
+  }
+  return "";
+}
+
+std::string texture_image(const uint8_t* data, size_t size) {
+  const std::vector<unsigned char> bytes(data, data + size);
+  for (const TextureEncoding encoding : {TextureEncoding::kSrgb, TextureEncoding::kLinear}) {
+    std::string error;
+    const auto texture = decode_texture(bytes, "fuzz input", encoding, uint64_t{1} << 20, error);
+    if (!texture) {
+      if (error.empty()) return "decode_texture failed without saying why";
+      return "";
+    }
+    if (texture->width() < 1 || texture->height() < 1) return "a decoded texture has no texels";
+    const Vec2 points[] = {{0.5f, 0.5f}, {-1e30f, 3.0f}, {1e30f, -0.25f}, {kInfinity, 0.0f}, {std::nanf(""), 1.0f}};
+    for (const Vec2 uv : points)
+      for (const TextureWrap wrap : {TextureWrap::kRepeat, TextureWrap::kClamp, TextureWrap::kMirror})
+        for (const TextureFilter filter : {TextureFilter::kNearest, TextureFilter::kBilinear, TextureFilter::kTrilinear})
+          for (const float footprint : {0.0f, 0.01f, 1e9f})
+            if (!is_finite(texture->sample(uv, wrap, filter, footprint))) return "a texture sample is not finite";
   }
   return "";
 }

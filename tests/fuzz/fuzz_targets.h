@@ -19,6 +19,10 @@ std::string gltf_model(const uint8_t* data, size_t size);
 // dropped): build a BVH, check its structure and trace rays against brute force.
 std::string bvh_build(const uint8_t* data, size_t size);
 
+// An image file (PNG, JPEG, anything stb_image sniffs): decode as colour and as data, then
+// sample it with every filter and wrap mode at extreme coordinates; every value must be finite.
+std::string texture_image(const uint8_t* data, size_t size);
+
 // For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.
 int abort_on_problem(const std::string& problem);
 
