@@ -48,8 +48,11 @@ bool write_file(std::string* err, const std::string&, const std::vector<unsigned
   return false;
 }
 
-// Textures are not decoded here (texture mapping loads its own images); accept every image.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are not decoded here: an embedded one (data URI or buffer view) keeps its encoded bytes
+// in image->image, and the importer decodes only those a material it maps actually uses.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  if (bytes && size > 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 
@@ -116,7 +119,7 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
   auto model = std::make_shared<tinygltf::Model>();
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});
-  loader.SetImageLoader(&skip_image, nullptr);
+  loader.SetImageLoader(&keep_encoded_image, nullptr);
   std::string err, warn;
   bool ok = false;
   try {

@@ -1,5 +1,6 @@
 #include "io/gltf_loader.h"
 
+#include <cctype>
 #include <filesystem>
 
 #include <tiny_gltf.h>
@@ -11,6 +12,7 @@
 #include "io/gltf_file.h"
 #include "io/input_file.h"
 #include "io/pbr_to_phong.h"
+#include "io/texture_file.h"
 
 namespace rt {
 namespace {
@@ -119,12 +121,28 @@ class Importer {
         ip.mesh.normals[i] = (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);  // zero: use the face normal
       }
     }
-    if (const auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+    for (const auto& [name, uvs] : {std::pair{"TEXCOORD_0", &ip.mesh.uvs}, std::pair{"TEXCOORD_1", &ip.mesh.uvs1}}) {
+      const auto it = prim.attributes.find(name);
+      if (it == prim.attributes.end()) continue;
       if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, error_))
-        return fail(where + " TEXCOORD_0: " + error_);
-      if (raw.size() / 2 != n) return fail(where + ": TEXCOORD_0 and POSITION counts differ");
-      ip.mesh.uvs.resize(n);
-      for (size_t i = 0; i < n; ++i) ip.mesh.uvs[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
+        return fail(where + " " + name + ": " + error_);
+      if (raw.size() / 2 != n) return fail(where + ": " + name + " and POSITION counts differ");
+      uvs->resize(n);
+      for (size_t i = 0; i < n; ++i) (*uvs)[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
+    }
+    if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+      if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, error_))
+        return fail(where + " TANGENT: " + error_);
+      if (raw.size() / 4 != n) return fail(where + ": TANGENT and POSITION counts differ");
+      ip.mesh.tangents.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3 t(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
+        const float len = glm::length(t);
+        // A zero or broken tangent falls back to the frame from the UVs (w = 0 means none).
+        ip.mesh.tangents[i] = len > 0.0f && std::isfinite(len) && std::isfinite(raw[4 * i + 3])
+                                  ? Vec4(t / len, raw[4 * i + 3] < 0.0f ? -1.0f : 1.0f)
+                                  : Vec4(0.0f);
+      }
     }
     std::vector<uint32_t> indices;
     if (prim.indices >= 0) {
@@ -150,6 +168,88 @@ class Importer {
   ImportedModel& out_;
   std::string& error_;
   std::vector<bool> imported_;
+};
+
+// "%20" -> " ": glTF URIs are percent-encoded.
+std::string percent_decoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const auto hex = [&](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) && hex(uri[i + 2])) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// glTF textures a material uses, each image decoded once into ImportedModel::textures. An image
+// that cannot be used is a warning and leaves the slot empty: the model still renders.
+class ImageDecoder {
+ public:
+  ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits, ImportedModel& out)
+      : model_(model), base_dir_(base_dir), limits_(limits), out_(out), decoded_(model.images.size(), kNoTexture - 1) {}
+
+  // A data texture slot (normal maps are data, not colour) for glTF texture `index`.
+  TextureSlot slot(int index, int texcoord, const std::string& where) {
+    TextureSlot slot;
+    slot.mapping.uv_set = texcoord == 1 ? 1u : 0u;
+    if (texcoord < 0 || texcoord > 1) out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
+    if (index < 0 || static_cast<size_t>(index) >= model_.textures.size()) {
+      out_.warnings.push_back(where + ": texture " + to_string(index) + " does not exist; ignored");
+      return slot;
+    }
+    const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(index)];
+    if (texture.sampler >= 0 && static_cast<size_t>(texture.sampler) < model_.samplers.size()) {
+      const int wrap = model_.samplers[static_cast<size_t>(texture.sampler)].wrapS;
+      slot.mapping.wrap = wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE       ? TextureWrap::kClamp
+                          : wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
+                                                                            : TextureWrap::kRepeat;
+    }
+    if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
+      out_.warnings.push_back(where + ": texture " + to_string(index) + " has no image; ignored");
+      return slot;
+    }
+    slot.texture = decode(static_cast<size_t>(texture.source), where);
+    return slot;
+  }
+
+ private:
+  uint32_t decode(size_t image_index, const std::string& where) {
+    uint32_t& done = decoded_[image_index];
+    if (done != kNoTexture - 1) return done;
+    done = kNoTexture;
+    const tinygltf::Image& image = model_.images[image_index];
+    std::string name = "image " + to_string(image_index), error;
+    std::vector<unsigned char> bytes = image.image;
+    if (bytes.empty() && !image.uri.empty()) {
+      const std::string path = resolve_path(base_dir_, percent_decoded(image.uri));
+      name = "\"" + path + "\"";
+      auto file = read_input_bytes(path, limits_.gltf_total_bytes, error);
+      if (!file) {
+        out_.warnings.push_back(where + ": cannot read " + name + " (" + error + "); ignored");
+        return done;
+      }
+      out_.files.push_back(path);
+      bytes = std::move(*file);
+    }
+    auto texture = decode_texture(bytes, name, TextureEncoding::kLinear, limits_.texture_texels, error);
+    if (!texture) {
+      out_.warnings.push_back(where + ": " + error + "; ignored");
+      return done;
+    }
+    done = static_cast<uint32_t>(out_.textures.size());
+    out_.textures.push_back(std::move(*texture));
+    return done;
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& base_dir_;
+  const LoadLimits& limits_;
+  ImportedModel& out_;
+  std::vector<uint32_t> decoded_;  // per image: its texture, kNoTexture if unusable, kNoTexture - 1 if not tried
 };
 
 // The default scene's node forest, walked without recursion. glTF requires the nodes to form
@@ -231,14 +331,20 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   out.warnings = std::move(file.warnings);
   if (!file.model) return std::nullopt;
   const tinygltf::Model& model = *file.model;
+  ImageDecoder images(model, base_dir, limits, out);
   for (const tinygltf::Material& m : model.materials) {
     const auto& pbr = m.pbrMetallicRoughness;
     const Vec3 base = pbr.baseColorFactor.size() >= 3
                           ? Vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                                  static_cast<float>(pbr.baseColorFactor[2]))
                           : Vec3(1.0f);
-    out.materials.push_back(
-        pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor)));
+    Material material =
+        pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor));
+    if (m.normalTexture.index >= 0) {
+      material.normal_map.map = images.slot(m.normalTexture.index, m.normalTexture.texCoord, "material \"" + m.name + "\" normalTexture");
+      material.normal_map.scale = static_cast<float>(m.normalTexture.scale);
+    }
+    out.materials.push_back(material);
   }
   Importer importer(model, limits, out, error);
 

@@ -11,6 +11,7 @@
 
 #include "core/material.h"
 #include "core/mesh.h"
+#include "core/texture/texture.h"
 #include "io/load_options.h"
 
 namespace rt {
@@ -28,7 +29,8 @@ struct MeshInstance {
 struct ImportedModel {
   std::vector<std::vector<ImportedPrimitive>> meshes;  // per glTF mesh
   std::vector<MeshInstance> instances;
-  std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong
+  std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong; texture slots index `textures`
+  std::vector<Texture> textures;    // the images the materials use (normal maps), decoded once each
   std::vector<std::string> warnings;
   std::vector<std::string> files;  // every file read: the model and its external buffers
 };

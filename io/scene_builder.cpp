@@ -160,7 +160,7 @@ class Builder {
       }
       for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
       LoadedModel loaded{std::move(*model), static_cast<uint32_t>(materials_.size())};
-      materials_.insert(materials_.end(), loaded.model.materials.begin(), loaded.model.materials.end());
+      add_model_materials(loaded.model, ref.pointer);
       it = models_.emplace(key, std::move(loaded)).first;
     }
     const LoadedModel& loaded = it->second;
@@ -195,6 +195,25 @@ class Builder {
       }
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
+  }
+
+  // The model's materials, their texture slots moved to where its textures land in the scene.
+  void add_model_materials(ImportedModel& model, const std::string& pointer) {
+    const auto first_texture = static_cast<uint32_t>(textures_.size());
+    for (Texture& t : model.textures) {
+      for (int level = 0; level < t.level_count(); ++level)
+        texels_ += static_cast<uint64_t>(t.width(level)) * static_cast<uint64_t>(t.height(level));
+      textures_.push_back(std::move(t));
+    }
+    if (texels_ > options_.limits.scene_texels)
+      limit_error(pointer, "expected at most " + std::to_string(options_.limits.scene_texels) +
+                               " texels in all the scene's textures together, found more");
+    model.textures.clear();
+    for (Material m : model.materials) {
+      for (TextureSlot* slot : {&m.texture, &m.specular_texture, &m.bump.height, &m.normal_map.map})
+        if (slot->present()) slot->texture += first_texture;
+      materials_.push_back(m);
+    }
   }
 
   // Our Material defaults stand in for glTF's default material (which a Phong model can't match).

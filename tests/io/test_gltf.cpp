@@ -196,3 +196,29 @@ TEST_CASE("glTF: out-of-bounds accessors and indices are errors, not crashes", "
   CHECK_FALSE(import(write_gltf("stride.gltf", buffer, doc), error));
   CHECK_THAT(error.message, Catch::Contains("byteStride"));
 }
+
+TEST_CASE("glTF samples: Avocado's normal map, with its TANGENT attribute", "[io][gltf][normalmap]") {
+  if (!rt::test::have_sample_models()) {
+    WARN("../shared/gltf not found: sample-model tests skipped");
+    return;
+  }
+  ImportError error;
+  const auto model = import(rt::test::sample_model("Avocado/glTF/Avocado.gltf"), error);
+  INFO(error.message);
+  REQUIRE(model);
+  REQUIRE(model->materials.size() == 1);
+  const NormalMap& normal_map = model->materials[0].normal_map;
+  REQUIRE(normal_map.map.present());
+  CHECK(normal_map.scale == 1.0f);
+  REQUIRE(model->textures.size() == 1);  // only the normal map is decoded; colour maps are issue 9's
+  CHECK(model->textures[0].width() == 2048);
+  const TriangleMesh& mesh = model->meshes[model->instances[0].mesh][0].mesh;
+  REQUIRE(mesh.tangents.size() == mesh.positions.size());
+  for (const Vec4& t : mesh.tangents) {
+    CHECK(glm::length(Vec3(t)) == Approx(1.0f).epsilon(1e-4));
+    CHECK(std::fabs(t.w) == 1.0f);
+  }
+  CHECK(std::any_of(model->files.begin(), model->files.end(), [](const std::string& f) {
+    return std::filesystem::path(f).filename() == "Avocado_normal.png";
+  }));
+}
