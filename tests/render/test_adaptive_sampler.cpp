@@ -2,6 +2,9 @@
 // and that its image depends on nothing but the scene, the settings and the seed.
 #include <string>
 
+#include <functional>
+#include <string>
+
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
@@ -20,7 +23,11 @@ LoadedScene half_plane(const std::string& antialias, bool edge = true) {
   const std::string transform =
       edge ? R"({ "translate": [-24.925, 0, -5], "rotate": [90, 0, 0], "scale": [25.075, 1, 50] })"
            : R"({ "translate": [0, 0, -5], "rotate": [90, 0, 0], "scale": [50, 1, 50] })";
-  return rt::test::load_scene_text("adaptive_half_plane.json", R"({
+  // One file name per content: ctest runs test cases as parallel processes, and two of them
+  // writing the same file under each other made the edge test read the flat scene.
+  const std::string name =
+      "adaptive_half_plane_" + std::to_string(std::hash<std::string>{}(antialias + transform)) + ".json";
+  return rt::test::load_scene_text(name, R"({
       "render": { "width": 20, "height": 20, "antialias": )" + antialias +
                                                                    R"( },
       "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 90 },
