@@ -31,7 +31,7 @@ int run_bench(const BenchCommand& cmd) {
     const auto loaded = load_scene(cmd.model, cli_load_options(), diags);
     print_diagnostics(stderr, diags);
     if (!loaded) return kExitBadInput;
-    prims = make_primitive_set(loaded->scene.meshes, loaded->scene.bvh.shapes());
+    prims = make_primitive_set(loaded->scene.world_meshes(), loaded->scene.bvh.shapes());
     what = cmd.model;
   }
   const unsigned all = resolve_thread_count(0);

@@ -14,7 +14,7 @@ struct Hit {
   float t = kInfinity;
   uint32_t prim = kNoPrimitive;  // primitive id (see core/accel/primitives.h)
   float b1 = 0.0f, b2 = 0.0f;    // triangle barycentrics of vertices 1 and 2
-  uint32_t part = 0;             // analytic shapes: which face / cap / side was hit
+  uint32_t part = 0;             // analytic shapes: which face / cap / side; mesh instances: the triangle
 };
 
 // Object-space local geometry of an analytic shape at a point: the outward unit normal, the

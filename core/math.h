@@ -26,6 +26,7 @@ inline float max_component(Vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline float max_abs_component(Vec3 v) { return max_component(glm::abs(v)); }
 
 inline bool is_finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(Vec4 v) { return is_finite(Vec3(v)) && std::isfinite(v.w); }
 
 // Any unit vector perpendicular to n (n must be unit length). Branchless construction from
 // Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017).

@@ -31,35 +31,52 @@ UvFrame interpolate_uv_frame(const std::vector<Vec2>& uvs, uint32_t i0, uint32_t
 
 }  // namespace
 
-SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit) {
+SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit,
+                                const Transform& placement) {
   const uint32_t i0 = mesh.indices[3 * triangle], i1 = mesh.indices[3 * triangle + 1],
                  i2 = mesh.indices[3 * triangle + 2];
   const float b0 = 1.0f - hit.b1 - hit.b2;
   const Vec3 p0 = mesh.positions[i0], p1 = mesh.positions[i1], p2 = mesh.positions[i2];
   const Vec3 e1 = p1 - p0, e2 = p2 - p0;
 
-  SurfaceInteraction si;
-  si.position = b0 * p0 + hit.b1 * p1 + hit.b2 * p2;
-  si.geometric_normal = glm::normalize(glm::cross(e1, e2));
-  si.shading_normal = si.geometric_normal;
+  // Object space first.
+  const Vec3 position = b0 * p0 + hit.b1 * p1 + hit.b2 * p2;
+  Vec3 geometric = glm::cross(e1, e2);
+  Vec3 shading = geometric;
   if (!mesh.normals.empty()) {
     const Vec3 n = b0 * mesh.normals[i0] + hit.b1 * mesh.normals[i1] + hit.b2 * mesh.normals[i2];
-    const float len = glm::length(n);
-    if (len > 1e-8f) {
-      si.shading_normal = n / len;
+    if (glm::length(n) > 1e-8f) {
+      shading = n;
       // Vertex normals state which side is outside; trust them over the winding.
-      if (glm::dot(si.shading_normal, si.geometric_normal) < 0.0f) si.geometric_normal = -si.geometric_normal;
+      if (glm::dot(shading, geometric) < 0.0f) geometric = -geometric;
     }
   }
-
-  si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, si.geometric_normal);
-  si.texcoord[1] = mesh.uvs1.empty() ? si.texcoord[0]
-                                     : interpolate_uv_frame(mesh.uvs1, i0, i1, i2, hit, e1, e2, si.geometric_normal);
+  const Vec3 object_normal = glm::normalize(geometric);
+  SurfaceInteraction si;
+  si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, object_normal);
+  si.texcoord[1] =
+      mesh.uvs1.empty() ? si.texcoord[0] : interpolate_uv_frame(mesh.uvs1, i0, i1, i2, hit, e1, e2, object_normal);
   if (!mesh.tangents.empty())
     si.tangent = b0 * mesh.tangents[i0] + hit.b1 * mesh.tangents[i1] + hit.b2 * mesh.tangents[i2];
-  si.object_position = mesh.placement.point_to_object(si.position);
-  si.object_from_world = Mat3(mesh.placement.to_object);
-  si.material = mesh.material;
+
+  // Then out to the world.
+  si.position = placement.point_to_world(position);
+  si.geometric_normal = placement.normal_to_world_unit(geometric);
+  si.shading_normal = placement.normal_to_world_unit(shading);
+  for (UvFrame& f : si.texcoord) {
+    f.dpdu = placement.vector_to_world(f.dpdu);
+    f.dpdv = placement.vector_to_world(f.dpdv);
+  }
+  if (si.tangent.w != 0.0f) {
+    // The bitangent is cross(normal, tangent) * w; a mirror flips that cross product, so w flips too.
+    const bool mirrors = glm::determinant(Mat3(placement.to_world)) < 0.0f;
+    const Vec3 t = placement.vector_to_world(Vec3(si.tangent));
+    const float len = glm::length(t);
+    si.tangent =
+        len > 0.0f && std::isfinite(len) ? Vec4(t / len, mirrors == (si.tangent.w < 0.0f) ? 1.0f : -1.0f) : Vec4(0.0f);
+  }
+  si.object_position = position;
+  si.object_from_world = Mat3(placement.to_object);
   si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
   return si;
 }
@@ -78,7 +95,6 @@ TriangleMesh transformed(const TriangleMesh& mesh, const Transform& t) {
   }
   if (mirrors)
     for (size_t i = 0; i + 2 < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
-  out.placement = compose(t, mesh.placement);
   return out;
 }
 

@@ -1,6 +1,7 @@
-// An indexed triangle mesh in world space, as the scene builder produced it from glTF.
-// Normals and UVs are optional (empty when the file had none); without normals a mesh is
-// shaded flat with its geometric normals, as the glTF specification requires.
+// An indexed triangle mesh in its own (object) space, as imported from glTF: scenes place it
+// with MeshInstance (core/accel/mesh_instance.h), once or many times. Normals and UVs are
+// optional (empty when the file had none); without normals a mesh is shaded flat with its
+// geometric normals, as the glTF specification requires.
 #pragma once
 
 #include <cstdint>
@@ -20,20 +21,21 @@ struct TriangleMesh {
   std::vector<Vec2> uvs1;         // per vertex (TEXCOORD_1); empty = none
   std::vector<Vec4> tangents;     // per vertex (TANGENT: unit xyz, handedness w = +-1); empty = none
   std::vector<uint32_t> indices;  // three per triangle, each < positions.size()
-  uint32_t material = 0;
-  // Where the mesh's own (object) space went: the projections of texture mapping work there.
-  Transform placement;
 
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
 // The mesh moved by an affine transform: positions by it, normals by its inverse transpose,
-// tangents by its linear part; `placement` records the move. A
-// mirroring transform (negative determinant) also reverses the winding, so that the geometric
-// normal from the winding keeps pointing the same way relative to the surface.
+// tangents by its linear part. A mirroring transform (negative determinant) also reverses the
+// winding, so that the geometric normal from the winding keeps pointing the same way relative
+// to the surface (glTF's rule for negative scales). For flat, one-level reference structures.
 TriangleMesh transformed(const TriangleMesh& mesh, const Transform& t);
 
-// World-space surface of triangle `triangle` of the mesh at barycentrics (b1, b2).
-SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit);
+// World-space surface of triangle `triangle` of the mesh placed by `placement`, at the hit's
+// barycentrics (b1, b2); `ray` is the world ray. Computed in object space and carried out:
+// normals through the inverse transpose (which keeps them outward under a mirror, as glTF
+// asks), tangent frames through the linear part, the tangent's handedness flipped by a mirror.
+SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, const Hit& hit,
+                                const Transform& placement);
 
 }  // namespace rt

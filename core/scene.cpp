@@ -1,27 +1,23 @@
 #include "core/scene.h"
 
-#include <algorithm>
-
 namespace rt {
-namespace {
-
-// Meshes are few; a binary search over their first primitive ids finds a triangle's owner.
-size_t mesh_of(const std::vector<uint32_t>& first_triangle, uint32_t prim) {
-  const auto it = std::upper_bound(first_triangle.begin(), first_triangle.end(), prim);
-  return static_cast<size_t>(it - first_triangle.begin()) - 1;
-}
-
-}  // namespace
 
 SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
-  if (!bvh.is_triangle(hit.prim)) return shape_surface(bvh.shape(hit.prim), ray, hit);
-  const size_t mesh = mesh_of(mesh_first_triangle, hit.prim);
-  return mesh_surface(meshes[mesh], hit.prim - mesh_first_triangle[mesh], ray, hit);
+  if (!bvh.is_instance(hit.prim)) return shape_surface(bvh.shape(hit.prim), ray, hit);
+  const MeshInstance& instance = bvh.instance(hit.prim);
+  SurfaceInteraction si = mesh_surface(assets->meshes[instance.mesh].mesh, hit.part, ray, hit, instance.transform);
+  si.material = instance.material;
+  return si;
 }
 
 uint32_t Scene::material_of(uint32_t prim) const {
-  if (!bvh.is_triangle(prim)) return bvh.shape(prim).material;
-  return meshes[mesh_of(mesh_first_triangle, prim)].material;
+  return bvh.is_instance(prim) ? bvh.instance(prim).material : bvh.shape(prim).material;
+}
+
+std::vector<TriangleMesh> Scene::world_meshes() const {
+  std::vector<TriangleMesh> out;
+  for (const MeshInstance& i : bvh.instances()) out.push_back(transformed(assets->meshes[i.mesh].mesh, i.transform));
+  return out;
 }
 
 }  // namespace rt

@@ -1,35 +1,40 @@
-// The immutable, render-ready scene. io/ builds it; the renderer and every thread only read it.
+// One immutable, render-ready frame: the camera, the lights and the top-level BVH that places
+// shapes and the shared meshes where they are at this moment. io builds it (for an animation,
+// core/scene_graph.h builds one per frame); the renderer and every thread only read it.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/accel/bvh.h"
 #include "core/camera.h"
 #include "core/lights/light.h"
-#include "core/material.h"
-#include "core/mesh.h"
-#include "core/texture/texture.h"
+#include "core/scene_assets.h"
 
 namespace rt {
 
 struct Scene {
+  std::shared_ptr<const SceneAssets> assets = std::make_shared<const SceneAssets>();
   Camera camera;
   Vec3 background{0.0f};  // radiance of rays that hit nothing
   Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
-  std::vector<Material> materials;
-  std::vector<Texture> textures;  // what materials' texture slots index, each file loaded once
   std::vector<Light> lights;
-  std::vector<TriangleMesh> meshes;           // world space, for surface details of triangle hits
-  std::vector<uint32_t> mesh_first_triangle;  // primitive id of each mesh's first triangle
-  Bvh bvh;                                    // all triangles of all meshes, then all analytic shapes
+  Bvh bvh;  // top level: analytic shapes and mesh instances (each pointing into assets->meshes)
+
+  const std::vector<Material>& materials() const { return assets->materials; }
+  const std::vector<Texture>& textures() const { return assets->textures; }
 
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
-  // The material index of primitive `prim`.
+  // The material index of primitive `prim` of the top-level BVH.
   uint32_t material_of(uint32_t prim) const;
 
   // The full surface record of a hit returned by intersect().
   SurfaceInteraction surface(const Ray& ray, const Hit& hit) const;
+
+  // Every placed mesh copied into world space, in instance order: for one-level reference
+  // structures (tests, the ray benchmark), not for rendering.
+  std::vector<TriangleMesh> world_meshes() const;
 };
 
 }  // namespace rt

@@ -7,6 +7,7 @@
 
 #include "core/aabb.h"
 #include "core/math.h"
+#include "core/ray.h"
 
 namespace rt {
 
@@ -30,6 +31,15 @@ std::optional<Transform> make_transform(const Mat4& to_world);
 inline Transform compose(const Transform& outer, const Transform& inner) {
   return Transform{outer.to_world * inner.to_world, inner.to_object * outer.to_object,
                    outer.normal_to_world * inner.normal_to_world};
+}
+
+// The ray in the object space of `t`: origin and direction through to_object, the interval
+// unchanged. The direction is not renormalised, so a t found there is the same t in world space.
+inline Ray object_ray(const Transform& t, const Ray& ray) {
+  Ray r = ray;
+  r.origin = t.point_to_object(ray.origin);
+  r.direction = t.vector_to_object(ray.direction);
+  return r;
 }
 
 // Translate-rotate-scale as written in scene files: M = T * Rz * Ry * Rx * S, i.e. a point is

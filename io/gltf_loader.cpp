@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "io/gltf_accessor.h"
+#include "io/gltf_animation.h"
 #include "io/gltf_file.h"
 #include "io/input_file.h"
 #include "io/pbr_to_phong.h"
@@ -19,24 +20,26 @@ namespace {
 
 using std::to_string;
 
-Mat4 node_matrix(const tinygltf::Node& node) {
+// The node's local transform as glTF gives it: a matrix, or translation, rotation and scale.
+void read_node_transform(const tinygltf::Node& node, ImportedNode& out) {
   if (node.matrix.size() == 16) {
     Mat4 m;
     for (int i = 0; i < 16; ++i)
       glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<size_t>(i)]);  // column-major
-    return m;
+    out.matrix = m;
+    return;
   }
-  Mat4 m(1.0f);
-  if (node.translation.size() == 3)
-    m = glm::translate(m, Vec3(static_cast<float>(node.translation[0]), static_cast<float>(node.translation[1]),
-                               static_cast<float>(node.translation[2])));
-  if (node.rotation.size() == 4)  // glTF quaternions are (x, y, z, w); GLM's constructor takes w first
-    m *= glm::mat4_cast(glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-                                  static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
-  if (node.scale.size() == 3)
-    m = glm::scale(m, Vec3(static_cast<float>(node.scale[0]), static_cast<float>(node.scale[1]),
-                           static_cast<float>(node.scale[2])));
-  return m;
+  const auto vec3 = [](const std::vector<double>& v) {
+    return Vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+  };
+  if (node.translation.size() == 3) out.trs.translation = vec3(node.translation);
+  if (node.rotation.size() == 4) {  // glTF quaternions are (x, y, z, w)
+    const Quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                 static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    const float len = glm::length(q);
+    out.trs.rotation = len > 0.0f && std::isfinite(len) ? q / len : Quat(1.0f, 0.0f, 0.0f, 0.0f);
+  }
+  if (node.scale.size() == 3) out.trs.scale = vec3(node.scale);
 }
 
 // Triangle list from a primitive's index stream in triangle, strip or fan mode, in the vertex
@@ -63,8 +66,8 @@ class Importer {
     out_.meshes.resize(model.meshes.size());
   }
 
-  // Imports mesh `index` once (the first time it is placed) and places it.
-  bool place(size_t index, const Mat4& to_file) {
+  // Imports mesh `index` once (the first time a node uses it).
+  bool import_mesh(size_t index) {
     if (!imported_[index]) {
       imported_[index] = true;
       const tinygltf::Mesh& mesh = model_.meshes[index];
@@ -74,7 +77,17 @@ class Importer {
         if (!import_primitive(mesh.primitives[p], where, out_.meshes[index])) return false;
       }
     }
-    out_.instances.push_back(MeshInstance{index, to_file});
+    return true;
+  }
+
+  // A node of its own carrying mesh `index` (no node tree: a mesh asked for by name, or a file
+  // without scenes).
+  bool add_mesh_node(size_t index) {
+    if (!import_mesh(index)) return false;
+    ImportedNode node;
+    node.name = model_.meshes[index].name;
+    node.mesh = static_cast<int32_t>(index);
+    out_.nodes.push_back(std::move(node));
     return true;
   }
 
@@ -196,7 +209,8 @@ class ImageDecoder {
   TextureSlot slot(int index, int texcoord, const std::string& where) {
     TextureSlot slot;
     slot.mapping.uv_set = texcoord == 1 ? 1u : 0u;
-    if (texcoord < 0 || texcoord > 1) out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
+    if (texcoord < 0 || texcoord > 1)
+      out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
     if (index < 0 || static_cast<size_t>(index) >= model_.textures.size()) {
       out_.warnings.push_back(where + ": texture " + to_string(index) + " does not exist; ignored");
       return slot;
@@ -204,9 +218,9 @@ class ImageDecoder {
     const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(index)];
     if (texture.sampler >= 0 && static_cast<size_t>(texture.sampler) < model_.samplers.size()) {
       const int wrap = model_.samplers[static_cast<size_t>(texture.sampler)].wrapS;
-      slot.mapping.wrap = wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE       ? TextureWrap::kClamp
+      slot.mapping.wrap = wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
                           : wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
-                                                                            : TextureWrap::kRepeat;
+                                                                          : TextureWrap::kRepeat;
     }
     if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
       out_.warnings.push_back(where + ": texture " + to_string(index) + " has no image; ignored");
@@ -256,8 +270,9 @@ class ImageDecoder {
 // disjoint trees: no node with two parents, no cycles, roots that are nobody's child. Checking
 // that first bounds the walk by the number of nodes (a node listed twice as a child would
 // otherwise double the work at every level).
+// node_map receives, per file node, its index in out.nodes (-1: not in the scene).
 bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
-                 Importer& importer, std::string& error) {
+                 Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map, std::string& error) {
   const size_t count = model.nodes.size();
   if (count > limits.nodes) {
     error = "it has " + to_string(count) + " nodes, more than the " + to_string(limits.nodes) + " rtcli accepts";
@@ -300,21 +315,29 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
   // a cycle have their parents inside the cycle, so no root reaches them.
   struct Item {
     int node;
-    Mat4 parent;
+    int32_t parent;  // in ImportedModel::nodes
   };
   std::vector<Item> stack;
-  for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) stack.push_back(Item{*it, Mat4(1.0f)});
+  for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) stack.push_back(Item{*it, -1});
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
     const tinygltf::Node& node = model.nodes[static_cast<size_t>(item.node)];
-    const Mat4 world = item.parent * node_matrix(node);
     if (node.mesh >= static_cast<int>(model.meshes.size())) {
       error = "node " + to_string(item.node) + " uses mesh " + to_string(node.mesh) + ", which does not exist";
       return false;
     }
-    if (node.mesh >= 0 && !importer.place(static_cast<size_t>(node.mesh), world)) return false;
-    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, world});
+    if (node.mesh >= 0 && !importer.import_mesh(static_cast<size_t>(node.mesh))) return false;
+    ImportedNode imported;
+    imported.name = node.name;
+    imported.parent = item.parent;
+    imported.mesh = node.mesh;
+    imported.gltf_index = item.node;
+    read_node_transform(node, imported);
+    const auto index = static_cast<int32_t>(out.nodes.size());
+    node_map[static_cast<size_t>(item.node)] = index;
+    out.nodes.push_back(std::move(imported));
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, index});
   }
   return true;
 }
@@ -341,7 +364,8 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     Material material =
         pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor));
     if (m.normalTexture.index >= 0) {
-      material.normal_map.map = images.slot(m.normalTexture.index, m.normalTexture.texCoord, "material \"" + m.name + "\" normalTexture");
+      material.normal_map.map =
+          images.slot(m.normalTexture.index, m.normalTexture.texCoord, "material \"" + m.name + "\" normalTexture");
       material.normal_map.scale = static_cast<float>(m.normalTexture.scale);
     }
     out.materials.push_back(material);
@@ -352,7 +376,7 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     std::string names;
     for (size_t i = 0; i < model.meshes.size(); ++i) {
       if (model.meshes[i].name == *mesh_name) {
-        if (!importer.place(i, Mat4(1.0f))) return std::nullopt;
+        if (!importer.add_mesh_node(i)) return std::nullopt;
         return out;
       }
       if (i < 20) names += (names.empty() ? "\"" : ", \"") + model.meshes[i].name + "\"";
@@ -370,10 +394,25 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   }
   if (scene < 0) {
     for (size_t i = 0; i < model.meshes.size(); ++i)
-      if (!importer.place(i, Mat4(1.0f))) return std::nullopt;
+      if (!importer.add_mesh_node(i)) return std::nullopt;
     return out;
   }
-  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, error)) return std::nullopt;
+  std::vector<int32_t> node_map(model.nodes.size(), -1);
+  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, out, node_map, error))
+    return std::nullopt;
+  if (!import_animations(model, node_map, limits, out, error)) return std::nullopt;
+  return out;
+}
+
+std::vector<ModelPlacement> placements(const ImportedModel& model) {
+  std::vector<Mat4> world(model.nodes.size());
+  std::vector<ModelPlacement> out;
+  for (size_t i = 0; i < model.nodes.size(); ++i) {
+    const ImportedNode& n = model.nodes[i];
+    const Mat4 local = n.matrix ? *n.matrix : n.trs.matrix();
+    world[i] = n.parent >= 0 ? world[static_cast<size_t>(n.parent)] * local : local;
+    if (n.mesh >= 0) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i]});
+  }
   return out;
 }
 

@@ -1,14 +1,16 @@
-// Triangle meshes from a glTF 2.0 file (.gltf with external or embedded buffers, or .glb).
-// Every primitive in triangle, strip or fan mode is imported; points and lines are skipped
-// with a warning. Positions stay in the glTF file's own space; instances say where each mesh
-// goes, so a mesh used by several nodes is read once. Everything a file says is checked against
-// the specification and the limits before it is used (io/gltf_file.h, io/gltf_accessor.h).
+// A glTF 2.0 file (.gltf with external or embedded buffers, or .glb) as description records:
+// its default scene's node tree with each local transform kept as translation, rotation and
+// scale, the meshes the nodes use, materials, textures and animation tracks. Every primitive
+// in triangle, strip or fan mode is imported; points and lines are skipped with a warning.
+// Positions stay in each mesh's own space, so a mesh used by several nodes is read once. Everything a file says is
+// checked against the specification and the limits before it is used (io/gltf_file.h, io/gltf_accessor.h).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/animation/track.h"
 #include "core/material.h"
 #include "core/mesh.h"
 #include "core/texture/texture.h"
@@ -21,14 +23,26 @@ struct ImportedPrimitive {
   int material = -1;  // index into ImportedModel::materials, -1 = none
 };
 
-struct MeshInstance {
-  size_t mesh = 0;     // index into ImportedModel::meshes
-  Mat4 to_file{1.0f};  // the glTF node's world transform
+struct ImportedNode {
+  std::string name;
+  int32_t parent = -1;  // index into ImportedModel::nodes, always lower than the node's own
+  Trs trs;
+  std::optional<Mat4> matrix;  // the node's "matrix" instead of TRS
+  int32_t mesh = -1;           // index into ImportedModel::meshes
+  int32_t gltf_index = -1;     // the node's index in the file, for messages
+};
+
+// Where a mesh goes in the file's space: a node's world transform at rest.
+struct ModelPlacement {
+  size_t mesh = 0;
+  Mat4 to_file{1.0f};
 };
 
 struct ImportedModel {
   std::vector<std::vector<ImportedPrimitive>> meshes;  // per glTF mesh
-  std::vector<MeshInstance> instances;
+  std::vector<ImportedNode> nodes;                     // the default scene's, parents first
+  std::vector<Track> tracks;                           // Track::node indexes `nodes`
+  float animation_end = 0.0f;                          // the last key time of all tracks, seconds
   std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong; texture slots index `textures`
   std::vector<Texture> textures;    // the images the materials use (normal maps), decoded once each
   std::vector<std::string> warnings;
@@ -40,7 +54,10 @@ struct ImportError {
   bool unknown_mesh = false;  // the file loaded, but has no mesh of the requested name
 };
 
-// With mesh_name: that mesh only, with an identity transform. Without: every mesh the file's
+// Every node with a mesh, at rest (the tracks not applied).
+std::vector<ModelPlacement> placements(const ImportedModel& model);
+
+// With mesh_name: that mesh only, on one node with an identity transform. Without: every mesh the file's
 // default scene places, at its node transforms (or every mesh once if the file has no scene).
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
                                          const LoadLimits& limits, ImportError& error);

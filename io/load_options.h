@@ -17,7 +17,7 @@ struct LoadLimits {
   uint64_t gltf_json_bytes = uint64_t{64} << 20;   // a .gltf file, or the JSON chunk of a .glb
   uint64_t gltf_total_bytes = uint64_t{1} << 30;   // a model's files together: .glb or .gltf plus its .bin files
   uint64_t vertices = uint64_t{1} << 25;           // in one glTF primitive (33,554,432)
-  uint64_t triangles = uint64_t{1} << 25;          // in the whole scene, every instance counted
+  uint64_t triangles = uint64_t{1} << 25;          // in a scene's meshes, each stored mesh once
   uint64_t instances = uint64_t{1} << 20;          // analytic shapes plus placed mesh primitives
   uint64_t nodes = uint64_t{1} << 20;              // scene-file nodes, and glTF nodes per file
   uint64_t texture_texels = uint64_t{1} << 25;     // in one texture image (e.g. 8192 x 4096)

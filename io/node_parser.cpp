@@ -108,7 +108,7 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
       r.error(o.child("name"), "expected a unique node name, found \"" + *name + "\" already used by " + it->second);
   }
   if (const Json* t = o.get("transform"))
-    node.local = parse_transform(r, *t, o.child("transform")).value_or(Mat4(1.0f));
+    node.transform = parse_transform(r, *t, o.child("transform")).value_or(NodeTransform{});
   if (const Json* s = o.get("shape")) {
     if (const auto k = read_choice(r, *s, o.child("shape"), kShapeNames)) node.shape = kShapeKinds[*k];
   }
@@ -140,16 +140,16 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
 
 }  // namespace
 
-std::optional<Mat4> parse_transform(const JsonReader& r, const Json& value, const std::string& ptr) {
+std::optional<NodeTransform> parse_transform(const JsonReader& r, const Json& value, const std::string& ptr) {
   ObjectReader o(r, value, ptr);
-  std::optional<Mat4> result;
+  std::optional<NodeTransform> result;
   if (const Json* m = o.get("matrix")) {
     for (const char* key : {"translate", "rotate", "scale"}) {
       if (o.get(key))
         r.error(o.child(key), "expected either \"matrix\" or translate/rotate/scale, found both", Anchor::kKey);
     }
-    result = read_matrix(r, *m, o.child("matrix"));
-    if (result && !make_transform(*result)) {
+    if (const auto matrix = read_matrix(r, *m, o.child("matrix"))) result = NodeTransform{Trs{}, matrix};
+    if (result && !make_transform(result->local())) {
       r.error(o.child("matrix"),
               "expected an invertible matrix, found a singular one (it flattens space: no inverse, no normals)");
       result.reset();
@@ -160,8 +160,10 @@ std::optional<Mat4> parse_transform(const JsonReader& r, const Json& value, cons
     std::optional<Vec3> s;
     if (const Json* sv = o.get("scale")) s = read_scale(r, *sv, o.child("scale"));
     const bool bad = (o.has("translate") && !t) || (o.has("rotate") && !rot) || (o.has("scale") && !s);
-    if (!bad) result = compose_trs(t.value_or(Vec3(0.0f)), rot.value_or(Vec3(0.0f)), s.value_or(Vec3(1.0f)));
-    if (result && !make_transform(*result)) {
+    if (!bad)
+      result = NodeTransform{
+          Trs{t.value_or(Vec3(0.0f)), euler_degrees_to_quat(rot.value_or(Vec3(0.0f))), s.value_or(Vec3(1.0f))}, {}};
+    if (result && !make_transform(result->local())) {
       r.error(ptr, "expected an invertible transform, found a singular one (scale factors too far apart)");
       result.reset();
     }

@@ -24,6 +24,7 @@ std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& valu
                                          int depth = 0);
 
 // A "transform" object: translate / rotate (degrees) / scale, or a 4x4 "matrix" (rows).
-std::optional<Mat4> parse_transform(const JsonReader& r, const Json& value, const std::string& pointer);
+// Rotations are kept as quaternions (R = Rz * Ry * Rx of the Euler angles).
+std::optional<NodeTransform> parse_transform(const JsonReader& r, const Json& value, const std::string& pointer);
 
 }  // namespace rt

@@ -1,5 +1,6 @@
 #include "io/scene_builder.h"
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -11,8 +12,6 @@
 
 namespace rt {
 namespace {
-
-bool is_finite(const Aabb& box) { return rt::is_finite(box.lo) && rt::is_finite(box.hi); }
 
 // Half the float range: the difference of two such coordinates (a triangle's edge) is finite.
 constexpr float kMaxVertexCoordinate = std::numeric_limits<float>::max() / 2;
@@ -28,57 +27,141 @@ class Builder {
   // The scene's own materials come first, so their indices stay those of the description;
   // glTF files append theirs as they are loaded.
   Builder(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options, Diagnostics& diags)
-      : desc_(desc), source_(source), options_(options), diags_(diags) {
-    for (const MaterialDescription& m : desc_.materials) materials_.push_back(with_textures(m));
+      : desc_(desc),
+        source_(source),
+        options_(options),
+        diags_(diags),
+        bvh_options_{resolve_thread_count(options.threads)} {
+    for (const MaterialDescription& m : desc_.materials) assets_.materials.push_back(with_textures(m));
   }
 
-  void add_nodes(const std::vector<NodeDescription>& nodes, const Mat4& parent) {
+  void add_nodes(const std::vector<NodeDescription>& nodes, int32_t parent) {
     for (const NodeDescription& node : nodes) {
       if (over_limit_) return;
-      const Mat4 world = parent * node.local;
-      if (node.shape || node.mesh) {
-        const auto transform = make_transform(world);
-        if (!transform) {
-          error(node.pointer,
-                "expected an invertible world transform, found a singular one (the transforms above this "
-                "node multiply to a flattening scale)");
-        } else if (node.shape) {
-          add_shape(AnalyticShape{*node.shape, node.material.value_or(0), *transform}, node.pointer);
-        } else {
-          add_mesh(*node.mesh, world, node.material);
-        }
+      const auto index = static_cast<int32_t>(nodes_.size());
+      SceneNode n;
+      n.name = node.name;
+      n.parent = parent;
+      n.trs = node.transform.trs;
+      n.matrix = node.transform.matrix;
+      if (node.shape) {
+        n.shape = node.shape;
+        n.shape_material = node.material.value_or(0);
+        take_instances(1, node.pointer);
       }
-      add_nodes(node.children, world);
+      push_node(std::move(n), node.pointer, false);
+      if (node.mesh) add_model(*node.mesh, index, node.material);
+      add_nodes(node.children, index);
     }
   }
 
-  Scene finish() {
-    Scene scene;
-    scene.camera =
-        Camera::look_at(desc_.camera.position, desc_.camera.look_at, desc_.camera.up, desc_.camera.fov_degrees);
-    scene.camera.aperture = desc_.camera.aperture;
-    scene.camera.focus_distance =
-        desc_.camera.focus_distance.value_or(glm::length(desc_.camera.look_at - desc_.camera.position));
-    scene.background = desc_.background;
-    scene.ambient = desc_.ambient;
-    scene.lights = desc_.lights;
-    scene.materials = std::move(materials_);
-    scene.textures = std::move(textures_);
-    uint32_t first = 0;
-    for (const TriangleMesh& m : meshes_) {
-      scene.mesh_first_triangle.push_back(first);
-      first += static_cast<uint32_t>(m.triangle_count());
+  void add_animation() {
+    if (!desc_.animation) return;
+    const AnimationDescription& a = *desc_.animation;
+    std::vector<std::string> names;
+    for (const SceneNode& n : nodes_)
+      if (!n.name.empty()) names.push_back(n.name);
+    for (const TrackDescription& t : a.tracks) {
+      int32_t found = -1;
+      for (size_t i = 0; i < nodes_.size() && found < 0; ++i)
+        if (!from_file_[i] && nodes_[i].name == t.node) found = static_cast<int32_t>(i);
+      if (found < 0) {
+        std::string message = "expected the name of a node under /nodes, found \"" + t.node + "\"";
+        if (const auto near = closest_match(t.node, names)) message += " (did you mean \"" + *near + "\"?)";
+        error(t.pointer + "/node", message);
+        continue;
+      }
+      if (nodes_[static_cast<size_t>(found)].matrix) {
+        error(t.pointer + "/node", "expected a node with translate/rotate/scale to animate, found \"" + t.node +
+                                       "\" placed by a matrix (" + pointers_[static_cast<size_t>(found)] + ")");
+        continue;
+      }
+      Track track = t.track;
+      track.node = static_cast<uint32_t>(found);
+      tracks_.push_back(std::move(track));
     }
-    if (options_.build_bvh)
-      scene.bvh =
-          Bvh(make_primitive_set(meshes_, std::move(shapes_)), BvhBuildOptions{resolve_thread_count(options_.threads)});
-    scene.meshes = std::move(meshes_);
-    return scene;
+  }
+
+  std::optional<BuiltScene> finish() {
+    SceneGraph g;
+    g.nodes = std::move(nodes_);
+    g.tracks = std::move(tracks_);
+    g.background = desc_.background;
+    g.ambient = desc_.ambient;
+    set_timeline(g);
+    const CameraDescription& c = desc_.camera;
+    g.camera.camera = Camera::look_at(c.position, c.look_at, c.up, c.fov_degrees);
+    g.camera.camera.aperture = c.aperture;
+    g.camera.camera.focus_distance = c.focus_distance.value_or(glm::length(c.look_at - c.position));
+    for (const Light& l : desc_.lights) g.lights.push_back(LightPlacement{l, -1});
+    g.assets = std::make_shared<const SceneAssets>(std::move(assets_));
+
+    // The first frame, placed once: its problems are errors at the nodes concerned (nodes from
+    // glTF files scaled to nothing are parts hidden on purpose, and simply not drawn).
+    const float t0 = g.timeline.seconds(g.timeline.first_frame);
+    std::vector<PlacementIssue> issues;
+    PrimitiveSet placed = g.place(t0, &issues);
+    for (const PlacementIssue& issue : issues) {
+      if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
+      error(pointers_[issue.node],
+            issue.kind == PlacementIssue::kSingular
+                ? "expected an invertible world transform, found a singular one (the transforms above this node "
+                  "multiply to a flattening scale)"
+                : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
+                  "that reaches infinity");
+    }
+    if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
+    if (diags_.error_count() > errors_before_) return std::nullopt;
+    Scene first = options_.build_bvh ? g.at(t0, placed, bvh_options_) : g.at(t0, PrimitiveSet{}, bvh_options_);
+    return BuiltScene{std::move(g), std::move(first)};
   }
 
   std::vector<std::string> take_files() { return std::move(files_); }
 
  private:
+  void push_node(SceneNode n, const std::string& pointer, bool from_file) {
+    nodes_.push_back(std::move(n));
+    pointers_.push_back(pointer);
+    from_file_.push_back(from_file);
+  }
+
+  void set_timeline(SceneGraph& g) const {
+    const AnimationDescription* a = desc_.animation ? &*desc_.animation : nullptr;
+    g.timeline.fps = a ? a->fps : 30.0f;
+    float end = 0.0f;
+    for (const Track& t : g.tracks) end = std::max(end, t.times.back());
+    g.animated = !g.tracks.empty() || a;
+    g.timeline.first_frame = a && a->first_frame ? *a->first_frame : 0;
+    // Default: up to the frame of the last key (rounded up, so that no key is cut off).
+    const double last = std::ceil(static_cast<double>(end) * g.timeline.fps - 1e-3);
+    g.timeline.last_frame =
+        a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
+  }
+
+  // The camera framing the model's first frame from the front and above, and a point light up
+  // and to the right of it, so that shading shows the form and shadows fall behind.
+  bool frame_model(SceneGraph& g, const PrimitiveSet& placed) {
+    Aabb bounds;
+    for (uint32_t id = 0; id < placed.size(); ++id) bounds.extend(placed.bounds(id));
+    if (bounds.empty()) bounds = Aabb{Vec3(-1.0f), Vec3(1.0f)};  // nothing to see: still a camera and a light
+    const float aspect = static_cast<float>(desc_.render.width) / static_cast<float>(desc_.render.height);
+    const Camera camera = Camera::framing(bounds, 40.0f, aspect);
+    const float reach = glm::length(camera.position - bounds.centre());
+    PointLight light;
+    light.position = camera.position + reach * (0.5f * camera.right + 0.6f * camera.up);
+    if (!is_finite(camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
+      diags_.file_error(desc_.path,
+                        "expected a model small enough to frame in single precision, found one whose "
+                        "extent (from " +
+                            std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
+                            " in x) puts the camera at infinity");
+      return false;
+    }
+    g.camera = CameraPlacement{"", camera, -1};
+    g.lights = {LightPlacement{light, -1}};
+    return true;
+  }
+
   // The material with its slots pointing at loaded textures; a slot whose file failed stays empty
   // (the error is recorded, so the scene is not built).
   Material with_textures(const MaterialDescription& m) {
@@ -110,100 +193,147 @@ class Builder {
       // or why the file could not be read.
       error(ref.pointer, why.rfind("expected", 0) == 0 ? why : "expected a readable PNG or JPEG image; " + why);
     } else {
-      for (int level = 0; level < texture->level_count(); ++level)
-        texels_ += static_cast<uint64_t>(texture->width(level)) * static_cast<uint64_t>(texture->height(level));
+      count_texels(*texture);
       files_.push_back(ref.resolved_path);
-      index = static_cast<uint32_t>(textures_.size());
-      textures_.push_back(std::move(*texture));
+      index = static_cast<uint32_t>(assets_.textures.size());
+      assets_.textures.push_back(std::move(*texture));
     }
     texture_indices_.emplace(key, index);
     return index;
   }
 
+  void count_texels(const Texture& t) {
+    for (int level = 0; level < t.level_count(); ++level)
+      texels_ += static_cast<uint64_t>(t.width(level)) * static_cast<uint64_t>(t.height(level));
+  }
+
   // Shapes and placed mesh primitives together; one error when the limit is passed, then stop.
-  bool take_instance(const std::string& pointer) {
-    if (++instances_ <= options_.limits.instances) return true;
+  bool take_instances(uint64_t count, const std::string& pointer) {
+    instances_ += count;
+    if (instances_ <= options_.limits.instances) return true;
     limit_error(pointer, "expected at most " + std::to_string(options_.limits.instances) +
                              " shapes and placed mesh primitives in a scene, found more");
     return false;
   }
 
-  void add_shape(const AnalyticShape& shape, const std::string& pointer) {
-    if (!take_instance(pointer)) return;
-    const Aabb bounds = world_bounds(shape);
-    if (!is_finite(bounds)) {
-      error(pointer,
-            "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found "
-            "one that reaches infinity");
-      return;
-    }
-    shapes_.push_back(shape);
-  }
-
-  void add_mesh(const MeshReference& ref, const Mat4& world, std::optional<uint32_t> material_override) {
-    const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
-    auto it = models_.find(key);
-    if (it == models_.end()) {
-      ImportError why;
-      auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, why);
-      if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
-      if (!model && why.unknown_mesh) {
-        error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
-                                         "), found \"" + *ref.mesh_name + "\"");
-        return;
-      }
-      if (!model) {
-        error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
-                                         (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") + ": " +
-                                         why.message);
-        return;
-      }
-      for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
-      LoadedModel loaded{std::move(*model), static_cast<uint32_t>(materials_.size())};
-      add_model_materials(loaded.model, ref.pointer);
-      it = models_.emplace(key, std::move(loaded)).first;
-    }
-    const LoadedModel& loaded = it->second;
+  // A glTF file's node tree, grafted under scene node `parent` (or its one named mesh, carried by
+  // `parent` itself), with the file's animation tracks moved onto the grafted nodes.
+  void add_model(const MeshReference& ref, int32_t parent, std::optional<uint32_t> material_override) {
+    const LoadedModel* loaded = load_model(ref);
+    if (!loaded) return;
+    const ImportedModel& model = loaded->model;
+    const auto meshes_of = [&](int32_t mesh) {
+      std::vector<NodeMesh> out;
+      if (mesh < 0) return out;
+      for (const LoadedPrimitive& p : loaded->meshes[static_cast<size_t>(mesh)])
+        out.push_back(NodeMesh{p.geometry, material_override.value_or(p.material)});
+      return out;
+    };
     size_t placed = 0;
-    for (const MeshInstance& inst : loaded.model.instances) {
-      const auto transform = make_transform(world * inst.to_file);
-      if (!transform) continue;  // a node of the file scaled to nothing: it has no visible surface
-      for (const ImportedPrimitive& p : loaded.model.meshes[inst.mesh]) {
-        if (!take_instance(ref.pointer)) return;
-        // Counted before the copy is made, so that instancing cannot exhaust memory.
-        triangles_ += p.mesh.triangle_count();
-        if (triangles_ > options_.limits.triangles) {
-          limit_error(ref.pointer, "expected at most " + std::to_string(options_.limits.triangles) +
-                                       " triangles in a scene (every instance counted), found more");
-          return;
-        }
-        TriangleMesh mesh = transformed(p.mesh, *transform);
-        for (const Vec3& v : mesh.positions) {
-          if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
-            error(ref.pointer, "expected \"" + ref.file +
-                                   "\" within +-1.7e38 after the transforms that place it "
-                                   "(half the single-precision range, so that edges stay finite), found a vertex at " +
-                                   format_point(v));
-            return;
-          }
-        }
-        mesh.material = material_override ? *material_override
-                        : p.material >= 0 ? loaded.first_material + static_cast<uint32_t>(p.material)
-                                          : default_material();
-        meshes_.push_back(std::move(mesh));
-        ++placed;
+    if (ref.mesh_name) {
+      SceneNode& carrier = nodes_[static_cast<size_t>(parent)];
+      carrier.meshes = meshes_of(model.nodes.front().mesh);
+      placed = carrier.meshes.size();
+      take_instances(placed, ref.pointer);
+    } else {
+      const auto base = static_cast<int32_t>(nodes_.size());
+      for (const ImportedNode& in : model.nodes) {
+        SceneNode n;
+        n.name = in.name;
+        n.parent = in.parent >= 0 ? base + in.parent : parent;
+        n.trs = in.trs;
+        n.matrix = in.matrix;
+        n.meshes = meshes_of(in.mesh);
+        placed += n.meshes.size();
+        if (!take_instances(n.meshes.size(), ref.pointer)) return;
+        push_node(std::move(n), ref.pointer, true);
+      }
+      for (Track t : model.tracks) {
+        t.node += static_cast<uint32_t>(base);
+        tracks_.push_back(std::move(t));
       }
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
   }
 
+  struct LoadedPrimitive {
+    uint32_t geometry;  // index into assets_.meshes
+    uint32_t material;
+  };
+  struct LoadedModel {
+    ImportedModel model;                               // its nodes and tracks (meshes moved out)
+    std::vector<std::vector<LoadedPrimitive>> meshes;  // per glTF mesh
+  };
+
+  // Each file (and named mesh) is read once: its primitives become meshes with their own BVHs.
+  const LoadedModel* load_model(const MeshReference& ref) {
+    const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
+    if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
+    std::optional<LoadedModel>& slot = models_[key];
+    ImportError why;
+    auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, why);
+    if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
+    if (!model && why.unknown_mesh) {
+      error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
+                                       "), found \"" + *ref.mesh_name + "\"");
+      return nullptr;
+    }
+    if (!model) {
+      error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
+                                       (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") + ": " +
+                                       why.message);
+      return nullptr;
+    }
+    for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
+    LoadedModel loaded;
+    const auto first_material = static_cast<uint32_t>(assets_.materials.size());
+    add_model_materials(*model, ref.pointer);
+    loaded.meshes.resize(model->meshes.size());
+    for (size_t m = 0; m < model->meshes.size(); ++m) {
+      for (ImportedPrimitive& p : model->meshes[m]) {
+        if (!add_geometry(std::move(p.mesh), ref)) return nullptr;
+        const uint32_t material =
+            p.material >= 0 ? first_material + static_cast<uint32_t>(p.material) : default_material();
+        loaded.meshes[m].push_back(LoadedPrimitive{static_cast<uint32_t>(assets_.meshes.size() - 1), material});
+      }
+    }
+    model->meshes.clear();
+    loaded.model = std::move(*model);
+    slot = std::move(loaded);
+    return &*slot;
+  }
+
+  // The mesh in its object space with its own BVH (counted against the triangle limit once,
+  // however often it is placed: instances share it).
+  bool add_geometry(TriangleMesh mesh, const MeshReference& ref) {
+    triangles_ += mesh.triangle_count();
+    if (triangles_ > options_.limits.triangles) {
+      limit_error(ref.pointer, "expected at most " + std::to_string(options_.limits.triangles) +
+                                   " triangles in a scene's meshes, found more");
+      return false;
+    }
+    for (const Vec3& v : mesh.positions) {
+      if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
+        error(ref.pointer, "expected \"" + ref.file +
+                               "\" within +-1.7e38 (half the single-precision range, so that "
+                               "edges stay finite), found a vertex at " +
+                               format_point(v));
+        return false;
+      }
+    }
+    MeshGeometry g;
+    g.mesh = std::move(mesh);
+    if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
+    assets_.meshes.push_back(std::move(g));
+    return true;
+  }
+
   // The model's materials, their texture slots moved to where its textures land in the scene.
   void add_model_materials(ImportedModel& model, const std::string& pointer) {
-    const auto first_texture = static_cast<uint32_t>(textures_.size());
+    const auto first_texture = static_cast<uint32_t>(assets_.textures.size());
     for (Texture& t : model.textures) {
-      for (int level = 0; level < t.level_count(); ++level)
-        texels_ += static_cast<uint64_t>(t.width(level)) * static_cast<uint64_t>(t.height(level));
-      textures_.push_back(std::move(t));
+      count_texels(t);
+      assets_.textures.push_back(std::move(t));
     }
     if (texels_ > options_.limits.scene_texels)
       limit_error(pointer, "expected at most " + std::to_string(options_.limits.scene_texels) +
@@ -212,15 +342,15 @@ class Builder {
     for (Material m : model.materials) {
       for (TextureSlot* slot : {&m.texture, &m.specular_texture, &m.bump.height, &m.normal_map.map})
         if (slot->present()) slot->texture += first_texture;
-      materials_.push_back(m);
+      assets_.materials.push_back(m);
     }
   }
 
   // Our Material defaults stand in for glTF's default material (which a Phong model can't match).
   uint32_t default_material() {
     if (!default_material_) {
-      default_material_ = static_cast<uint32_t>(materials_.size());
-      materials_.push_back(Material{});
+      default_material_ = static_cast<uint32_t>(assets_.materials.size());
+      assets_.materials.push_back(Material{});
     }
     return *default_material_;
   }
@@ -242,22 +372,20 @@ class Builder {
     }
   }
 
-  struct LoadedModel {
-    ImportedModel model;
-    uint32_t first_material = 0;  // where its materials start in the scene's material list
-  };
-
   const SceneDescription& desc_;
   const JsonDocument* source_;
   const LoadOptions& options_;
   Diagnostics& diags_;
-  std::vector<Material> materials_;
-  std::vector<Texture> textures_;
+  const BvhBuildOptions bvh_options_;
+  const size_t errors_before_ = diags_.error_count();
+  SceneAssets assets_;
   std::map<std::string, uint32_t> texture_indices_;  // resolved path + encoding -> index (kNoTexture: failed)
-  uint64_t texels_ = 0;                              // in textures_, mip levels included
-  std::vector<AnalyticShape> shapes_;
-  std::vector<TriangleMesh> meshes_;
-  std::map<std::string, LoadedModel> models_;
+  uint64_t texels_ = 0;                              // in assets_.textures, mip levels included
+  std::vector<SceneNode> nodes_;
+  std::vector<std::string> pointers_;  // per node: where the scene file describes it
+  std::vector<bool> from_file_;        // per node: grafted from a glTF file
+  std::vector<Track> tracks_;
+  std::map<std::string, std::optional<LoadedModel>> models_;  // empty: the file failed
   std::optional<uint32_t> default_material_;
   std::vector<std::string> files_;
   uint64_t instances_ = 0;
@@ -267,13 +395,12 @@ class Builder {
 
 }  // namespace
 
-std::optional<Scene> build_scene(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options,
-                                 Diagnostics& diags, std::vector<std::string>* files) {
-  const size_t errors_before = diags.error_count();
+std::optional<BuiltScene> build_scene(const SceneDescription& desc, const JsonDocument* source,
+                                      const LoadOptions& options, Diagnostics& diags, std::vector<std::string>* files) {
   Builder builder(desc, source, options, diags);
-  builder.add_nodes(desc.nodes, Mat4(1.0f));
+  builder.add_nodes(desc.nodes, -1);
+  builder.add_animation();
   if (files) *files = builder.take_files();
-  if (diags.error_count() > errors_before) return std::nullopt;
   return builder.finish();
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/animation/track.h"
 #include "core/lights/light.h"
 #include "core/material.h"
 #include "core/render_settings.h"
@@ -39,14 +40,36 @@ struct MeshReference {
   std::string pointer;  // of the "mesh" object
 };
 
+// A node's parent-from-node transform as written: translate / rotate / scale, or a fixed matrix.
+struct NodeTransform {
+  Trs trs;
+  std::optional<Mat4> matrix;
+
+  Mat4 local() const { return matrix ? *matrix : trs.matrix(); }
+};
+
 struct NodeDescription {
   std::string name;
   std::string pointer;
-  Mat4 local{1.0f};  // parent-from-node transform
+  NodeTransform transform;
   std::optional<ShapeKind> shape;
   std::optional<MeshReference> mesh;
   std::optional<uint32_t> material;  // index into SceneDescription::materials
   std::vector<NodeDescription> children;
+};
+
+// One "animation" track: keys for one part of a named node's transform, times in seconds.
+struct TrackDescription {
+  std::string node;     // the node's name
+  std::string pointer;  // of the track
+  Track track;          // Track::node is resolved by the builder
+};
+
+struct AnimationDescription {
+  std::string pointer;
+  float fps = 30.0f;
+  std::optional<int> first_frame, last_frame;  // default: 0 to the last key's frame
+  std::vector<TrackDescription> tracks;
 };
 
 struct SceneDescription {
@@ -58,6 +81,10 @@ struct SceneDescription {
   std::vector<MaterialDescription> materials;
   std::vector<Light> lights;
   std::vector<NodeDescription> nodes;
+  std::optional<AnimationDescription> animation;
+  // A glTF file given alone: the camera frames the first frame's bounds, a point light sits
+  // beside it, unless the file brings its own.
+  bool frame_the_model = false;
 };
 
 }  // namespace rt

@@ -24,31 +24,16 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   desc.path = path;
   desc.background = Vec3(0.05f);
   desc.ambient = Vec3(0.1f);
+  desc.frame_the_model = true;
   NodeDescription node;
   node.mesh = MeshReference{path, path, std::nullopt, ""};
   desc.nodes.push_back(std::move(node));
   std::vector<std::string> files;
-  std::optional<Scene> scene = build_scene(desc, nullptr, options, diags, &files);
-  if (!scene) return std::nullopt;
-  const float aspect = static_cast<float>(desc.render.width) / static_cast<float>(desc.render.height);
-  // A model without triangles still gets a camera and a light: it renders the background.
-  const Aabb bounds = scene->bvh.bounds().empty() ? Aabb{Vec3(-1.0f), Vec3(1.0f)} : scene->bvh.bounds();
-  scene->camera = Camera::framing(bounds, 40.0f, aspect);
-  // A light up and to the right of the camera: shading shows the form, shadows fall behind.
-  const float reach = glm::length(scene->camera.position - bounds.centre());
-  PointLight light;
-  light.position = scene->camera.position + reach * (0.5f * scene->camera.right + 0.6f * scene->camera.up);
-  if (!is_finite(scene->camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
-    diags.file_error(path,
-                     "expected a model small enough to frame in single precision, found one whose extent ("
-                     "from " +
-                         std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
-                         " in x) puts the camera at infinity");
-    return std::nullopt;
-  }
-  scene->lights = {light};
-  desc.camera = CameraDescription{scene->camera.position, bounds.centre(), Vec3(0.0f, 1.0f, 0.0f), 40.0f, 0.0f, {}};
-  return LoadedScene{std::move(desc), std::move(*scene), std::move(files)};
+  std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);
+  if (!built) return std::nullopt;
+  const Camera& c = built->graph.camera.camera;
+  desc.camera = CameraDescription{c.position, c.position + c.forward, c.up, c.vertical_fov_degrees, 0.0f, {}};
+  return LoadedScene{std::move(desc), std::move(built->graph), std::move(built->first_frame), std::move(files)};
 }
 
 std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
@@ -58,10 +43,10 @@ std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOp
   if (!desc) return std::nullopt;
   std::vector<std::string> files{path};
   std::vector<std::string> models;
-  std::optional<Scene> scene = build_scene(*desc, &*doc, options, diags, &models);
-  if (!scene) return std::nullopt;
+  std::optional<BuiltScene> built = build_scene(*desc, &*doc, options, diags, &models);
+  if (!built) return std::nullopt;
   files.insert(files.end(), models.begin(), models.end());
-  return LoadedScene{std::move(*desc), std::move(*scene), std::move(files)};
+  return LoadedScene{std::move(*desc), std::move(built->graph), std::move(built->first_frame), std::move(files)};
 }
 
 }  // namespace

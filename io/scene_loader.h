@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene_graph.h"
 #include "io/diagnostics.h"
 #include "io/load_options.h"
 #include "io/scene_description.h"
@@ -18,8 +18,9 @@
 namespace rt {
 
 struct LoadedScene {
-  SceneDescription description;  // render settings and what the file said
-  Scene scene;
+  SceneDescription description;     // render settings and what the file said
+  SceneGraph graph;                 // every frame: graph.at(graph.timeline.seconds(frame), ...)
+  Scene scene;                      // the first frame
   std::vector<std::string> inputs;  // every file read: the scene, glTF models, their buffers
 };
 

@@ -3,13 +3,30 @@
 
 namespace rt {
 
+namespace {
+
+// The mesh's BVH in object space; the triangle's index goes to hit.part, the caller sets prim.
+bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) {
+  Ray local = object_ray(instance.transform, ray);
+  Hit h;
+  if (!instance.bvh->intersect(local, h)) return false;
+  hit = h;
+  hit.part = h.prim;
+  return true;
+}
+
+}  // namespace
+
 bool Bvh::intersect(Ray& ray, Hit& hit) const {
   bool found = false;
   traverse(ray, [&](uint32_t first, uint32_t end, Ray& r) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const uint32_t id = s.id;
-      if (id < triangle_count_ ? intersect_triangle(s.triangle, r, hit) : intersect_shape(shape(id), r, hit)) {
+      const bool got = id < triangle_count_ ? intersect_triangle(s.triangle, r, hit)
+                       : is_instance(id)    ? intersect_instance(instance(id), r, hit)
+                                            : intersect_shape(shape(id), r, hit);
+      if (got) {
         hit.prim = id;
         r.tmax = hit.t;
         found = true;

@@ -1,4 +1,6 @@
-// Bounding volume hierarchy over a PrimitiveSet. Built as a binary tree with the binned surface
+// Bounding volume hierarchy over a PrimitiveSet. Scenes use two levels: one BVH per mesh over its
+// triangles in object space, built once, and a top level over the analytic shapes and the mesh
+// instances, rebuilt when placements change (each animation frame). Built as a binary tree with the binned surface
 // area heuristic, then collapsed into a 4-wide tree: each node holds the boxes of up to four
 // children side by side, so one visit tests four boxes with one SIMD slab test. Nodes are a flat
 // array; traversal uses a fixed-size stack, visits the nearest child first and skips entries
@@ -64,11 +66,15 @@ class Bvh {
   bool for_each_hit(const Ray& ray, Visitor&& visit) const;
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
-  // BVH holds its own copy in leaf order).
-  uint32_t primitive_count() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
+  // BVH holds its own copy in leaf order). A hit on an instance has hit.prim = the instance's
+  // id here and hit.part = the triangle's index in its mesh.
+  uint32_t primitive_count() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
   bool is_triangle(uint32_t id) const { return id < triangle_count_; }
+  bool is_instance(uint32_t id) const { return id >= instance_begin(); }
   const AnalyticShape& shape(uint32_t id) const { return shapes_[id - triangle_count_]; }
+  const MeshInstance& instance(uint32_t id) const { return instances_[id - instance_begin()]; }
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
+  const std::vector<MeshInstance>& instances() const { return instances_; }
   const std::vector<BvhNode4>& nodes() const { return nodes_; }
   uint32_t root() const { return root_; }
   Aabb bounds() const { return bounds_; }
@@ -86,9 +92,15 @@ class Bvh {
  private:
   template <class LeafVisitor>
   bool traverse(Ray& ray, LeafVisitor&& visit_leaf) const;
+  // for_each_hit without the instance case: what an instance's (triangle-only) BVH runs, so that
+  // the visitor templates do not nest without end.
+  template <class Visitor>
+  bool for_each_primitive_hit(const Ray& ray, Visitor& visit) const;
+  uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
 
   uint32_t triangle_count_ = 0;
   std::vector<AnalyticShape> shapes_;
+  std::vector<MeshInstance> instances_;
   std::vector<BvhNode4> nodes_;
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
@@ -101,5 +113,8 @@ class Bvh {
   };
   std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
 };
+
+// A mesh's BVH placed by `transform`: the instance with its world bounds filled in.
+MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material);
 
 }  // namespace rt

@@ -330,7 +330,9 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
 }  // namespace
 
 Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
-    : triangle_count_(static_cast<uint32_t>(prims.triangles.size())), shapes_(prims.shapes) {
+    : triangle_count_(static_cast<uint32_t>(prims.triangles.size())),
+      shapes_(prims.shapes),
+      instances_(prims.instances) {
   const uint32_t n = prims.size();
   if (n == 0) return;
   if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");
@@ -360,6 +362,10 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
     slots_[slot].id = id;
     if (prims.is_triangle(id)) slots_[slot].triangle = prims.triangles[id];
   }
+}
+
+MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material) {
+  return MeshInstance{&mesh_bvh, transform, transform_bounds(transform.to_world, mesh_bvh.bounds()), mesh, material};
 }
 
 BvhStats Bvh::stats() const {

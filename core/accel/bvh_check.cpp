@@ -41,7 +41,9 @@ std::string Bvh::check_structure() const {
         const uint32_t id = slots_[slot].id;
         if (id >= n) return "slot " + std::to_string(slot) + " holds an invalid id";
         if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
-        const Aabb box = is_triangle(id) ? slots_[slot].triangle.bounds() : world_bounds(shape(id));
+        const Aabb box = is_triangle(id)   ? slots_[slot].triangle.bounds()
+                         : is_instance(id) ? instance(id).bounds
+                                           : world_bounds(shape(id));
         if (!contains(item.box, box)) return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
       }
       continue;

@@ -114,13 +114,43 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
 }
 
 template <class Visitor>
-bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
+bool Bvh::for_each_primitive_hit(const Ray& ray, Visitor& visit) const {
   Ray r = ray;  // never narrowed: every crossing in the interval is visited
   return traverse(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const bool stop = s.id < triangle_count_ ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
                                                : visit_shape_crossings(shape(s.id), s.id, leaf_ray, visit);
+      if (stop) return true;
+    }
+    return false;
+  });
+}
+
+template <class Visitor>
+bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
+  if (instances_.empty()) return for_each_primitive_hit(ray, visit);
+  Ray r = ray;
+  return traverse(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+    for (uint32_t slot = first; slot < end; ++slot) {
+      const Slot& s = slots_[slot];
+      bool stop = false;
+      if (s.id < triangle_count_) {
+        stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit);
+      } else if (!is_instance(s.id)) {
+        stop = visit_shape_crossings(shape(s.id), s.id, leaf_ray, visit);
+      } else {
+        // The mesh's crossings, relabelled as the instance's: prim = instance id, part = triangle.
+        const MeshInstance& inst = instance(s.id);
+        const uint32_t id = s.id;
+        auto relabel = [&](const Hit& h) {
+          Hit g = h;
+          g.part = h.prim;
+          g.prim = id;
+          return visit(static_cast<const Hit&>(g));
+        };
+        stop = inst.bvh->for_each_primitive_hit(object_ray(inst.transform, leaf_ray), relabel);
+      }
       if (stop) return true;
     }
     return false;

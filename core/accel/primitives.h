@@ -1,11 +1,13 @@
-// Everything a ray can hit, addressed by one 32-bit id: triangles first, then analytic shapes.
-// Dispatch is a comparison on the id, not a virtual call.
+// Everything a ray can hit, addressed by one 32-bit id: triangles first, then analytic shapes,
+// then mesh instances. Dispatch is a comparison on the id, not a virtual call. A mesh's own BVH
+// holds only triangles; a scene's top-level BVH holds shapes and instances.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "core/accel/mesh_instance.h"
 #include "core/mesh.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/triangle.h"
@@ -14,18 +16,27 @@ namespace rt {
 
 struct PrimitiveSet {
   std::vector<PackedTriangle> triangles;  // ids [0, triangles.size())
-  std::vector<AnalyticShape> shapes;      // ids [triangles.size(), size())
+  std::vector<AnalyticShape> shapes;      // ids [triangles.size(), shape_end())
+  std::vector<MeshInstance> instances;    // ids [shape_end(), size())
 
-  uint32_t size() const { return static_cast<uint32_t>(triangles.size() + shapes.size()); }
+  uint32_t shape_end() const { return static_cast<uint32_t>(triangles.size() + shapes.size()); }
+  uint32_t size() const { return shape_end() + static_cast<uint32_t>(instances.size()); }
   bool is_triangle(uint32_t id) const { return id < triangles.size(); }
+  bool is_instance(uint32_t id) const { return id >= shape_end(); }
   const AnalyticShape& shape(uint32_t id) const { return shapes[id - triangles.size()]; }
-  Aabb bounds(uint32_t id) const { return is_triangle(id) ? triangles[id].bounds() : world_bounds(shape(id)); }
+  const MeshInstance& instance(uint32_t id) const { return instances[id - shape_end()]; }
+  Aabb bounds(uint32_t id) const {
+    return is_triangle(id) ? triangles[id].bounds() : is_instance(id) ? instance(id).bounds : world_bounds(shape(id));
+  }
 };
 
+// The triangles of one mesh, in index order: what a mesh's own BVH is built over.
+PrimitiveSet make_triangle_set(const TriangleMesh& mesh);
 // Every triangle of the meshes (mesh by mesh, in index order), then the shapes.
 PrimitiveSet make_primitive_set(const std::vector<TriangleMesh>& meshes, std::vector<AnalyticShape> shapes);
 
-// Intersects primitive `id`; on a hit inside the ray's interval, fills `hit` and narrows ray.tmax.
+// Intersects triangle or shape `id` (not an instance: see Bvh); on a hit inside the ray's
+// interval, fills `hit` and narrows ray.tmax.
 inline bool intersect_primitive(const PrimitiveSet& prims, uint32_t id, Ray& ray, Hit& hit) {
   const bool found = prims.is_triangle(id) ? intersect_triangle(prims.triangles[id], ray, hit)
                                            : intersect_shape(prims.shape(id), ray, hit);

@@ -53,7 +53,7 @@ inline Vec3 depth_view(const DebugHit& h, const Scene& scene) {
 }
 
 inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
-  return evaluate_surface(scene.materials[h.surface.material], h.surface, h.ray.direction, scene.textures).diffuse;
+  return evaluate_surface(scene.materials()[h.surface.material], h.surface, h.ray.direction, scene.textures()).diffuse;
 }
 
 using NormalsIntegrator = DebugIntegrator<normals_view>;

@@ -8,7 +8,7 @@ namespace rt {
 namespace {
 
 float index_of(const MediumStack& media, const Scene& scene) {
-  return media.empty() ? 1.0f : scene.materials[media.innermost()].ior;
+  return media.empty() ? 1.0f : scene.materials()[media.innermost()].ior;
 }
 
 }  // namespace
@@ -40,9 +40,8 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   if (found) {
     const SurfaceInteraction si = scene.surface(ray, hit);
     const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
-    const EvaluatedSurface s =
-        evaluate_surface(scene.materials[si.material], si, ray.direction, scene.textures, cone_width,
-                         ctx.settings.detail);
+    const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),
+                                                cone_width, ctx.settings.detail);
     radiance = direct_lighting(s, state.path, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) {
@@ -55,7 +54,7 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
   // inside the innermost medium. A ray that leaves through an open mesh without hitting anything
   // keeps tmax = infinity: it travelled forever and arrives dark.
   if (!state.media.empty()) {
-    const Material& m = scene.materials[state.media.innermost()];
+    const Material& m = scene.materials()[state.media.innermost()];
     if (m.absorbing()) {
       const float distance = ray.tmax * glm::length(ray.direction);
       // Per channel, so that a channel that does not absorb is not multiplied by exp(-0 * inf).

@@ -25,12 +25,7 @@ Aabb object_bounds(ShapeKind kind);
 Aabb world_bounds(const AnalyticShape& shape);
 
 // Object-space ray for the shape: origin and direction through to_object, interval unchanged.
-inline Ray to_object_ray(const AnalyticShape& shape, const Ray& ray) {
-  Ray r = ray;
-  r.origin = shape.transform.point_to_object(ray.origin);
-  r.direction = shape.transform.vector_to_object(ray.direction);
-  return r;
-}
+inline Ray to_object_ray(const AnalyticShape& shape, const Ray& ray) { return object_ray(shape.transform, ray); }
 
 bool intersect_object_space(ShapeKind kind, const Ray& object_ray, Hit& hit);
 SurfacePatch object_space_patch(ShapeKind kind, Vec3 object_point, uint32_t part);

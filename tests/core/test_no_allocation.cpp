@@ -56,7 +56,8 @@ Scene small_scene() {
     for (int i = 0; i < n * n; ++i) texels.push_back(Vec3(static_cast<float>(i % n) / static_cast<float>(n)));
     return Texture(n, n, texels);
   };
-  scene.textures = {ramp(16), ramp(8), Texture(2, 2, std::vector<Vec3>(4, Vec3(0.6f, 0.4f, 0.9f)))};
+  auto assets = std::make_shared<SceneAssets>();
+  assets->textures = {ramp(16), ramp(8), Texture(2, 2, std::vector<Vec3>(4, Vec3(0.6f, 0.4f, 0.9f)))};
   Material matte;
   matte.texture.texture = 0;
   matte.bump.height.texture = 1;
@@ -64,7 +65,7 @@ Scene small_scene() {
   glossy.specular_texture.texture = 0;
   glossy.specular_texture.mapping.projection = Projection::kSpherical;
   glossy.specular_texture.mapping.scale = Vec2(3.0f, 2.0f);
-  scene.materials = {matte, mirror, glass, glossy};
+  assets->materials = {matte, mirror, glass, glossy};
   scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), {}},
                   RectLight{{-1, 4, -1}, {2, 0, 0}, {0, 0, 2}, Vec3(0.5f), {}, true}};
   PrimitiveSet prims;
@@ -79,9 +80,12 @@ Scene small_scene() {
     mesh.positions.insert(mesh.positions.end(), {t.v0, t.v0 + t.e1, t.v0 + t.e2});
     mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
   }
-  mesh.material = 2;  // glass: shadow rays pass through it with the any-hit visitor
-  scene.meshes = {mesh};
-  scene.mesh_first_triangle = {0};
+  prims.triangles.clear();  // the mesh is placed as an instance of its own BVH
+  MeshGeometry geometry{mesh, Bvh(make_triangle_set(mesh), {})};
+  assets->meshes.push_back(std::move(geometry));
+  // Glass (material 2): shadow rays pass through it with the any-hit visitor.
+  prims.instances.push_back(place_mesh(assets->meshes[0].bvh, *make_transform(Mat4(1.0f)), 0, 2));
+  scene.assets = assets;
   for (ShapeKind k :
        {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
     AnalyticShape s;
@@ -118,8 +122,10 @@ struct OneTile {
 
 }  // namespace
 
-TEST_CASE("tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps) allocate nothing per ray",
-          "[bvh][alloc]") {
+TEST_CASE(
+    "tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps) allocate nothing per "
+    "ray",
+    "[bvh][alloc]") {
   OneTile t{AntialiasSettings{}};
   const Scene& scene = t.scene;
   const RayCounters& counters = t.counters;

@@ -41,7 +41,7 @@ TEST_CASE("mesh surface: interpolated normal, uv and tangent frame from uvs", "[
   h.t = 1;
   h.b1 = 0.25f;
   h.b2 = 0.25f;
-  const SurfaceInteraction si = mesh_surface(m, 0, r, h);
+  const SurfaceInteraction si = mesh_surface(m, 0, r, h, Transform{});
   CHECK(si.position.x == Approx(0.5f));
   CHECK(si.position.y == Approx(0.5f));
   CHECK(si.geometric_normal.z == Approx(1.0f));
@@ -62,6 +62,31 @@ TEST_CASE("mesh transform: a mirroring transform keeps normals outward", "[shape
   const TriangleMesh mirrored = transformed(m, *make_transform(compose_trs({0, 0, 0}, {0, 0, 0}, {1, 1, -1})));
   Hit h;
   h.b1 = h.b2 = 0.2f;
-  const SurfaceInteraction si = mesh_surface(mirrored, 0, make_ray({0.2f, 0.2f, -1}, {0, 0, 1}), h);
+  const SurfaceInteraction si = mesh_surface(mirrored, 0, make_ray({0.2f, 0.2f, -1}, {0, 0, 1}), h, Transform{});
   CHECK(si.geometric_normal.z == Approx(-1.0f));  // the mirror image of a +Z-facing triangle faces -Z
+}
+
+TEST_CASE("mesh instance: a mirroring placement keeps normals outward and flips tangent handedness",
+          "[shapes][mesh][transform]") {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  m.tangents = {{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, 1}};
+  m.indices = {0, 1, 2};
+  Hit h;
+  h.b1 = h.b2 = 0.2f;
+  const Transform mirror = *make_transform(compose_trs({0, 0, 5}, {0, 0, 0}, {2, 1, -1}));
+  // Placed: the world ray meets the instance at world z = 5 (object z = 0).
+  const SurfaceInteraction si = mesh_surface(m, 0, make_ray({0.4f, 0.2f, 10}, {0, 0, -1}), h, mirror);
+  CHECK(si.position.x == Approx(0.4f));  // object (0.2, 0.2, 0) scaled by 2 in x, moved to z = 5
+  CHECK(si.position.z == Approx(5.0f));
+  CHECK(si.geometric_normal.z == Approx(-1.0f));  // the same answer as the copied, rewound mesh above
+  CHECK(si.shading_normal.z == Approx(-1.0f));
+  CHECK(si.tangent.x == Approx(1.0f));
+  CHECK(si.tangent.w == -1.0f);                  // bitangent = cross(n, t) * w keeps pointing along +Y
+  CHECK(si.texcoord[0].dpdu.x == Approx(2.0f));  // default uvs (0,0) (1,0) (1,1): u along the scaled edge
+  CHECK(si.object_position.x == Approx(0.2f));
+  CHECK_FALSE(si.front_face);  // arriving from +Z onto a face that now looks down -Z
+  const Vec3 bitangent = glm::cross(si.shading_normal, Vec3(si.tangent)) * si.tangent.w;
+  CHECK(bitangent.y == Approx(1.0f));
 }

@@ -71,14 +71,16 @@ std::string scene_json(const uint8_t* data, size_t size) {
   if (!desc) return diags.has_errors() ? "" : "a rejected scene came with no error";
   auto scene = build_scene(*desc, &*doc, options, diags);
   if (!scene) return diags.has_errors() ? "" : "a scene that failed to build came with no error";
-  if (const std::string problem = scene->bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  if (const std::string problem = scene->first_frame.bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  for (const MeshGeometry& g : scene->graph.assets->meshes)
+    if (const std::string problem = g.bvh.check_structure(); !problem.empty()) return "mesh BVH: " + problem;
   RenderSettings settings = desc->render;
   settings.width = settings.height = 4;
   settings.antialias.samples = 1;
   settings.antialias.max_depth = std::min(settings.antialias.max_depth, 1);
   settings.threads = 1;
   Image image;
-  render(*scene, settings, image);
+  render(scene->first_frame, settings, image);
   return "";
 }
 
@@ -91,7 +93,7 @@ std::string gltf_model(const uint8_t* data, size_t size) {
   if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
   std::vector<TriangleMesh> meshes;
   size_t triangles = 0;
-  for (const MeshInstance& instance : model->instances) {
+  for (const ModelPlacement& instance : placements(*model)) {
     const auto transform = make_transform(instance.to_file);
     if (!transform) continue;
     for (const ImportedPrimitive& p : model->meshes[instance.mesh]) {
@@ -176,7 +178,8 @@ std::string texture_image(const uint8_t* data, size_t size) {
     const Vec2 points[] = {{0.5f, 0.5f}, {-1e30f, 3.0f}, {1e30f, -0.25f}, {kInfinity, 0.0f}, {std::nanf(""), 1.0f}};
     for (const Vec2 uv : points)
       for (const TextureWrap wrap : {TextureWrap::kRepeat, TextureWrap::kClamp, TextureWrap::kMirror})
-        for (const TextureFilter filter : {TextureFilter::kNearest, TextureFilter::kBilinear, TextureFilter::kTrilinear})
+        for (const TextureFilter filter :
+             {TextureFilter::kNearest, TextureFilter::kBilinear, TextureFilter::kTrilinear})
           for (const float footprint : {0.0f, 0.01f, 1e9f})
             if (!is_finite(texture->sample(uv, wrap, filter, footprint))) return "a texture sample is not finite";
   }

@@ -21,7 +21,7 @@ namespace {
 
 size_t triangle_count(const ImportedModel& m) {
   size_t n = 0;
-  for (const MeshInstance& inst : m.instances)
+  for (const ModelPlacement& inst : placements(m))
     for (const ImportedPrimitive& p : m.meshes[inst.mesh]) n += p.mesh.triangle_count();
   return n;
 }
@@ -45,7 +45,7 @@ TEST_CASE("glTF samples: Box in all three containers gives the same 12 triangles
     REQUIRE(model);
     REQUIRE(triangle_count(*model) == 12);
     REQUIRE(model->materials.size() == 1);
-    const TriangleMesh& mesh = model->meshes[model->instances[0].mesh][0].mesh;
+    const TriangleMesh& mesh = model->meshes[placements(*model)[0].mesh][0].mesh;
     CHECK(mesh.normals.size() == mesh.positions.size());
     if (reference.empty()) reference = mesh.positions;
     else CHECK(mesh.positions == reference);
@@ -65,14 +65,14 @@ TEST_CASE("glTF samples: interleaved buffers, instancing, UVs, node hierarchies,
   m = import(rt::test::sample_model("SimpleMeshes/glTF/SimpleMeshes.gltf"), error);
   REQUIRE(m);
   CHECK(m->meshes.size() == 1);
-  CHECK(m->instances.size() == 2);  // one mesh, two nodes
+  CHECK(placements(*m).size() == 2);  // one mesh, two nodes
   CHECK(triangle_count(*m) == 2);
   CHECK(m->meshes[0][0].material == -1);  // no material: the default one
 
   m = import(rt::test::sample_model("TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"), error);
   REQUIRE(m);
   size_t with_uvs = 0;  // the textured squares have TEXCOORD_0; the rest of the model does not
-  for (const MeshInstance& inst : m->instances)
+  for (const ModelPlacement& inst : placements(*m))
     for (const ImportedPrimitive& p : m->meshes[inst.mesh]) {
       CHECK((p.mesh.uvs.empty() || p.mesh.uvs.size() == p.mesh.positions.size()));
       with_uvs += !p.mesh.uvs.empty();
@@ -86,7 +86,7 @@ TEST_CASE("glTF samples: interleaved buffers, instancing, UVs, node hierarchies,
   m = import(rt::test::sample_model("MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb"), error);
   REQUIRE(m);
   CHECK(m->materials.size() > 10);
-  CHECK(m->instances.size() > 10);
+  CHECK(placements(*m).size() > 10);
 
   for (const char* path : {"OrientationTest/glTF-Binary/OrientationTest.glb", "Avocado/glTF/Avocado.gltf",
                            "AnimatedCube/glTF/AnimatedCube.gltf", "BoxAnimated/glTF-Binary/BoxAnimated.glb",
@@ -212,13 +212,12 @@ TEST_CASE("glTF samples: Avocado's normal map, with its TANGENT attribute", "[io
   CHECK(normal_map.scale == 1.0f);
   REQUIRE(model->textures.size() == 1);  // only the normal map is decoded; colour maps are issue 9's
   CHECK(model->textures[0].width() == 2048);
-  const TriangleMesh& mesh = model->meshes[model->instances[0].mesh][0].mesh;
+  const TriangleMesh& mesh = model->meshes[placements(*model)[0].mesh][0].mesh;
   REQUIRE(mesh.tangents.size() == mesh.positions.size());
   for (const Vec4& t : mesh.tangents) {
     CHECK(glm::length(Vec3(t)) == Approx(1.0f).epsilon(1e-4));
     CHECK(std::fabs(t.w) == 1.0f);
   }
-  CHECK(std::any_of(model->files.begin(), model->files.end(), [](const std::string& f) {
-    return std::filesystem::path(f).filename() == "Avocado_normal.png";
-  }));
+  CHECK(std::any_of(model->files.begin(), model->files.end(),
+                    [](const std::string& f) { return std::filesystem::path(f).filename() == "Avocado_normal.png"; }));
 }

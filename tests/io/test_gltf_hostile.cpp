@@ -199,7 +199,7 @@ TEST_CASE("glTF hostile: buffers must be regular files, and the JSON sane", "[io
   CHECK_THAT(o.error, Catch::Contains("shorter than its 20-byte header"));
 }
 
-TEST_CASE("glTF hostile: instancing cannot multiply triangles past the limit", "[io][gltf][hostile]") {
+TEST_CASE("glTF hostile: instancing shares a mesh; the instance limit counts placements", "[io][gltf][hostile]") {
   Json doc = triangle();
   doc["nodes"] = {{{"children", Json::array()}}};
   for (int i = 1; i <= 100; ++i) {
@@ -208,12 +208,21 @@ TEST_CASE("glTF hostile: instancing cannot multiply triangles past the limit", "
   }
   const std::string model = write_gltf("hundred.gltf", square_positions(), doc);
   LoadOptions options = rt::test::load_options();
-  options.limits.triangles = 50;
+  options.limits.triangles = 2;  // the square's two triangles, stored once for its 100 placements
+  options.limits.instances = 50;
   Diagnostics diags;
   CHECK_FALSE(load_scene(model, options, diags));
   REQUIRE(diags.has_errors());
-  CHECK_THAT(diags.all().front().message, Catch::Contains("at most 50 triangles in a scene (every instance counted)"));
-  options.limits.triangles = 100;
+  CHECK_THAT(diags.all().front().message, Catch::Contains("at most 50 shapes and placed mesh primitives"));
+  options.limits.instances = 100;
   Diagnostics ok;
-  CHECK(load_scene(model, options, ok));
+  const auto loaded = load_scene(model, options, ok);
+  REQUIRE(loaded);
+  CHECK(loaded->scene.assets->meshes.size() == 1);
+  CHECK(loaded->scene.bvh.instances().size() == 100);
+  options.limits.triangles = 1;
+  Diagnostics few;
+  CHECK_FALSE(load_scene(model, options, few));
+  REQUIRE(few.has_errors());
+  CHECK_THAT(few.all().front().message, Catch::Contains("at most 1 triangles in a scene's meshes"));
 }

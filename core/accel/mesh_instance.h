@@ -1,0 +1,25 @@
+// A triangle mesh placed in the world: the mesh's own BVH, built once in its object space, under
+// a transform. The top-level BVH holds instances next to analytic shapes; a ray that reaches one
+// is moved into object space (its direction not renormalised, so t means the same in both spaces)
+// and handed to the mesh's BVH. A mesh used by many nodes, or by every frame of an animation, is
+// stored and indexed once.
+#pragma once
+
+#include <cstdint>
+
+#include "core/aabb.h"
+#include "core/transform.h"
+
+namespace rt {
+
+class Bvh;
+
+struct MeshInstance {
+  const Bvh* bvh = nullptr;  // object space, triangles only (ids = the mesh's triangle indices)
+  Transform transform;
+  Aabb bounds;            // world space: the BVH's box through the transform
+  uint32_t mesh = 0;      // which mesh of the scene's assets, for surface records
+  uint32_t material = 0;  // the placement's material (a mesh can be placed with several)
+};
+
+}  // namespace rt

@@ -1,0 +1,106 @@
+#include "core/scene_graph.h"
+
+namespace rt {
+namespace {
+
+bool finite_box(const Aabb& box) { return is_finite(box.lo) && is_finite(box.hi); }
+
+Vec3 point(const Mat4& m, Vec3 p) { return Vec3(m * Vec4(p, 1.0f)); }
+
+Camera placed_camera(const Camera& c, const Mat4& m) {
+  const Vec3 position = point(m, c.position);
+  const Vec3 forward = Mat3(m) * c.forward, up = Mat3(m) * c.up;
+  Camera out = c;
+  // A node's scale or shear does not distort the view: only its position and directions count.
+  if (glm::length(glm::cross(forward, up)) > 0.0f && is_finite(forward) && is_finite(up))
+    out = Camera::look_at(position, position + glm::normalize(forward), glm::normalize(up), c.vertical_fov_degrees);
+  out.aperture = c.aperture;
+  out.focus_distance = c.focus_distance;
+  return out;
+}
+
+}  // namespace
+
+Light transform_light(const Light& light, const Mat4& m) {
+  return std::visit(
+      [&](auto l) -> Light {
+        using T = decltype(l);
+        if constexpr (std::is_same_v<T, PointLight>) {
+          l.position = point(m, l.position);
+        } else {
+          l.corner = point(m, l.corner);
+          l.edge1 = Mat3(m) * l.edge1;
+          l.edge2 = Mat3(m) * l.edge2;
+        }
+        return l;
+      },
+      light);
+}
+
+std::vector<Mat4> SceneGraph::world_transforms(float seconds) const {
+  std::vector<Trs> local(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) local[i] = nodes[i].trs;
+  for (const Track& track : tracks)
+    if (track.node < nodes.size()) apply_track(track, seconds, local[track.node]);
+  std::vector<Mat4> world(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const SceneNode& n = nodes[i];
+    const Mat4 m = n.matrix ? *n.matrix : local[i].matrix();
+    world[i] = n.parent >= 0 ? world[static_cast<size_t>(n.parent)] * m : m;
+  }
+  return world;
+}
+
+PrimitiveSet SceneGraph::place(float seconds, std::vector<PlacementIssue>* issues) const {
+  const std::vector<Mat4> world = world_transforms(seconds);
+  const auto issue = [&](PlacementIssue::Kind kind, size_t node) {
+    if (issues) issues->push_back(PlacementIssue{kind, static_cast<uint32_t>(node)});
+  };
+  PrimitiveSet top;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const SceneNode& node = nodes[i];
+    if (!node.has_geometry()) continue;
+    const size_t copies = std::max<size_t>(1, node.instancing.size());
+    for (size_t c = 0; c < copies; ++c) {
+      const Mat4 m = node.instancing.empty() ? world[i] : world[i] * node.instancing[c];
+      const auto transform = make_transform(m);
+      if (!transform) {
+        issue(PlacementIssue::kSingular, i);
+        continue;
+      }
+      if (node.shape) {
+        const AnalyticShape shape{*node.shape, node.shape_material, *transform};
+        if (finite_box(world_bounds(shape))) top.shapes.push_back(shape);
+        else issue(PlacementIssue::kBeyondRange, i);
+      }
+      for (const NodeMesh& nm : node.meshes) {
+        const MeshGeometry& g = assets->meshes[nm.mesh];
+        if (g.bvh.primitive_count() == 0) continue;
+        const MeshInstance inst = place_mesh(g.bvh, *transform, nm.mesh, nm.material);
+        if (finite_box(inst.bounds)) top.instances.push_back(inst);
+        else issue(PlacementIssue::kBeyondRange, i);
+      }
+    }
+  }
+  return top;
+}
+
+Scene SceneGraph::at(float seconds, const BvhBuildOptions& options, std::vector<PlacementIssue>* issues) const {
+  return at(seconds, place(seconds, issues), options);
+}
+
+Scene SceneGraph::at(float seconds, const PrimitiveSet& placed, const BvhBuildOptions& options) const {
+  const std::vector<Mat4> world = camera.node >= 0 || !lights.empty() ? world_transforms(seconds) : std::vector<Mat4>{};
+  Scene scene;
+  scene.assets = assets;
+  scene.background = background;
+  scene.ambient = ambient;
+  scene.camera =
+      camera.node >= 0 ? placed_camera(camera.camera, world[static_cast<size_t>(camera.node)]) : camera.camera;
+  for (const LightPlacement& l : lights)
+    scene.lights.push_back(l.node >= 0 ? transform_light(l.light, world[static_cast<size_t>(l.node)]) : l.light);
+  scene.bvh = Bvh(placed, options);
+  return scene;
+}
+
+}  // namespace rt

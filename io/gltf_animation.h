@@ -1,0 +1,23 @@
+// glTF animation channels as Tracks on the imported nodes. The file's first animation plays
+// (a file may hold alternatives, such as "walk" and "run", that animate the same nodes); its
+// translation, rotation and scale channels with LINEAR, STEP or CUBICSPLINE samplers. Morph
+// target weights and channels on nodes outside the default scene are skipped with a warning.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/gltf_loader.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace rt {
+
+// node_map: per file node, its index in out.nodes (-1 if the scene does not use it). Appends to
+// out.tracks and out.warnings and sets out.animation_end; false with `error` for a broken channel.
+bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map, const LoadLimits& limits,
+                       ImportedModel& out, std::string& error);
+
+}  // namespace rt
