@@ -18,10 +18,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RenderCommand render;
-  CLI::App* render_cmd =
-      app.add_subcommand("render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image");
+  CLI::App* render_cmd = app.add_subcommand(
+      "render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image or an animation");
   render_cmd->add_option("scene", render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
-  render_cmd->add_option("-o,--output", render.output, "Output PNG (default: <scene name>.png in the current folder)");
+  render_cmd->add_option("-o,--output", render.output,
+                         "Output .png, NAME_####.png or .gif (default: <scene name>.png, or .gif for --frames A-B)");
   render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
@@ -57,6 +58,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"corners", "centres"}));
   render_cmd->add_flag("--aa-debug", render.aa_debug,
                        "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
+  CLI::Option* frames = render_cmd->add_option(
+      "--frames", render.frames,
+      "Render frames A-B of the scene's animation: -o NAME.gif (looping animated GIF) or -o NAME_####.png (numbered)");
+  render_cmd->add_option("--frame", render.frames, "Render frame N of the scene's animation")->excludes(frames);
+  render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;

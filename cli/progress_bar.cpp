@@ -45,6 +45,7 @@ void ProgressBar::update(const RenderProgress& p) {
   std::snprintf(buf, sizeof buf, " %5.1f%%  ETA %s  %srays/s", 100.0 * fraction,
                 fraction > 0.0 ? format_duration(eta).c_str() : "?:??", format_count(rate).c_str());
   line += buf;
+  if (!label_.empty()) line += "  " + label_;
   if (line == last_) return;
   last_ = line;
   std::fputs((line + "\x1b[K").c_str(), out_);

@@ -13,11 +13,13 @@ class ProgressBar {
  public:
   explicit ProgressBar(std::FILE* out) : out_(out) {}
   void update(const RenderProgress& p);
-  void clear();  // erase the line, ready for the summary
+  void set_label(std::string label) { label_ = std::move(label); }  // shown after the bar: "frame 3/120"
+  void clear();                                                     // erase the line, ready for the summary
 
  private:
   std::FILE* out_;
   std::string last_;
+  std::string label_;
 };
 
 // "1:05" or "0:07" (minutes:seconds), "1:02:03" past an hour.

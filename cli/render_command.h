@@ -1,7 +1,8 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME] [--shadow-samples N]
+//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
+//   [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
-//   [--aa-positions corners|centres] [--aa-debug] [--quiet]`
+//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--dither] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,7 @@ namespace rt {
 
 struct RenderCommand {
   std::string scene;
-  std::string output;  // empty: <scene name>.png in the current folder
+  std::string output;  // empty: <scene name>.png (.gif for a frame range) in the current folder
   std::optional<unsigned> threads;
   std::optional<int> width, height;
   std::optional<uint64_t> seed;
@@ -29,6 +30,8 @@ struct RenderCommand {
   bool no_textures = false;
   bool no_bumps = false;
   std::optional<std::string> texture_filter;
+  std::optional<std::string> frames;  // "A-B" or "N" (--frames), or "N" (--frame)
+  bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
   bool quiet = false;
 };
 

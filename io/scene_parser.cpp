@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "io/animation_parser.h"
 #include "io/json_locate.h"
 #include "io/node_parser.h"
 
@@ -264,6 +265,7 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
     NodeParseContext ctx{r, folder, scene.materials, {}, options.limits.nodes, 0};
     scene.nodes = parse_nodes(ctx, *v, "/nodes");
   }
+  if (const Json* v = top.get("animation")) scene.animation = parse_animation(r, *v, "/animation");
   top.finish();
   return scene;
 }

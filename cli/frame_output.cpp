@@ -1,0 +1,81 @@
+#include "cli/frame_output.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <filesystem>
+
+#include "io/png_file.h"
+
+namespace rt {
+namespace {
+
+std::optional<int> parse_int(const std::string& s) {
+  if (s.empty() || s.size() > 8) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (errno != 0 || end != s.c_str() + s.size() || v < -1000000 || v > 1000000) return std::nullopt;
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+std::optional<FrameRange> parse_frame_range(const std::string& text) {
+  // The separating '-' is the first one after the first character (which may be a sign).
+  const size_t dash = text.find('-', 1);
+  if (dash == std::string::npos) {
+    const auto n = parse_int(text);
+    return n ? std::optional<FrameRange>(FrameRange{*n, *n}) : std::nullopt;
+  }
+  const auto a = parse_int(text.substr(0, dash)), b = parse_int(text.substr(dash + 1));
+  if (!a || !b || *b < *a) return std::nullopt;
+  return FrameRange{*a, *b};
+}
+
+std::optional<OutputKind> output_kind(const std::string& path, std::string& error) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (ext == ".gif") return OutputKind::kGif;
+  if (ext == ".png") return name.find('#') != std::string::npos ? OutputKind::kPngSequence : OutputKind::kPng;
+  error =
+      "expected an output file name ending in .png (or frame_####.png, or .gif for animations), found \"" + path + "\"";
+  return std::nullopt;
+}
+
+std::string sequence_path(const std::string& pattern, int frame) {
+  const std::filesystem::path p(pattern);
+  std::string name = p.filename().string();
+  const size_t start = name.find('#');
+  if (start == std::string::npos) return pattern;
+  size_t end = start;
+  while (end < name.size() && name[end] == '#') ++end;
+  std::string digits = std::to_string(frame < 0 ? -frame : frame);
+  if (digits.size() < end - start) digits.insert(0, end - start - digits.size(), '0');
+  name.replace(start, end - start, (frame < 0 ? "-" : "") + digits);
+  return (p.parent_path() / name).string();
+}
+
+FrameSink::FrameSink(OutputKind kind, std::string path, int width, int height, float fps, int frames, bool dither,
+                     unsigned threads)
+    : kind_(kind), path_(std::move(path)), threads_(threads), delays_(gif_frame_delays(frames, fps)) {
+  if (kind_ == OutputKind::kGif) gif_ = std::make_unique<GifWriter>(width, height, dither);
+}
+
+bool FrameSink::add(const Rgb8Image& image, int frame, std::string& error) {
+  const size_t index = added_++;
+  if (kind_ == OutputKind::kGif) return gif_->add_frame(image, delays_[std::min(index, delays_.size() - 1)], error);
+  const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
+  if (!write_png(path, image, error, threads_)) return false;
+  written_.push_back(path);
+  return true;
+}
+
+bool FrameSink::finish(std::string& error) {
+  if (kind_ != OutputKind::kGif) return true;
+  if (!gif_->finish(path_, error)) return false;
+  written_.push_back(path_);
+  return true;
+}
+
+}  // namespace rt
