@@ -265,9 +265,11 @@ int run_render(const RenderCommand& cmd) {
     totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame));
     bar.clear();
     if (totals.last.cancelled) {
-      std::fprintf(stderr, "rtcli: interrupted in frame %d after %.2f s; %s\n", frame,
-                   totals.seconds + totals.last.seconds,
-                   sink.written().empty() ? "nothing written" : "the frames before it were written");
+      const double seconds = totals.seconds + totals.last.seconds;
+      if (frames.count() == 1) std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", seconds);
+      else
+        std::fprintf(stderr, "rtcli: interrupted in frame %d after %.2f s; %s\n", frame, seconds,
+                     sink.written().empty() ? "nothing written" : "the frames before it were written");
       return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
     }
     totals.seconds += totals.last.seconds;
