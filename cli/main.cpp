@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
       "--frames", render.frames,
       "Render frames A-B of the scene's animation: -o NAME.gif (looping animated GIF) or -o NAME_####.png (numbered)");
   render_cmd->add_option("--frame", render.frames, "Render frame N of the scene's animation")->excludes(frames);
+  render_cmd->add_option("--camera", render.camera,
+                         "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "
+                         "glTF file's first)");
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 

@@ -191,7 +191,8 @@ int run_render(const RenderCommand& cmd) {
 
   const auto load_start = std::chrono::steady_clock::now();
   Diagnostics diags;
-  std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0)), diags);
+  std::optional<LoadedScene> loaded =
+      load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0), cmd.camera), diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
   const Timeline& timeline = loaded->graph.timeline;

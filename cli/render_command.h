@@ -2,7 +2,7 @@
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
 //   [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
-//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--dither] [--quiet]`
+//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME] [--dither] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -31,6 +31,7 @@ struct RenderCommand {
   bool no_bumps = false;
   std::optional<std::string> texture_filter;
   std::optional<std::string> frames;  // "A-B" or "N" (--frames), or "N" (--frame)
+  std::optional<std::string> camera;  // a glTF camera by name
   bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
   bool quiet = false;
 };

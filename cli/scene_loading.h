@@ -7,8 +7,8 @@
 
 namespace rt {
 
-inline LoadOptions cli_load_options(unsigned threads = 0) {
-  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}};
+inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt) {
+  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::move(camera)};
 }
 
 }  // namespace rt

@@ -27,6 +27,11 @@ Light transform_light(const Light& light, const Mat4& m) {
         using T = decltype(l);
         if constexpr (std::is_same_v<T, PointLight>) {
           l.position = point(m, l.position);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+          l.position = point(m, l.position);
+          l.direction = glm::normalize(Mat3(m) * l.direction);
+        } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+          l.direction = glm::normalize(Mat3(m) * l.direction);
         } else {
           l.corner = point(m, l.corner);
           l.edge1 = Mat3(m) * l.edge1;

@@ -11,6 +11,7 @@
 #include "io/gltf_accessor.h"
 #include "io/gltf_animation.h"
 #include "io/gltf_file.h"
+#include "io/gltf_lights.h"
 #include "io/input_file.h"
 #include "io/pbr_to_phong.h"
 #include "io/texture_file.h"
@@ -270,6 +271,56 @@ class ImageDecoder {
 // disjoint trees: no node with two parents, no cycles, roots that are nobody's child. Checking
 // that first bounds the walk by the number of nodes (a node listed twice as a child would
 // otherwise double the work at every level).
+// glTF cameras look down their node's -Z with +Y up; only perspective projection is rendered.
+bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, int32_t index, ImportedModel& out,
+                   std::string& error) {
+  if (node.camera < 0) return true;
+  if (static_cast<size_t>(node.camera) >= model.cameras.size()) {
+    error = "node \"" + node.name + "\" uses camera " + to_string(node.camera) + ", which does not exist";
+    return false;
+  }
+  const tinygltf::Camera& c = model.cameras[static_cast<size_t>(node.camera)];
+  float fov = 40.0f;
+  if (c.type == "perspective" && c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1)
+    fov = static_cast<float>(c.perspective.yfov * 180.0 / 3.14159265358979);
+  else
+    out.warnings.push_back("camera " + to_string(node.camera) + " (\"" + c.name + "\") is " +
+                           (c.type == "perspective" ? "a perspective camera without a usable yfov" : "orthographic") +
+                           "; rendered as a perspective camera with a 40 degree field of view");
+  CameraPlacement placement;
+  placement.name = !c.name.empty() ? c.name : !node.name.empty() ? node.name : "camera " + to_string(node.camera);
+  placement.camera = Camera::look_at(Vec3(0.0f), Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, 1.0f, 0.0f), fov);
+  placement.node = index;
+  out.cameras.push_back(placement);
+  return true;
+}
+
+// KHR_lights_punctual, converted to our units by the rule in io/gltf_lights.h.
+bool import_light(const tinygltf::Model& model, const tinygltf::Node& node, int32_t index, ImportedModel& out,
+                  std::string& error) {
+  const auto ext = node.extensions.find("KHR_lights_punctual");
+  if (ext == node.extensions.end() || !ext->second.Has("light")) return true;
+  const tinygltf::Value& v = ext->second.Get("light");
+  const int light = v.IsInt() ? v.GetNumberAsInt() : -1;
+  if (light < 0 || static_cast<size_t>(light) >= model.lights.size()) {
+    error = "node \"" + node.name + "\" uses light " + to_string(light) + ", which does not exist";
+    return false;
+  }
+  const tinygltf::Light& l = model.lights[static_cast<size_t>(light)];
+  std::string why;
+  const auto converted =
+      light_from_gltf(l.type, l.color, l.intensity, l.spot.innerConeAngle, l.spot.outerConeAngle, why);
+  if (!converted) {
+    out.warnings.push_back("light " + to_string(light) + " (\"" + l.name + "\"): " + why + "; ignored");
+    return true;
+  }
+  if (l.range > 0.0)
+    out.warnings.push_back("light " + to_string(light) + " (\"" + l.name +
+                           "\"): range is not modelled; the inverse-square falloff continues beyond it");
+  out.lights.push_back(LightPlacement{*converted, index});
+  return true;
+}
+
 // node_map receives, per file node, its index in out.nodes (-1: not in the scene).
 bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
                  Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map, std::string& error) {
@@ -335,6 +386,7 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     imported.gltf_index = item.node;
     read_node_transform(node, imported);
     const auto index = static_cast<int32_t>(out.nodes.size());
+    if (!import_camera(model, node, index, out, error) || !import_light(model, node, index, out, error)) return false;
     node_map[static_cast<size_t>(item.node)] = index;
     out.nodes.push_back(std::move(imported));
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, index});

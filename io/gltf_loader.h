@@ -13,6 +13,7 @@
 #include "core/animation/track.h"
 #include "core/material.h"
 #include "core/mesh.h"
+#include "core/scene_graph.h"
 #include "core/texture/texture.h"
 #include "io/load_options.h"
 
@@ -42,6 +43,8 @@ struct ImportedModel {
   std::vector<std::vector<ImportedPrimitive>> meshes;  // per glTF mesh
   std::vector<ImportedNode> nodes;                     // the default scene's, parents first
   std::vector<Track> tracks;                           // Track::node indexes `nodes`
+  std::vector<CameraPlacement> cameras;                // node indexes `nodes`; camera in node space
+  std::vector<LightPlacement> lights;                  // KHR_lights_punctual, in node space
   float animation_end = 0.0f;                          // the last key time of all tracks, seconds
   std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong; texture slots index `textures`
   std::vector<Texture> textures;    // the images the materials use (normal maps), decoded once each

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct LoadOptions {
   std::vector<std::string> pixel_samplers{"none"};  // valid values of /render/antialias/mode
   LoadLimits limits;
   bool build_bvh = true;  // false: check everything, build no acceleration structure (validate)
+  // A glTF camera to look through, by the camera's name (or its node's): `rtcli render --camera`.
+  std::optional<std::string> camera;
 };
 
 }  // namespace rt

@@ -94,6 +94,8 @@ class Builder {
     g.camera.camera.aperture = c.aperture;
     g.camera.camera.focus_distance = c.focus_distance.value_or(glm::length(c.look_at - c.position));
     for (const Light& l : desc_.lights) g.lights.push_back(LightPlacement{l, -1});
+    g.lights.insert(g.lights.end(), file_lights_.begin(), file_lights_.end());
+    if (!choose_camera(g)) return std::nullopt;
     g.assets = std::make_shared<const SceneAssets>(std::move(assets_));
 
     // The first frame, placed once: its problems are errors at the nodes concerned (nodes from
@@ -111,6 +113,7 @@ class Builder {
                   "that reaches infinity");
     }
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
+    if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
     Scene first = options_.build_bvh ? g.at(t0, placed, bvh_options_) : g.at(t0, PrimitiveSet{}, bvh_options_);
     return BuiltScene{std::move(g), std::move(first)};
@@ -138,6 +141,24 @@ class Builder {
         a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
   }
 
+  // --camera NAME: a glTF camera by its name or its node's, instead of the scene's camera.
+  bool choose_camera(SceneGraph& g) {
+    if (!options_.camera) return true;
+    std::vector<std::string> names;
+    for (const CameraPlacement& c : cameras_) {
+      if (c.name == *options_.camera || g.nodes[static_cast<size_t>(c.node)].name == *options_.camera) {
+        g.camera = c;
+        return true;
+      }
+      names.push_back(c.name);
+    }
+    diags_.file_error(desc_.path,
+                      "--camera: expected the name of a camera in the scene's glTF files" +
+                          (names.empty() ? std::string(" (there are none)") : " (" + join_quoted(names) + ")") +
+                          ", found \"" + *options_.camera + "\"");
+    return false;
+  }
+
   // The camera framing the model's first frame from the front and above, and a point light up
   // and to the right of it, so that shading shows the form and shadows fall behind.
   bool frame_model(SceneGraph& g, const PrimitiveSet& placed) {
@@ -158,7 +179,7 @@ class Builder {
       return false;
     }
     g.camera = CameraPlacement{"", camera, -1};
-    g.lights = {LightPlacement{light, -1}};
+    if (g.lights.empty()) g.lights = {LightPlacement{light, -1}};
     return true;
   }
 
@@ -251,6 +272,14 @@ class Builder {
       for (Track t : model.tracks) {
         t.node += static_cast<uint32_t>(base);
         tracks_.push_back(std::move(t));
+      }
+      for (CameraPlacement c : model.cameras) {
+        c.node += base;
+        cameras_.push_back(std::move(c));
+      }
+      for (LightPlacement l : model.lights) {
+        l.node += base;
+        file_lights_.push_back(l);
       }
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
@@ -385,6 +414,8 @@ class Builder {
   std::vector<std::string> pointers_;  // per node: where the scene file describes it
   std::vector<bool> from_file_;        // per node: grafted from a glTF file
   std::vector<Track> tracks_;
+  std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
+  std::vector<LightPlacement> file_lights_;
   std::map<std::string, std::optional<LoadedModel>> models_;  // empty: the file failed
   std::optional<uint32_t> default_material_;
   std::vector<std::string> files_;

@@ -1,15 +1,18 @@
-// Lights are a closed set, dispatched statically: point lights (hard shadows, one shadow ray) and
-// rectangular area lights (soft shadows, render.shadow_samples rays stratified over the rectangle).
+// Lights are a closed set, dispatched statically: point, spot and directional lights (hard
+// shadows, one shadow ray) and rectangular area lights (soft shadows, render.shadow_samples rays
+// stratified over the rectangle).
 #pragma once
 
 #include <variant>
 
+#include "core/lights/directional_light.h"
 #include "core/lights/point_light.h"
 #include "core/lights/rect_light.h"
+#include "core/lights/spot_light.h"
 
 namespace rt {
 
-using Light = std::variant<PointLight, RectLight>;
+using Light = std::variant<PointLight, RectLight, SpotLight, DirectionalLight>;
 
 // One sample of the light seen from a surface point.
 struct LightSample {
@@ -31,6 +34,20 @@ inline LightSample light_sample_towards(Vec3 from, Vec3 to, Vec3 radiance_at_uni
 inline LightSample sample_light(const PointLight& light, Vec3 point, Vec2 /*u*/) {
   LightSample s = light_sample_towards(point, light.position, light.colour);
   s.radiance *= light.attenuation(s.distance);
+  return s;
+}
+
+inline LightSample sample_light(const SpotLight& light, Vec3 point, Vec2 /*u*/) {
+  LightSample s = light_sample_towards(point, light.position, light.colour);
+  s.radiance *= light.attenuation(s.distance) * light.cone(-s.direction);
+  return s;
+}
+
+inline LightSample sample_light(const DirectionalLight& light, Vec3 /*point*/, Vec2 /*u*/) {
+  LightSample s;
+  s.direction = -light.direction;
+  s.distance = kInfinity;
+  s.radiance = light.colour;
   return s;
 }
 

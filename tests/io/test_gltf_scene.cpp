@@ -1,0 +1,135 @@
+// glTF files as whole scenes: node trees, animation channels, cameras and KHR_lights_punctual.
+#include <catch2/catch.hpp>
+
+#include "io/gltf_lights.h"
+#include "io/gltf_loader.h"
+#include "tests/support/gltf_files.h"
+#include "tests/support/loading.h"
+#include "tests/support/run_rtcli.h"
+
+using namespace rt;
+
+namespace {
+
+Json lit_square() {
+  Json doc = {
+      {"scenes", {{{"nodes", {0, 1, 2}}}}},
+      {"nodes",
+       {{{"mesh", 0}},
+        {{"name", "lamp"}, {"translation", {0, 0, 2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+        {{"name", "eye"}, {"translation", {0.5, 0.5, 4}}, {"camera", 0}}}},
+      {"cameras", {{{"name", "view"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}}},
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions",
+       {{"KHR_lights_punctual",
+         {{"lights",
+           {{{"type", "spot"},
+             {"intensity", 683.0 * M_PI},
+             {"color", {1, 0.5, 0.25}},
+             {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}}}}}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}}}}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}}}};
+  return doc;
+}
+
+}  // namespace
+
+TEST_CASE("glTF lights: photometric units converted by the documented rule", "[gltf][lights]") {
+  std::string why;
+  // 683 pi candela of white light: colour 1, falling off as 1 / d^2.
+  auto light = light_from_gltf("point", {1, 1, 1}, 683.0 * M_PI, 0, 0, why);
+  REQUIRE(light);
+  const LightSample at2 = sample_light(*light, Vec3(0, 0, -2), Vec2(0.5f));
+  CHECK(at2.radiance.x == Approx(0.25f));
+  // A Blender 1000 W point light exported as 1000 * 683 / (4 pi) cd, 5 m away: 1000 / (4 pi 25) / pi = 1.0132.
+  light = light_from_gltf("point", {1, 1, 1}, 1000.0 * 683.0 / (4 * M_PI), 0, 0, why);
+  CHECK(sample_light(*light, Vec3(5, 0, 0), Vec2(0.5f)).radiance.y == Approx(1000.0 / (4 * M_PI * 25) / M_PI));
+  // 10 lux of sunlight straight down: 10 / (683 pi) = 0.00466 everywhere.
+  light = light_from_gltf("directional", {}, 10.0, 0, 0, why);
+  REQUIRE(light);
+  const LightSample sun = sample_light(*light, Vec3(100, -3, 7), Vec2(0.5f));
+  CHECK(sun.radiance.z == Approx(10.0 / (683.0 * M_PI)));
+  CHECK(sun.direction.z == Approx(1.0f));  // towards the light: the node's +Z, the light shines down -Z
+  CHECK(std::isinf(sun.distance));
+  // Spot: full inside the inner cone, none outside the outer, t^2 between.
+  light = light_from_gltf("spot", {1, 1, 1}, 683.0 * M_PI, 0.2, 0.6, why);
+  REQUIRE(light);
+  const auto at_angle = [&](double a) {
+    return sample_light(*light, Vec3(std::sin(a), 0, -std::cos(a)), Vec2(0.5f)).radiance.x;
+  };
+  CHECK(at_angle(0.1) == Approx(1.0f));
+  CHECK(at_angle(0.7) == 0.0f);
+  const double t = (std::cos(0.4) - std::cos(0.6)) / (std::cos(0.2) - std::cos(0.6));
+  CHECK(at_angle(0.4) == Approx(t * t));
+  CHECK_FALSE(light_from_gltf("area", {}, 1.0, 0, 0, why));
+  CHECK_THAT(why, Catch::Contains("\"area\""));
+  CHECK_FALSE(light_from_gltf("point", {}, -1.0, 0, 0, why));
+}
+
+TEST_CASE("glTF scene: a file's own camera and lights are used, on their nodes", "[gltf][lights]") {
+  const std::string path = rt::test::write_gltf("lit_square.gltf", rt::test::square_positions(), lit_square());
+  Diagnostics diags;
+  const auto loaded = load_scene(path, rt::test::load_options(), diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(loaded);
+  const Scene& s = loaded->scene;
+  CHECK(s.camera.position == Vec3(0.5f, 0.5f, 4.0f));
+  CHECK(s.camera.forward.z == Approx(-1.0f));
+  CHECK(s.camera.vertical_fov_degrees == Approx(glm::degrees(0.5f)));
+  REQUIRE(s.lights.size() == 1);  // the file's spot light, not the default light
+  const auto* spot = std::get_if<SpotLight>(&s.lights[0]);
+  REQUIRE(spot);
+  CHECK(spot->position.z == Approx(2.0f));
+  CHECK(spot->colour.y == Approx(0.5f));
+
+  auto r = rt::test::rtcli("render '" + path + "' --camera nope -o '" + rt::test::output_path("nope.png") + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--camera: expected the name of a camera") && Catch::Contains("\"view\""));
+  r = rt::test::rtcli("render '" + path + "' --camera eye --width 32 --height 24 -o '" +
+                      rt::test::output_path("eye.png") + "'");
+  CHECK(r.code == 0);
+}
+
+TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][animation]") {
+  if (!rt::test::have_sample_models()) {
+    WARN("../shared/gltf not found: sample-model tests skipped");
+    return;
+  }
+  ImportError error;
+  auto m =
+      import_gltf(rt::test::sample_model("BoxAnimated/glTF-Binary/BoxAnimated.glb"), std::nullopt, LoadLimits{}, error);
+  REQUIRE(m);
+  CHECK(m->nodes.size() == 4);
+  const auto imported = [&](int gltf_index) {
+    for (size_t i = 0; i < m->nodes.size(); ++i)
+      if (m->nodes[i].gltf_index == gltf_index) return static_cast<int32_t>(i);
+    return -1;
+  };
+  CHECK(m->nodes[static_cast<size_t>(imported(1))].parent == imported(0));  // node 0's child, found by the walk
+  const auto moved = static_cast<size_t>(imported(0));
+  REQUIRE(m->tracks.size() == 2);
+  CHECK(m->animation_end == Approx(3.70833f));
+
+  Diagnostics diags;
+  auto loaded =
+      load_scene(rt::test::sample_model("BoxAnimated/glTF-Binary/BoxAnimated.glb"), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  CHECK(loaded->graph.animated);
+  CHECK(loaded->graph.timeline.last_frame == 112);  // ceil(3.708 s * 30 fps)
+  const std::vector<Mat4> at0 = loaded->graph.world_transforms(0.0f), at1 = loaded->graph.world_transforms(1.0f);
+  // The file hangs under the one node the loader makes for it: its nodes start at graph index 1.
+  CHECK(at0[moved + 1][3] != at1[moved + 1][3]);  // the translated node moved
+
+  loaded = load_scene(rt::test::sample_model("AnimatedCube/glTF/AnimatedCube.gltf"), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  // One rotation channel, keys at 0, 1, 2 s: at 0.5 s between the first two keys.
+  REQUIRE(loaded->graph.tracks.size() == 1);
+  CHECK(loaded->graph.tracks[0].part == TrsPart::kRotation);
+  CHECK(loaded->graph.timeline.last_frame == 60);
+
+  loaded = load_scene(rt::test::sample_model("Cameras/glTF/Cameras.gltf"), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  CHECK(loaded->scene.camera.vertical_fov_degrees == Approx(glm::degrees(0.7f)));
+  CHECK(loaded->scene.camera.position.z == Approx(3.0f));
+}
