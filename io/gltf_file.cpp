@@ -80,8 +80,9 @@ uint32_t read_u32(const unsigned char* p) {
 }  // namespace
 
 const std::vector<std::string>& supported_gltf_extensions() {
-  // Quantized attributes are read like any other component type (io/gltf_accessor.cpp).
-  static const std::vector<std::string> names{"KHR_mesh_quantization"};
+  // Quantized attributes are read like any other component type (io/gltf_accessor.cpp); lights
+  // come from io/gltf_lights.h.
+  static const std::vector<std::string> names{"KHR_mesh_quantization", "KHR_lights_punctual"};
   return names;
 }
 
@@ -145,6 +146,14 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
       error = "it requires the extension \"" + name + "\", which rtcli does not implement (extensionsRequired)";
       return result;
     }
+  }
+  // An optional extension we do not implement leaves the file renderable: say what is ignored.
+  for (const std::string& name : model->extensionsUsed) {
+    const auto& supported = supported_gltf_extensions();
+    const bool required = std::find(model->extensionsRequired.begin(), model->extensionsRequired.end(), name) !=
+                          model->extensionsRequired.end();
+    if (!required && std::find(supported.begin(), supported.end(), name) == supported.end())
+      result.warnings.push_back("it uses the extension \"" + name + "\", which rtcli ignores (extensionsUsed)");
   }
   if (!check_buffer_views(*model, error)) return result;
   result.model = std::move(model);

@@ -31,7 +31,7 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   std::vector<std::string> files;
   std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);
   if (!built) return std::nullopt;
-  const Camera& c = built->graph.camera.camera;
+  const Camera& c = built->first_frame.camera;  // in the world, wherever its node put it
   desc.camera = CameraDescription{c.position, c.position + c.forward, c.up, c.vertical_fov_degrees, 0.0f, {}};
   return LoadedScene{std::move(desc), std::move(built->graph), std::move(built->first_frame), std::move(files)};
 }

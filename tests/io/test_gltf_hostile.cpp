@@ -118,6 +118,14 @@ TEST_CASE("glTF hostile: what the specification forbids is refused", "[io][gltf]
   CHECK_THAT(o.error, Catch::Contains("requires the extension \"EXT_meshopt_compression\", which rtcli does not"));
   doc["extensionsUsed"] = doc["extensionsRequired"] = {"KHR_mesh_quantization"};
   CHECK(import_json("quantization.gltf", doc).loaded);  // implemented: any component type is read
+  doc = triangle();
+  doc["extensionsUsed"] = {"EXT_fancy_sparkles"};  // optional and unknown: a warning, and it renders
+  ImportError optional_error;
+  const auto optional =
+      import_gltf(write_gltf("optional.gltf", square_positions(), doc), std::nullopt, {}, optional_error);
+  REQUIRE(optional);
+  REQUIRE(optional->warnings.size() == 1);
+  CHECK_THAT(optional->warnings[0], Catch::Contains("\"EXT_fancy_sparkles\", which rtcli ignores"));
 
   doc = triangle();
   doc["bufferViews"][0]["byteStride"] = 13;
