@@ -95,7 +95,7 @@ Scene SceneGraph::at(float seconds, const BvhBuildOptions& options, std::vector<
 }
 
 Scene SceneGraph::at(float seconds, const PrimitiveSet& placed, const BvhBuildOptions& options) const {
-  const std::vector<Mat4> world = camera.node >= 0 || !lights.empty() ? world_transforms(seconds) : std::vector<Mat4>{};
+  const std::vector<Mat4> world = world_transforms(seconds);  // for the camera and lights on nodes
   Scene scene;
   scene.assets = assets;
   scene.background = background;

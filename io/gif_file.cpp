@@ -83,7 +83,11 @@ bool GifWriter::add_frame(const Rgb8Image& image, int delay, std::string& error)
   int bits = 1;
   while ((1u << bits) < indexed.palette.size()) ++bits;
   ColorMapObject* map = GifMakeMapObject(1 << bits, nullptr);
-  if (!map) return s.fail("palette"), error = s.error, false;
+  if (!map) {
+    s.fail("palette");
+    error = s.error;
+    return false;
+  }
   std::memset(map->Colors, 0, sizeof(GifColorType) * static_cast<size_t>(map->ColorCount));
   for (size_t i = 0; i < indexed.palette.size(); ++i)
     map->Colors[i] = GifColorType{indexed.palette[i][0], indexed.palette[i][1], indexed.palette[i][2]};

@@ -8,7 +8,7 @@
 #include "core/thread_count.h"
 #include "io/gltf_loader.h"
 #include "io/json_reader.h"
-#include "io/texture_file.h"
+#include "io/texture_library.h"
 
 namespace rt {
 namespace {
@@ -188,44 +188,16 @@ class Builder {
   Material with_textures(const MaterialDescription& m) {
     Material out = m.material;
     const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
-      if (ref) slot.texture = texture_index(*ref);
+      if (!ref) return;
+      std::string why;
+      slot.texture = textures_.load(*ref, why, files_);
+      if (!why.empty()) error(ref->pointer, why);
     };
     fill(m.texture, out.texture);
     fill(m.specular_texture, out.specular_texture);
     fill(m.bump, out.bump.height);
     fill(m.normal_map, out.normal_map.map);
     return out;
-  }
-
-  // Each file is loaded once per encoding (a colour texture is decoded from sRGB, a height map not).
-  uint32_t texture_index(const TextureFileReference& ref) {
-    const std::string key = ref.resolved_path + (ref.encoding == TextureEncoding::kSrgb ? "\nsrgb" : "\nlinear");
-    if (const auto it = texture_indices_.find(key); it != texture_indices_.end()) return it->second;
-    const LoadLimits& limits = options_.limits;
-    const uint64_t budget = std::min(limits.texture_texels, limits.scene_texels - texels_);
-    std::string why;
-    auto texture = load_texture(ref.resolved_path, ref.encoding, budget, why);
-    uint32_t index = kNoTexture;
-    if (!texture) {
-      if (budget < limits.texture_texels)
-        why += " (all the scene's textures together may hold at most " + std::to_string(limits.scene_texels) +
-               " texels; README, \"Limits\")";
-      // load_texture says what it found: a size ("expected an image of 1 to N texels, found ...")
-      // or why the file could not be read.
-      error(ref.pointer, why.rfind("expected", 0) == 0 ? why : "expected a readable PNG or JPEG image; " + why);
-    } else {
-      count_texels(*texture);
-      files_.push_back(ref.resolved_path);
-      index = static_cast<uint32_t>(assets_.textures.size());
-      assets_.textures.push_back(std::move(*texture));
-    }
-    texture_indices_.emplace(key, index);
-    return index;
-  }
-
-  void count_texels(const Texture& t) {
-    for (int level = 0; level < t.level_count(); ++level)
-      texels_ += static_cast<uint64_t>(t.width(level)) * static_cast<uint64_t>(t.height(level));
   }
 
   // Shapes and placed mesh primitives together; one error when the limit is passed, then stop.
@@ -360,11 +332,8 @@ class Builder {
   // The model's materials, their texture slots moved to where its textures land in the scene.
   void add_model_materials(ImportedModel& model, const std::string& pointer) {
     const auto first_texture = static_cast<uint32_t>(assets_.textures.size());
-    for (Texture& t : model.textures) {
-      count_texels(t);
-      assets_.textures.push_back(std::move(t));
-    }
-    if (texels_ > options_.limits.scene_texels)
+    for (Texture& t : model.textures) textures_.add(std::move(t));
+    if (!textures_.within_budget())
       limit_error(pointer, "expected at most " + std::to_string(options_.limits.scene_texels) +
                                " texels in all the scene's textures together, found more");
     model.textures.clear();
@@ -408,8 +377,7 @@ class Builder {
   const BvhBuildOptions bvh_options_;
   const size_t errors_before_ = diags_.error_count();
   SceneAssets assets_;
-  std::map<std::string, uint32_t> texture_indices_;  // resolved path + encoding -> index (kNoTexture: failed)
-  uint64_t texels_ = 0;                              // in assets_.textures, mip levels included
+  TextureLibrary textures_{assets_.textures, options_.limits};
   std::vector<SceneNode> nodes_;
   std::vector<std::string> pointers_;  // per node: where the scene file describes it
   std::vector<bool> from_file_;        // per node: grafted from a glTF file
