@@ -1,10 +1,33 @@
 // Material parameters as plain data. How they are evaluated lives in materials/.
 #pragma once
 
+#include <array>
+
 #include "core/math.h"
 #include "core/texture/texture_mapping.h"
 
 namespace rt {
+
+// glTF's metallic-roughness model, kept as it is and converted to Phong terms at each shading
+// point (materials/pbr_to_phong.h), so that a metallicRoughness texture can vary it. When
+// `enabled`, Material::kd is the base colour and ks, shininess, reflectivity and glossy follow
+// from it; the material's own values of those are not used.
+struct MetallicRoughness {
+  bool enabled = false;
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  TextureSlot texture;  // glTF's metallicRoughnessTexture: G scales roughness, B metallic (linear)
+};
+
+// glTF's alphaMode MASK: the surface is not there where coverage < cutoff, for every ray
+// (camera, reflection, refraction, shadow). Coverage = factor x texture x the vertex colour's
+// alpha. (BLEND is mapped onto this and onto transmission by io/gltf_materials.cpp.)
+struct AlphaCutoutParams {
+  bool enabled = false;
+  float factor = 1.0f;  // baseColorFactor's alpha
+  float cutoff = 0.5f;
+  TextureSlot texture;  // the base colour image's alpha channel, as a grey texture
+};
 
 // The proposal's Phong material plus what reflection, refraction and glossy reflection add.
 // Every default keeps an older scene meaning the same: an opaque, non-reflecting surface.
@@ -23,6 +46,19 @@ struct Material {
   TextureSlot specular_texture;
   BumpMap bump;
   NormalMap normal_map;
+  // Light the surface gives off itself (glTF's emissive x KHR_materials_emissive_strength), in
+  // the units of radiance; seen by camera, reflection and refraction rays, not a light source.
+  Vec3 emission{0.0f};
+  TextureSlot emission_texture;  // multiplies `emission`
+  // KHR_materials_unlit: the (textured) base colour is shown as it is, without lighting.
+  bool unlit = false;
+  MetallicRoughness pbr;
+  AlphaCutoutParams cutout;
+
+  // Every texture slot, for whoever renumbers textures (a glTF file's, added to a scene's).
+  std::array<TextureSlot*, 7> texture_slots() {
+    return {&texture, &specular_texture, &bump.height, &normal_map.map, &emission_texture, &pbr.texture, &cutout.texture};
+  }
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
   bool absorbing() const { return max_component(absorption) > 0.0f; }

@@ -18,11 +18,31 @@ struct MeshGeometry {
   Bvh bvh;            // over mesh's triangles, in object space
 };
 
+// The coverage test of one mesh placed with one alpha-masked material.
+struct MaskedPlacement {
+  uint32_t mesh = 0, material = 0;
+  AlphaCutout cutout;
+};
+
 struct SceneAssets {
   std::vector<Material> materials;
   std::vector<Texture> textures;  // what materials' texture slots index, each file loaded once
   // Never resized once frames exist: instances point at these BVHs.
   std::vector<MeshGeometry> meshes;
+  // Point into `meshes` and `textures`: made by add_mask() once those are final and the assets
+  // are where they will stay (behind their shared pointer).
+  std::vector<MaskedPlacement> masks;
+
+  SceneAssets() = default;
+  SceneAssets(SceneAssets&&) = default;
+  SceneAssets& operator=(SceneAssets&&) = default;
+  SceneAssets(const SceneAssets&) = delete;  // a copy's masks would point into the original
+
+  // Adds the coverage test of `mesh` placed with `material`, if that material is alpha-masked
+  // and the pair has none yet.
+  void add_mask(uint32_t mesh, uint32_t material);
+  // The test for that pair, or null: drawn solid.
+  const AlphaCutout* mask(uint32_t mesh, uint32_t material) const;
 };
 
 }  // namespace rt

@@ -81,7 +81,8 @@ PrimitiveSet SceneGraph::place(float seconds, std::vector<PlacementIssue>* issue
       for (const NodeMesh& nm : node.meshes) {
         const MeshGeometry& g = assets->meshes[nm.mesh];
         if (g.bvh.primitive_count() == 0) continue;
-        const MeshInstance inst = place_mesh(g.bvh, *transform, nm.mesh, nm.material);
+        const MeshInstance inst =
+            place_mesh(g.bvh, *transform, nm.mesh, nm.material, assets->mask(nm.mesh, nm.material));
         if (finite_box(inst.bounds)) top.instances.push_back(inst);
         else issue(PlacementIssue::kBeyondRange, i);
       }

@@ -8,6 +8,7 @@
 #include <tiny_gltf.h>
 
 #include "io/gltf_accessor.h"
+#include "io/gltf_materials.h"
 #include "io/input_file.h"
 #include "io/json_document.h"
 
@@ -81,8 +82,13 @@ uint32_t read_u32(const unsigned char* p) {
 
 const std::vector<std::string>& supported_gltf_extensions() {
   // Quantized attributes are read like any other component type (io/gltf_accessor.cpp); lights
-  // come from io/gltf_lights.h.
-  static const std::vector<std::string> names{"KHR_mesh_quantization", "KHR_lights_punctual"};
+  // come from io/gltf_lights.h, instancing from io/gltf_loader.cpp, materials from io/gltf_materials.h.
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all{"KHR_mesh_quantization", "KHR_lights_punctual", "EXT_mesh_gpu_instancing"};
+    const auto& materials = gltf_material_extensions();
+    all.insert(all.end(), materials.begin(), materials.end());
+    return all;
+  }();
   return names;
 }
 

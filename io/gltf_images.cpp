@@ -1,11 +1,12 @@
 #include "io/gltf_images.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include <tiny_gltf.h>
 
 #include "io/input_file.h"
-#include "io/texture_file.h"
 
 namespace rt {
 
@@ -27,34 +28,73 @@ std::string percent_decoded(const std::string& uri) {
 
 ImageDecoder::ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits,
                            ImportedModel& out)
-    : model_(model), base_dir_(base_dir), limits_(limits), out_(out), decoded_(model.images.size(), kNoTexture - 1) {}
+    : model_(model),
+      base_dir_(base_dir),
+      limits_(limits),
+      out_(out),
+      decoded_(model.images.size(), {kNoTexture - 1, kNoTexture - 1, kNoTexture - 1}) {}
 
-TextureSlot ImageDecoder::slot(int index, int texcoord, const std::string& where) {
+TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where) {
   TextureSlot slot;
+  int texcoord = ref.texcoord;
+  if (ref.transform) {
+    read_transform(*ref.transform, slot.mapping, where);
+    if (ref.transform->Has("texCoord") && ref.transform->Get("texCoord").IsInt())
+      texcoord = ref.transform->Get("texCoord").GetNumberAsInt();  // overrides the textureInfo's
+  }
   slot.mapping.uv_set = texcoord == 1 ? 1u : 0u;
   if (texcoord < 0 || texcoord > 1)
     out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
-  if (index < 0 || static_cast<size_t>(index) >= model_.textures.size()) {
-    out_.warnings.push_back(where + ": texture " + to_string(index) + " does not exist; ignored");
+  if (ref.index < 0 || static_cast<size_t>(ref.index) >= model_.textures.size()) {
+    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " does not exist; ignored");
     return slot;
   }
-  const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(index)];
-  if (texture.sampler >= 0 && static_cast<size_t>(texture.sampler) < model_.samplers.size()) {
-    const int wrap = model_.samplers[static_cast<size_t>(texture.sampler)].wrapS;
-    slot.mapping.wrap = wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
-                        : wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
-                                                                        : TextureWrap::kRepeat;
-  }
+  const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(ref.index)];
+  read_sampler(texture.sampler, slot.mapping);
   if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
-    out_.warnings.push_back(where + ": texture " + to_string(index) + " has no image; ignored");
+    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " has no image; ignored");
     return slot;
   }
-  slot.texture = decode(static_cast<size_t>(texture.source), where);
+  slot.texture = decode(static_cast<size_t>(texture.source), encoding, where);
   return slot;
 }
 
-uint32_t ImageDecoder::decode(size_t image_index, const std::string& where) {
-  uint32_t& done = decoded_[image_index];
+// glTF samplers (README, "glTF materials"): wrapS decides the wrap mode (ours is one for both
+// axes). Without mipmaps in minFilter, magFilter picks nearest or bilinear; with them (or no
+// sampler), trilinear, unless magFilter is NEAREST (pixel art).
+void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {
+  if (index < 0 || static_cast<size_t>(index) >= model_.samplers.size()) return;
+  const tinygltf::Sampler& sampler = model_.samplers[static_cast<size_t>(index)];
+  mapping.wrap = sampler.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
+                 : sampler.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
+                                                                          : TextureWrap::kRepeat;
+  const bool nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+  const bool mipmapped =
+      sampler.minFilter != TINYGLTF_TEXTURE_FILTER_NEAREST && sampler.minFilter != TINYGLTF_TEXTURE_FILTER_LINEAR;
+  mapping.filter = nearest ? TextureFilter::kNearest : mipmapped ? TextureFilter::kTrilinear : TextureFilter::kBilinear;
+}
+
+void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapping, const std::string& where) {
+  const auto pair = [&](const char* key, Vec2& out) {
+    if (!t.Has(key)) return;
+    const tinygltf::Value& v = t.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) {
+      out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
+      return;
+    }
+    const Vec2 value(static_cast<float>(v.Get(0).GetNumberAsDouble()), static_cast<float>(v.Get(1).GetNumberAsDouble()));
+    if (is_finite(Vec3(value, 0.0f))) out = value;
+  };
+  pair("offset", mapping.offset);
+  pair("scale", mapping.scale);
+  if (t.Has("rotation") && t.Get("rotation").IsNumber()) {
+    const double radians = t.Get("rotation").GetNumberAsDouble();
+    if (std::isfinite(radians)) mapping.rotation_degrees = static_cast<float>(radians * 180.0 / 3.14159265358979323846);
+  }
+}
+
+uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, const std::string& where) {
+  uint32_t& done = decoded_[image_index][static_cast<size_t>(encoding)];
   if (done != kNoTexture - 1) return done;
   done = kNoTexture;
   const tinygltf::Image& image = model_.images[image_index];
@@ -68,10 +108,10 @@ uint32_t ImageDecoder::decode(size_t image_index, const std::string& where) {
       out_.warnings.push_back(where + ": cannot read " + name + " (" + error + "); ignored");
       return done;
     }
-    out_.files.push_back(path);
+    if (std::find(out_.files.begin(), out_.files.end(), path) == out_.files.end()) out_.files.push_back(path);
     bytes = std::move(*file);
   }
-  auto texture = decode_texture(bytes, name, TextureEncoding::kLinear, limits_.texture_texels, error);
+  auto texture = decode_texture(bytes, name, encoding, limits_.texture_texels, error);
   if (!texture) {
     out_.warnings.push_back(where + ": " + error + "; ignored");
     return done;

@@ -14,7 +14,7 @@
 #include "io/gltf_images.h"
 #include "io/gltf_lights.h"
 #include "io/input_file.h"
-#include "io/pbr_to_phong.h"
+#include "io/gltf_materials.h"
 #include "io/texture_file.h"
 
 namespace rt {
@@ -144,6 +144,22 @@ class Importer {
       if (raw.size() / 2 != n) return fail(where + ": " + name + " and POSITION counts differ");
       uvs->resize(n);
       for (size_t i = 0; i < n; ++i) (*uvs)[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
+    }
+    if (const auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
+      // VEC3 or VEC4, float or normalised integers: linear colours (alpha 1 with VEC3).
+      const int components = it->second >= 0 && static_cast<size_t>(it->second) < model_.accessors.size() &&
+                                     model_.accessors[static_cast<size_t>(it->second)].type == TINYGLTF_TYPE_VEC3
+                                 ? 3
+                                 : 4;
+      if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, error_))
+        return fail(where + " COLOR_0: " + error_);
+      if (raw.size() / static_cast<size_t>(components) != n) return fail(where + ": COLOR_0 and POSITION counts differ");
+      ip.mesh.colours.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const float* c = &raw[static_cast<size_t>(components) * i];
+        const Vec4 v(c[0], c[1], c[2], components == 4 ? c[3] : 1.0f);
+        ip.mesh.colours[i] = std::isfinite(v.x + v.y + v.z + v.w) ? glm::clamp(v, Vec4(0.0f), Vec4(1.0f)) : Vec4(1.0f);
+      }
     }
     if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
       if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, error_))
@@ -325,20 +341,11 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   if (!file.model) return std::nullopt;
   const tinygltf::Model& model = *file.model;
   ImageDecoder images(model, base_dir, limits, out);
-  for (const tinygltf::Material& m : model.materials) {
-    const auto& pbr = m.pbrMetallicRoughness;
-    const Vec3 base = pbr.baseColorFactor.size() >= 3
-                          ? Vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
-                                 static_cast<float>(pbr.baseColorFactor[2]))
-                          : Vec3(1.0f);
-    Material material =
-        pbr_to_phong(base, static_cast<float>(pbr.metallicFactor), static_cast<float>(pbr.roughnessFactor));
-    if (m.normalTexture.index >= 0) {
-      material.normal_map.map =
-          images.slot(m.normalTexture.index, m.normalTexture.texCoord, "material \"" + m.name + "\" normalTexture");
-      material.normal_map.scale = static_cast<float>(m.normalTexture.scale);
-    }
-    out.materials.push_back(material);
+  for (size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& m = model.materials[i];
+    const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
+    out.materials.push_back(import_material(m, images, where, out.warnings));
+    out.material_names.push_back(m.name);
   }
   Importer importer(model, limits, out, error);
 

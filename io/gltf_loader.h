@@ -46,8 +46,9 @@ struct ImportedModel {
   std::vector<CameraPlacement> cameras;                // node indexes `nodes`; camera in node space
   std::vector<LightPlacement> lights;                  // KHR_lights_punctual, in node space
   float animation_end = 0.0f;                          // the last key time of all tracks, seconds
-  std::vector<Material> materials;  // per glTF material, mapped by pbr_to_phong; texture slots index `textures`
-  std::vector<Texture> textures;    // the images the materials use (normal maps), decoded once each
+  std::vector<Material> materials;  // per glTF material (io/gltf_materials.h); texture slots index `textures`
+  std::vector<std::string> material_names;  // per glTF material, as the file names them ("" if not)
+  std::vector<Texture> textures;            // the images the materials use, decoded once per encoding
   std::vector<std::string> warnings;
   std::vector<std::string> files;  // every file read: the model and its external buffers
 };

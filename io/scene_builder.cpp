@@ -96,7 +96,11 @@ class Builder {
     for (const Light& l : desc_.lights) g.lights.push_back(LightPlacement{l, -1});
     g.lights.insert(g.lights.end(), file_lights_.begin(), file_lights_.end());
     if (!choose_camera(g)) return std::nullopt;
-    g.assets = std::make_shared<const SceneAssets>(std::move(assets_));
+    // Masks point into the meshes and textures: made once the assets are where they stay.
+    auto assets = std::make_shared<SceneAssets>(std::move(assets_));
+    for (const SceneNode& node : g.nodes)
+      for (const NodeMesh& nm : node.meshes) assets->add_mask(nm.mesh, nm.material);
+    g.assets = std::move(assets);
 
     // The first frame, placed once: its problems are errors at the nodes concerned (nodes from
     // glTF files scaled to nothing are parts hidden on purpose, and simply not drawn).
@@ -338,7 +342,7 @@ class Builder {
                                " texels in all the scene's textures together, found more");
     model.textures.clear();
     for (Material m : model.materials) {
-      for (TextureSlot* slot : {&m.texture, &m.specular_texture, &m.bump.height, &m.normal_map.map})
+      for (TextureSlot* slot : m.texture_slots())
         if (slot->present()) slot->texture += first_texture;
       assets_.materials.push_back(m);
     }

@@ -71,19 +71,23 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, c
   }
 
   std::vector<Vec3> linear(static_cast<size_t>(texels));
+  // stb_image converts any layout to the channels asked for (alpha 1 where the file has none).
+  const bool alpha = encoding == TextureEncoding::kAlpha;
+  const int wanted = alpha ? 4 : 3;
+  const auto step = static_cast<size_t>(wanted);
   if (stbi_is_16_bit_from_memory(data, size)) {
-    const std::unique_ptr<uint16_t, StbFree> pixels(stbi_load_16_from_memory(data, size, &w, &h, &channels, 3));
+    const std::unique_ptr<uint16_t, StbFree> pixels(stbi_load_16_from_memory(data, size, &w, &h, &channels, wanted));
     if (!pixels) {
       error = "cannot decode \"" + path + "\": " + stb_reason();
       return std::nullopt;
     }
     for (size_t i = 0; i < linear.size(); ++i)
       for (int c = 0; c < 3; ++c) {
-        const float v = static_cast<float>(pixels.get()[3 * i + static_cast<size_t>(c)]) / 65535.0f;
+        const float v = static_cast<float>(pixels.get()[step * i + static_cast<size_t>(alpha ? 3 : c)]) / 65535.0f;
         linear[i][c] = encoding == TextureEncoding::kSrgb ? srgb_decode(v) : v;
       }
   } else {
-    const std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &w, &h, &channels, 3));
+    const std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &w, &h, &channels, wanted));
     if (!pixels) {
       error = "cannot decode \"" + path + "\": " + stb_reason();
       return std::nullopt;
@@ -94,7 +98,7 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, c
       decode[static_cast<size_t>(v)] = encoding == TextureEncoding::kSrgb ? srgb_decode(f) : f;
     }
     for (size_t i = 0; i < linear.size(); ++i)
-      for (int c = 0; c < 3; ++c) linear[i][c] = decode[pixels.get()[3 * i + static_cast<size_t>(c)]];
+      for (int c = 0; c < 3; ++c) linear[i][c] = decode[pixels.get()[step * i + static_cast<size_t>(alpha ? 3 : c)]];
   }
   return Texture(w, h, std::move(linear));
 }

@@ -1,6 +1,7 @@
 // Texture image files (PNG, JPEG) through stb_image: 8- or 16-bit, grey, grey + alpha, RGB or
-// RGBA (alpha is not used yet), decoded to linear RGB. Colour textures are stored sRGB-encoded and
-// decoded; height and normal maps hold data, not colour, and are read as they are.
+// RGBA, decoded to linear RGB. Colour textures are stored sRGB-encoded and decoded; height and
+// normal maps hold data, not colour, and are read as they are; kAlpha reads the alpha channel
+// (1 where there is none) into all three channels, for glTF's alpha masks.
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,7 @@
 
 namespace rt {
 
-enum class TextureEncoding { kSrgb, kLinear };
+enum class TextureEncoding { kSrgb, kLinear, kAlpha };
 
 // A file that is missing, unreadable, not an image, zero-sized or over `max_texels` (checked from
 // its header, before decoding) gives nullopt and an error saying what was found.

@@ -7,7 +7,7 @@
 namespace rt {
 
 uint32_t TextureLibrary::load(const TextureFileReference& ref, std::string& error, std::vector<std::string>& files) {
-  const std::string key = ref.resolved_path + (ref.encoding == TextureEncoding::kSrgb ? "\nsrgb" : "\nlinear");
+  const std::string key = ref.resolved_path + "\n" + std::to_string(static_cast<int>(ref.encoding));
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
   const uint64_t budget =
       texels_ >= limits_.scene_texels ? 0 : std::min(limits_.texture_texels, limits_.scene_texels - texels_);

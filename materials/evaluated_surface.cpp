@@ -1,5 +1,6 @@
 #include "materials/evaluated_surface.h"
 
+#include "materials/pbr_to_phong.h"
 #include "materials/surface_detail.h"
 #include "materials/texture_mapping.h"
 
@@ -10,6 +11,13 @@ Vec3 sample(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 
             SurfaceDetailSwitches detail) {
   const TextureFilter filter = detail.override_filter ? detail.filter : slot.mapping.filter;
   return textures[slot.texture].sample(uv, slot.mapping.wrap, filter, footprint);
+}
+
+// A colour slot at the hit: its mapping, mip level from the ray cone's footprint, and filter.
+Vec3 sample_at(const TextureSlot& slot, const SurfaceInteraction& si, const std::vector<Texture>& textures,
+               Vec3 direction, float cone_width, SurfaceDetailSwitches detail) {
+  const MappedPoint p = map_point(slot.mapping, si);
+  return sample(slot, textures, p.uv, uv_footprint(p, si.geometric_normal, direction, cone_width), detail);
 }
 
 // The outward shading normal after the material's normal map, then its bump map.
@@ -59,24 +67,40 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   }
   s.entering = si.front_face;
   s.material = si.material;
-  Vec3 kd = m.kd, ks = m.ks;
-  if (detail.textures && m.texture.present()) {
-    const MappedPoint p = map_point(m.texture.mapping, si);
-    kd *= sample(m.texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width), detail);
-  }
-  if (detail.textures && m.specular_texture.present()) {
-    const MappedPoint p = map_point(m.specular_texture.mapping, si);
-    ks *= sample(m.specular_texture, textures, p.uv, uv_footprint(p, si.geometric_normal, -s.wo, cone_width),
-                 detail);
-  }
+  // The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
+  Vec3 kd = m.kd * Vec3(si.colour);
+  if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, -s.wo, cone_width, detail);
   s.diffuse = kd * (Vec3(1.0f) - m.transmission);
-  s.specular = ks;
+  s.specular = m.ks;
+  if (detail.textures && m.specular_texture.present())
+    s.specular *= sample_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
   s.shininess = m.shininess;
   s.reflectivity = m.reflectivity;
+  s.glossy = m.glossy;
+  if (m.pbr.enabled) {
+    float metallic = m.pbr.metallic, roughness = m.pbr.roughness;
+    if (detail.textures && m.pbr.texture.present()) {
+      const Vec3 t = sample_at(m.pbr.texture, si, textures, -s.wo, cone_width, detail);
+      roughness *= t.y;
+      metallic *= t.z;
+    }
+    const PhongTerms p = pbr_to_phong(kd, metallic, roughness);
+    s.diffuse = p.kd * (Vec3(1.0f) - m.transmission);
+    s.specular = p.ks;
+    s.shininess = p.shininess;
+    s.reflectivity = p.reflectivity;
+    s.glossy = p.glossy;
+  }
   s.transmission = m.transmission;
   s.ior = m.ior;
   s.absorption = m.absorption;
-  s.glossy = m.glossy;
+  s.emission = m.emission;
+  if (m.emission_texture.present() && detail.textures && s.emission != Vec3(0.0f))
+    s.emission *= sample_at(m.emission_texture, si, textures, -s.wo, cone_width, detail);
+  if (m.unlit) {  // shown as it is: nothing reflected, scattered or passed on
+    s.emission += kd;
+    s.diffuse = s.specular = s.reflectivity = s.transmission = Vec3(0.0f);
+  }
   return s;
 }
 

@@ -29,6 +29,7 @@ struct EvaluatedSurface {
   float ior = 1.5f;
   Vec3 absorption{0.0f};
   float glossy = 0.0f;
+  Vec3 emission{0.0f};  // radiance the surface gives off itself (emissive, unlit)
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };

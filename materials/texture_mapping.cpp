@@ -72,12 +72,11 @@ MappedPoint map_point(const TextureMapping& m, const SurfaceInteraction& si) {
   }
   // uv' = offset + R (scale * uv): gradients transform with the same matrix A = R S.
   if (m.scale != Vec2(1.0f) || m.rotation_degrees != 0.0f || m.offset != Vec2(0.0f)) {
-    const float c = std::cos(radians(m.rotation_degrees)), s = std::sin(radians(m.rotation_degrees));
-    const Vec2 scaled = m.scale * out.uv;
-    out.uv = m.offset + Vec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y);
+    out.uv = transformed_uv(m, out.uv);
+    const Mat2 r = texture_rotation(m.rotation_degrees);
     const Vec3 su = m.scale.x * gu, sv = m.scale.y * gv;
-    gu = c * su - s * sv;
-    gv = s * su + c * sv;
+    gu = r[0][0] * su + r[1][0] * sv;
+    gv = r[0][1] * su + r[1][1] * sv;
   }
   if (valid && dual_basis(gu, gv, out.dpdu, out.dpdv)) {
     out.grad_u = gu;

@@ -9,7 +9,8 @@ namespace {
 bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) {
   Ray local = object_ray(instance.transform, ray);
   Hit h;
-  if (!instance.bvh->intersect(local, h)) return false;
+  if (!(instance.cutout ? instance.bvh->intersect(local, h, *instance.cutout) : instance.bvh->intersect(local, h)))
+    return false;
   hit = h;
   hit.part = h.prim;
   return true;
@@ -28,6 +29,25 @@ bool Bvh::intersect(Ray& ray, Hit& hit) const {
                                             : intersect_shape(shape(id), r, hit);
       if (got) {
         hit.prim = id;
+        r.tmax = hit.t;
+        found = true;
+      }
+    }
+    return false;
+  });
+  return found;
+}
+
+bool Bvh::intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
+  bool found = false;
+  traverse(ray, [&](uint32_t first, uint32_t end, Ray& r) {
+    for (uint32_t slot = first; slot < end; ++slot) {
+      const Slot& s = slots_[slot];
+      Hit candidate;
+      if (s.id < triangle_count_ && intersect_triangle(s.triangle, r, candidate) &&
+          cutout.covers(s.id, candidate.b1, candidate.b2)) {
+        hit = candidate;
+        hit.prim = s.id;
         r.tmax = hit.t;
         found = true;
       }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/accel/alpha_cutout.h"
 #include "core/accel/primitives.h"
 
 namespace rt {
@@ -57,6 +58,8 @@ class Bvh {
 
   // Closest hit in (ray.tmin, ray.tmax); narrows ray.tmax to it.
   bool intersect(Ray& ray, Hit& hit) const;
+  // Closest hit among the triangles `cutout` covers (a mesh BVH with an alpha mask).
+  bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const;
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const;
   // Any-hit with a visitor: calls visit(const Hit&) for every crossing in (ray.tmin, ray.tmax)
@@ -115,6 +118,7 @@ class Bvh {
 };
 
 // A mesh's BVH placed by `transform`: the instance with its world bounds filled in.
-MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material);
+MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material,
+                        const AlphaCutout* cutout = nullptr);
 
 }  // namespace rt

@@ -364,8 +364,10 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   }
 }
 
-MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material) {
-  return MeshInstance{&mesh_bvh, transform, transform_bounds(transform.to_world, mesh_bvh.bounds()), mesh, material};
+MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material,
+                        const AlphaCutout* cutout) {
+  return MeshInstance{&mesh_bvh, transform, transform_bounds(transform.to_world, mesh_bvh.bounds()),
+                      mesh,      material,  cutout};
 }
 
 BvhStats Bvh::stats() const {

@@ -144,6 +144,7 @@ bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
         const MeshInstance& inst = instance(s.id);
         const uint32_t id = s.id;
         auto relabel = [&](const Hit& h) {
+          if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2)) return false;  // cut out: go on
           Hit g = h;
           g.part = h.prim;
           g.prim = id;

@@ -42,7 +42,7 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
     const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
     const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),
                                                 cone_width, ctx.settings.detail);
-    radiance = direct_lighting(s, state.path, ctx);
+    radiance = s.emission + direct_lighting(s, state.path, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) {
       PathState onward = state;

@@ -21,13 +21,26 @@ inline constexpr uint32_t kNoTexture = 0xffffffffu;
 struct TextureMapping {
   Projection projection = Projection::kUv;
   uint32_t uv_set = 0;  // kUv on meshes: TEXCOORD_0 or TEXCOORD_1
-  // KHR_texture_transform's order: uv' = offset + R(rotation) (scale * uv).
+  // KHR_texture_transform: uv' = offset + R(rotation) (scale * uv), see transformed_uv.
   Vec2 scale{1.0f};
   Vec2 offset{0.0f};
   float rotation_degrees = 0.0f;
   TextureWrap wrap = TextureWrap::kRepeat;
   TextureFilter filter = TextureFilter::kTrilinear;
 };
+
+// KHR_texture_transform's matrix, R = [[cos, sin], [-sin, cos]]: a positive rotation turns the
+// UVs counter-clockwise (v points down the image), which turns the image clockwise on the
+// surface. The specification's own example (offset [0, 1], rotation 90 degrees, scale 0.5 reads
+// the lower-left quarter of the image) fixes the sign.
+inline Mat2 texture_rotation(float degrees) {
+  const float c = std::cos(radians(degrees)), s = std::sin(radians(degrees));
+  return Mat2(Vec2(c, -s), Vec2(s, c));  // glm is column-major: columns (c, -s) and (s, c)
+}
+
+inline Vec2 transformed_uv(const TextureMapping& m, Vec2 uv) {
+  return m.offset + texture_rotation(m.rotation_degrees) * (m.scale * uv);
+}
 
 // One texture a material reads: an index into Scene::textures and its mapping.
 struct TextureSlot {

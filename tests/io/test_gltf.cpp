@@ -2,6 +2,8 @@
 // samples do not cover (sparse accessors, byte indices, strips and fans, normalised UVs, broken
 // buffers).
 #include <cstring>
+#include <filesystem>
+#include <set>
 
 #include <catch2/catch.hpp>
 
@@ -210,8 +212,14 @@ TEST_CASE("glTF samples: Avocado's normal map, with its TANGENT attribute", "[io
   const NormalMap& normal_map = model->materials[0].normal_map;
   REQUIRE(normal_map.map.present());
   CHECK(normal_map.scale == 1.0f);
-  REQUIRE(model->textures.size() == 1);  // only the normal map is decoded; colour maps are issue 9's
-  CHECK(model->textures[0].width() == 2048);
+  // Base colour (sRGB), metallic-roughness and normal map: three images, each decoded once.
+  const Material& m = model->materials[0];
+  REQUIRE(model->textures.size() == 3);
+  REQUIRE(m.texture.present());
+  REQUIRE(m.pbr.texture.present());
+  CHECK(m.pbr.enabled);
+  CHECK(std::set<uint32_t>{m.texture.texture, m.pbr.texture.texture, normal_map.map.texture}.size() == 3);
+  CHECK(model->textures[normal_map.map.texture].width() == 2048);
   const TriangleMesh& mesh = model->meshes[placements(*model)[0].mesh][0].mesh;
   REQUIRE(mesh.tangents.size() == mesh.positions.size());
   for (const Vec4& t : mesh.tangents) {

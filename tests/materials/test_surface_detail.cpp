@@ -75,16 +75,31 @@ TEST_CASE("mapping: scale, rotation and offset in KHR_texture_transform's order"
   m.rotation_degrees = 90.0f;
   m.offset = Vec2(0.25f, 0.5f);
   const MappedPoint p = map_point(m, si);
-  // scale: (1, 1); R(90) (1, 1) = (-1, 1); + offset = (-0.75, 1.5).
-  CHECK(p.uv.x == Approx(-0.75f));
-  CHECK(p.uv.y == Approx(1.5f));
+  // scale: (1, 1); R(90) (1, 1) = (cos + sin, -sin + cos) = (1, -1); + offset = (1.25, -0.5).
+  CHECK(p.uv.x == Approx(1.25f));
+  CHECK(p.uv.y == Approx(-0.5f));
   // Tangents and gradients stay duals: moving along dP/du changes u by 1 and v by 0.
   CHECK(glm::dot(p.grad_u, p.dpdu) == Approx(1.0f));
   CHECK(glm::dot(p.grad_v, p.dpdu) == Approx(0.0f).margin(1e-6));
   CHECK(glm::dot(p.grad_v, p.dpdv) == Approx(1.0f));
-  // u' = -2 v... along world X (where natural u grows at 1/2 per unit), u' does not change.
+  // u' = 4 v: along world X (where natural u grows at 1/2 per unit), u' does not change.
   CHECK(p.grad_u.x == Approx(0.0f).margin(1e-6));
-  CHECK(p.grad_v.x == Approx(1.0f));  // v' = 2 u: 2 * 0.5 per unit X
+  CHECK(p.grad_v.x == Approx(-1.0f));  // v' = -2 u: -2 * 0.5 per unit X
+}
+
+TEST_CASE("mapping: the rotation sign of KHR_texture_transform's own example", "[materials][uv]") {
+  // "This example utilizes only the lower left quadrant of the source image, rotated clockwise 90 degrees":
+  // offset [0, 1], rotation pi/2, scale [0.5, 0.5].
+  TextureMapping m;
+  m.offset = Vec2(0.0f, 1.0f);
+  m.rotation_degrees = 90.0f;
+  m.scale = Vec2(0.5f);
+  for (const auto& [in, out] : {std::pair{Vec2(0, 0), Vec2(0, 1)}, std::pair{Vec2(1, 0), Vec2(0, 0.5f)},
+                                std::pair{Vec2(0, 1), Vec2(0.5f, 1)}, std::pair{Vec2(1, 1), Vec2(0.5f, 0.5f)}}) {
+    const Vec2 uv = transformed_uv(m, in);
+    CHECK(uv.x == Approx(out.x).margin(1e-6));
+    CHECK(uv.y == Approx(out.y).margin(1e-6));
+  }
 }
 
 TEST_CASE("mapping: planar projection on a scaled sphere works in object space", "[materials][uv]") {

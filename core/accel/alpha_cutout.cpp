@@ -1,0 +1,22 @@
+#include "core/accel/alpha_cutout.h"
+
+namespace rt {
+
+bool AlphaCutout::covers(uint32_t triangle, float b1, float b2) const {
+  const uint32_t i0 = mesh->indices[3 * triangle], i1 = mesh->indices[3 * triangle + 1],
+                 i2 = mesh->indices[3 * triangle + 2];
+  const float b0 = 1.0f - b1 - b2;
+  float coverage = factor;
+  if (!mesh->colours.empty()) coverage *= b0 * mesh->colours[i0].w + b1 * mesh->colours[i1].w + b2 * mesh->colours[i2].w;
+  if (texture) {
+    const std::vector<Vec2>& uvs = mapping.uv_set == 1 && !mesh->uvs1.empty() ? mesh->uvs1 : mesh->uvs;
+    // Without UVs a triangle reads (0, 0), (1, 0), (1, 1), as mesh_surface gives shading.
+    const Vec2 uv = uvs.empty() ? Vec2(b1 + b2, b2) : b0 * uvs[i0] + b1 * uvs[i1] + b2 * uvs[i2];
+    const Vec2 at = transformed_uv(mapping, uv);
+    coverage *= mapping.filter == TextureFilter::kNearest ? texture->nearest(at, mapping.wrap).x
+                                                          : texture->bilinear(at, mapping.wrap).x;
+  }
+  return coverage >= cutoff;
+}
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+#include "core/scene_assets.h"
+
+namespace rt {
+
+void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
+  const Material& m = materials[material];
+  if (!m.cutout.enabled || mask(mesh, material)) return;
+  MaskedPlacement p;
+  p.mesh = mesh;
+  p.material = material;
+  p.cutout.mesh = &meshes[mesh].mesh;
+  if (m.cutout.texture.present()) {
+    p.cutout.texture = &textures[m.cutout.texture.texture];
+    p.cutout.mapping = m.cutout.texture.mapping;
+  }
+  p.cutout.factor = m.cutout.factor;
+  p.cutout.cutoff = m.cutout.cutoff;
+  masks.push_back(p);
+}
+
+const AlphaCutout* SceneAssets::mask(uint32_t mesh, uint32_t material) const {
+  for (const MaskedPlacement& p : masks)
+    if (p.mesh == mesh && p.material == material) return &p.cutout;
+  return nullptr;
+}
+
+}  // namespace rt
