@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <tuple>
 
 #include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -255,6 +256,51 @@ bool import_light(const tinygltf::Model& model, const tinygltf::Node& node, int3
   return true;
 }
 
+// EXT_mesh_gpu_instancing: the node's mesh drawn once per row of its TRANSLATION, ROTATION and
+// SCALE accessors (each optional, all of one count), in the node's space.
+bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node, const LoadLimits& limits,
+                       ImportedNode& out, std::string& error) {
+  const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+  if (ext == node.extensions.end() || !ext->second.Has("attributes")) return true;
+  const tinygltf::Value& attributes = ext->second.Get("attributes");
+  const std::string where = "node \"" + node.name + "\" EXT_mesh_gpu_instancing ";
+  std::vector<float> t, r, s;
+  size_t count = 0;
+  bool any = false;
+  for (auto [name, components, values] : {std::tuple{"TRANSLATION", 3, &t}, std::tuple{"ROTATION", 4, &r},
+                                           std::tuple{"SCALE", 3, &s}}) {
+    if (!attributes.Has(name)) continue;
+    const tinygltf::Value& index = attributes.Get(name);
+    if (!index.IsInt() ||
+        !read_float_accessor(model, index.GetNumberAsInt(), components, limits.instances, *values, error)) {
+      error = where + name + ": " + (index.IsInt() ? error : "expected an accessor index");
+      return false;
+    }
+    const size_t n = values->size() / static_cast<size_t>(components);
+    if (any && n != count) {
+      error = where + name + ": expected " + to_string(count) + " values like the other attributes, found " +
+              to_string(n);
+      return false;
+    }
+    count = n;
+    any = true;
+  }
+  out.instancing.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
+    Trs trs;
+    if (!t.empty()) trs.translation = Vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+    if (!r.empty()) {
+      const Quat q(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2]);  // stored (x, y, z, w)
+      const float len = glm::length(q);
+      trs.rotation = len > 0.0f && std::isfinite(len) ? q / len : Quat(1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    if (!s.empty()) trs.scale = Vec3(s[3 * i], s[3 * i + 1], s[3 * i + 2]);
+    out.instancing.push_back(trs.matrix());
+  }
+  if (any && count == 0) out.instancing.push_back(Mat4(0.0f));  // zero copies: a singular placement draws none
+  return true;
+}
+
 // node_map receives, per file node, its index in out.nodes (-1: not in the scene).
 bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
                  Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map, std::string& error) {
@@ -319,6 +365,7 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     imported.mesh = node.mesh;
     imported.gltf_index = item.node;
     read_node_transform(node, imported);
+    if (node.mesh >= 0 && !import_instancing(model, node, limits, imported, error)) return false;
     const auto index = static_cast<int32_t>(out.nodes.size());
     if (!import_camera(model, node, index, out, error) || !import_light(model, node, index, out, error)) return false;
     node_map[static_cast<size_t>(item.node)] = index;
@@ -388,7 +435,9 @@ std::vector<ModelPlacement> placements(const ImportedModel& model) {
     const ImportedNode& n = model.nodes[i];
     const Mat4 local = n.matrix ? *n.matrix : n.trs.matrix();
     world[i] = n.parent >= 0 ? world[static_cast<size_t>(n.parent)] * local : local;
-    if (n.mesh >= 0) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i]});
+    if (n.mesh < 0) continue;
+    if (n.instancing.empty()) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i]});
+    for (const Mat4& copy : n.instancing) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i] * copy});
   }
   return out;
 }

@@ -31,6 +31,7 @@ struct ImportedNode {
   std::optional<Mat4> matrix;  // the node's "matrix" instead of TRS
   int32_t mesh = -1;           // index into ImportedModel::meshes
   int32_t gltf_index = -1;     // the node's index in the file, for messages
+  std::vector<Mat4> instancing;  // EXT_mesh_gpu_instancing: node-space placements of the mesh
 };
 
 // Where a mesh goes in the file's space: a node's world transform at rest.

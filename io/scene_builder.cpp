@@ -241,8 +241,10 @@ class Builder {
         n.trs = in.trs;
         n.matrix = in.matrix;
         n.meshes = meshes_of(in.mesh);
-        placed += n.meshes.size();
-        if (!take_instances(n.meshes.size(), ref.pointer)) return;
+        n.instancing = in.instancing;
+        const size_t copies = n.meshes.size() * std::max<size_t>(1, n.instancing.size());
+        placed += copies;
+        if (!take_instances(copies, ref.pointer)) return;
         push_node(std::move(n), ref.pointer, true);
       }
       for (Track t : model.tracks) {

@@ -133,3 +133,43 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
   CHECK(loaded->scene.camera.vertical_fov_degrees == Approx(glm::degrees(0.7f)));
   CHECK(loaded->scene.camera.position.z == Approx(3.0f));
 }
+
+TEST_CASE("glTF EXT_mesh_gpu_instancing: one mesh placed once per row, in its node's space", "[gltf][instancing]") {
+  std::string buffer = rt::test::square_positions();             // view 0: 48 bytes
+  rt::test::append<float>(buffer, {0, 0, 0, 2, 0, 0, 4, 0, 0});  // view 1: TRANSLATION, 36 bytes
+  rt::test::append<float>(buffer, {1, 1, 1, 1, 1, 1, 0.5f, 0.5f, 0.5f});  // view 2: SCALE, 36 bytes
+  const Json doc = {
+      {"scenes", {{{"nodes", {0}}}}},
+      {"extensionsUsed", {"EXT_mesh_gpu_instancing"}},
+      {"nodes",
+       {{{"mesh", 0},
+         {"translation", {0, 1, 0}},
+         {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 1}, {"SCALE", 2}}}}}}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteLength", 48}},
+        {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 36}},
+        {{"buffer", 0}, {"byteOffset", 84}, {"byteLength", 36}}}}};
+  const std::string gltf = rt::test::write_gltf("instanced.gltf", buffer, doc);
+  const LoadedScene loaded = rt::test::load_scene_text(
+      "instanced.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+                            "nodes": [{"mesh": {"file": ")" + gltf + R"("}}]})");
+  CHECK(loaded.scene.bvh.instances().size() == 3);  // one mesh stored, placed three times
+  CHECK(loaded.scene.assets->meshes.size() == 1);
+  const auto hits = [&](float x, float y) {
+    Ray r;
+    r.origin = Vec3(x, y, 5);
+    r.direction = Vec3(0, 0, -1);
+    Hit hit;
+    return loaded.scene.intersect(r, hit);
+  };
+  CHECK(hits(0.5f, 1.5f));    // copy 0 at the node: (0..1, 1..2)
+  CHECK(hits(2.5f, 1.5f));    // copy 1 moved by 2 in x
+  CHECK(hits(4.25f, 1.25f));  // copy 2 moved by 4 and halved: (4..4.5, 1..1.5)
+  CHECK_FALSE(hits(4.75f, 1.75f));
+  CHECK_FALSE(hits(1.5f, 1.5f));  // between copies
+}
