@@ -56,24 +56,6 @@ std::optional<Vec3> read_scale(const JsonReader& r, const Json& v, const std::st
   return s;
 }
 
-std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const Json& v, const std::string& ptr) {
-  ObjectReader o(ctx.reader, v, ptr);
-  MeshReference ref;
-  ref.pointer = ptr;
-  const auto file = o.string("file", true);
-  const auto name = o.string("name");
-  o.finish();
-  if (!file) return std::nullopt;
-  if (file->empty()) {
-    ctx.reader.expected(o.child("file"), "the path of a .gltf or .glb file", v["file"]);
-    return std::nullopt;
-  }
-  ref.file = *file;
-  ref.resolved_path = resolve_path(ctx.scene_folder, *file);
-  ref.mesh_name = name;
-  return ref;
-}
-
 std::optional<uint32_t> resolve_material(NodeParseContext& ctx, const Json& v, const std::string& ptr) {
   const auto name = read_string(ctx.reader, v, ptr);
   if (!name) return std::nullopt;
@@ -94,6 +76,36 @@ std::optional<uint32_t> resolve_material(NodeParseContext& ctx, const Json& v, c
   if (const auto near = closest_match(*name, names)) message += " (did you mean \"" + *near + "\"?)";
   ctx.reader.error(ptr, message);
   return std::nullopt;
+}
+
+std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const Json& v, const std::string& ptr) {
+  ObjectReader o(ctx.reader, v, ptr);
+  MeshReference ref;
+  ref.pointer = ptr;
+  const auto file = o.string("file", true);
+  const auto name = o.string("name");
+  if (const Json* overrides = o.get("materials")) {
+    const std::string at = o.child("materials");
+    if (!overrides->is_object()) {
+      ctx.reader.expected(at, "an object from the file's material names to names under /materials", *overrides);
+    } else {
+      for (const auto& item : overrides->items()) {
+        const std::string entry = pointer_child(at, item.key());
+        if (const auto material = resolve_material(ctx, item.value(), entry))
+          ref.materials.push_back(MaterialOverride{item.key(), *material, entry});
+      }
+    }
+  }
+  o.finish();
+  if (!file) return std::nullopt;
+  if (file->empty()) {
+    ctx.reader.expected(o.child("file"), "the path of a .gltf or .glb file", v["file"]);
+    return std::nullopt;
+  }
+  ref.file = *file;
+  ref.resolved_path = resolve_path(ctx.scene_folder, *file);
+  ref.mesh_name = name;
+  return ref;
 }
 
 NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::string& ptr, int depth) {

@@ -62,23 +62,30 @@ class Builder {
     for (const SceneNode& n : nodes_)
       if (!n.name.empty()) names.push_back(n.name);
     for (const TrackDescription& t : a.tracks) {
-      int32_t found = -1;
-      for (size_t i = 0; i < nodes_.size() && found < 0; ++i)
-        if (!from_file_[i] && nodes_[i].name == t.node) found = static_cast<int32_t>(i);
-      if (found < 0) {
-        std::string message = "expected the name of a node under /nodes, found \"" + t.node + "\"";
+      // A scene node of that name, else every node of that name inside the glTF files the scene
+      // places (a file placed twice moves in both places).
+      std::vector<size_t> in_scene, in_files;
+      for (size_t i = 0; i < nodes_.size(); ++i)
+        if (nodes_[i].name == t.node) (from_file_[i] ? in_files : in_scene).push_back(i);
+      const std::vector<size_t> found = in_scene.empty() ? in_files : std::vector<size_t>{in_scene.front()};
+      if (found.empty()) {
+        std::string message = "expected the name of a node under /nodes or inside a glTF file they place, found \"" +
+                              t.node + "\"";
         if (const auto near = closest_match(t.node, names)) message += " (did you mean \"" + *near + "\"?)";
         error(t.pointer + "/node", message);
         continue;
       }
-      if (nodes_[static_cast<size_t>(found)].matrix) {
-        error(t.pointer + "/node", "expected a node with translate/rotate/scale to animate, found \"" + t.node +
-                                       "\" placed by a matrix (" + pointers_[static_cast<size_t>(found)] + ")");
-        continue;
+      for (const size_t node : found) {
+        if (nodes_[node].matrix) {
+          error(t.pointer + "/node", "expected a node with translate/rotate/scale to animate, found \"" + t.node +
+                                         "\" placed by a matrix (" +
+                                         (from_file_[node] ? "in the glTF file placed at " : "") + pointers_[node] + ")");
+          break;
+        }
+        Track track = t.track;
+        track.node = static_cast<uint32_t>(node);
+        tracks_.push_back(std::move(track));
       }
-      Track track = t.track;
-      track.node = static_cast<uint32_t>(found);
-      tracks_.push_back(std::move(track));
     }
   }
 
@@ -219,11 +226,32 @@ class Builder {
     const LoadedModel* loaded = load_model(ref);
     if (!loaded) return;
     const ImportedModel& model = loaded->model;
+    // The node's "material" replaces them all; "materials" in the mesh object replaces by name.
+    for (const MaterialOverride& o : ref.materials) {
+      const auto& names = model.material_names;
+      if (std::find(names.begin(), names.end(), o.file_material) != names.end()) continue;
+      std::string message = "expected the name of a material in \"" + ref.file + "\"";
+      if (!names.empty() && names.size() <= 12) {
+        message += " (";
+        for (size_t i = 0; i < names.size(); ++i) message += (i ? ", \"" : "\"") + names[i] + "\"";
+        message += ")";
+      }
+      message += ", found \"" + o.file_material + "\"";
+      if (const auto near = closest_match(o.file_material, names)) message += " (did you mean \"" + *near + "\"?)";
+      error(o.pointer, message);
+    }
+    const auto material_of = [&](const LoadedPrimitive& p) {
+      if (material_override) return *material_override;
+      if (p.file_material >= 0)
+        for (const MaterialOverride& o : ref.materials)
+          if (model.material_names[static_cast<size_t>(p.file_material)] == o.file_material) return o.material;
+      return p.material;
+    };
     const auto meshes_of = [&](int32_t mesh) {
       std::vector<NodeMesh> out;
       if (mesh < 0) return out;
       for (const LoadedPrimitive& p : loaded->meshes[static_cast<size_t>(mesh)])
-        out.push_back(NodeMesh{p.geometry, material_override.value_or(p.material)});
+        out.push_back(NodeMesh{p.geometry, material_of(p)});
       return out;
     };
     size_t placed = 0;
@@ -265,7 +293,8 @@ class Builder {
 
   struct LoadedPrimitive {
     uint32_t geometry;  // index into assets_.meshes
-    uint32_t material;
+    uint32_t material;  // into assets_.materials
+    int file_material;  // the file's own index (-1: none), for overrides by name
   };
   struct LoadedModel {
     ImportedModel model;                               // its nodes and tracks (meshes moved out)
@@ -301,7 +330,8 @@ class Builder {
         if (!add_geometry(std::move(p.mesh), ref)) return nullptr;
         const uint32_t material =
             p.material >= 0 ? first_material + static_cast<uint32_t>(p.material) : default_material();
-        loaded.meshes[m].push_back(LoadedPrimitive{static_cast<uint32_t>(assets_.meshes.size() - 1), material});
+        loaded.meshes[m].push_back(
+            LoadedPrimitive{static_cast<uint32_t>(assets_.meshes.size() - 1), material, p.material});
       }
     }
     model->meshes.clear();

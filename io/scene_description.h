@@ -33,10 +33,18 @@ struct MaterialDescription {
 };
 
 // A triangle mesh taken from a glTF file: one named mesh, or every mesh the file's scene uses.
+// "materials": {"<a material's name in the file>": "<a material under /materials>"}.
+struct MaterialOverride {
+  std::string file_material;
+  uint32_t material = 0;  // index into SceneDescription::materials
+  std::string pointer;    // of the entry
+};
+
 struct MeshReference {
   std::string file;           // as written in the scene
   std::string resolved_path;  // relative paths resolved against the scene file's folder
   std::optional<std::string> mesh_name;
+  std::vector<MaterialOverride> materials;
   std::string pointer;  // of the "mesh" object
 };
 

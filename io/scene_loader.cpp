@@ -26,7 +26,7 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   desc.ambient = Vec3(0.1f);
   desc.frame_the_model = true;
   NodeDescription node;
-  node.mesh = MeshReference{path, path, std::nullopt, ""};
+  node.mesh = MeshReference{path, path, std::nullopt, {}, ""};
   desc.nodes.push_back(std::move(node));
   std::vector<std::string> files;
   std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);

@@ -194,6 +194,35 @@ bool check_rect_edges(const JsonReader& r, const ObjectReader& o, Vec3 e1, Vec3 
   return true;
 }
 
+// A spot light: a point light whose emission fades (glTF's t^2) from the inner cone to the outer.
+std::optional<SpotLight> parse_spot_light(const JsonReader& r, ObjectReader& o, Vec3 emitted,
+                                          const std::optional<Attenuation>& attenuation) {
+  const auto position = o.vec3("position", true);
+  const auto direction = o.vec3("direction", true);
+  const auto inner = o.number("inner_angle", NumberRule{0.0, 90.0});
+  const auto outer = o.number("outer_angle", NumberRule{0.0, 90.0});
+  o.finish();
+  if (!position || !direction || !attenuation) return std::nullopt;
+  if (!(glm::length(*direction) > 0.0f)) {
+    r.error(o.child("direction"), "expected a direction that is not zero, found [0, 0, 0]");
+    return std::nullopt;
+  }
+  const double in = inner.value_or(0.0), out = outer.value_or(30.0);
+  if (!(in < out)) {
+    r.expected(o.child(outer ? "outer_angle" : "inner_angle"),
+               "outer_angle > inner_angle (" + Json(in).dump() + " degrees)", Json(out));
+    return std::nullopt;
+  }
+  SpotLight light;
+  light.position = *position;
+  light.direction = glm::normalize(*direction);
+  light.colour = emitted;
+  light.attenuation = *attenuation;
+  light.cos_inner = static_cast<float>(std::cos(in * 3.14159265358979323846 / 180.0));
+  light.cos_outer = static_cast<float>(std::cos(out * 3.14159265358979323846 / 180.0));
+  return light;
+}
+
 std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
   std::vector<Light> out;
   if (!v.is_array()) {
@@ -203,8 +232,8 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
   for (size_t i = 0; i < v.size(); ++i) {
     ObjectReader o(r, v[i], pointer_child("/lights", i));
     std::optional<size_t> type;
-    if (const Json* t = o.get("type", true, "\"point\" or \"rect\""))
-      type = read_choice(r, *t, o.child("type"), {"point", "rect"});
+    if (const Json* t = o.get("type", true, "\"point\", \"rect\", \"spot\" or \"directional\""))
+      type = read_choice(r, *t, o.child("type"), {"point", "rect", "spot", "directional"});
     const Vec3 colour = o.colour("color").value_or(Vec3(1.0f));
     const auto intensity = o.number("intensity", kNonNegative);
     const Vec3 emitted = colour * static_cast<float>(intensity.value_or(1.0));
@@ -225,6 +254,17 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       light.attenuation = *attenuation;
       light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
       out.emplace_back(light);
+    } else if (type == 2u) {
+      if (auto light = parse_spot_light(r, o, emitted, attenuation)) out.emplace_back(*light);
+    } else if (type == 3u) {
+      const auto direction = o.vec3("direction", true);
+      o.finish();
+      if (!direction) continue;
+      if (!(glm::length(*direction) > 0.0f)) {
+        r.error(o.child("direction"), "expected a direction that is not zero, found [0, 0, 0]");
+        continue;
+      }
+      out.emplace_back(DirectionalLight{glm::normalize(*direction), emitted});
     } else {
       PointLight light;
       const auto position = o.vec3("position", type == 0u);

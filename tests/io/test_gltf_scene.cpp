@@ -173,3 +173,32 @@ TEST_CASE("glTF EXT_mesh_gpu_instancing: one mesh placed once per row, in its no
   CHECK_FALSE(hits(4.75f, 1.75f));
   CHECK_FALSE(hits(1.5f, 1.5f));  // between copies
 }
+
+TEST_CASE("JSON scenes: a glTF file's materials replaced by name, its nodes animated by name", "[gltf][overrides]") {
+  const std::string gem = rt::test::source_path("scenes/models/gem.gltf");
+  const LoadedScene loaded = rt::test::load_scene_text("override-by-name.json", R"({
+    "camera": {"position": [0, 0, 6], "look_at": [0, 0, 0]},
+    "materials": {"glass": {"kd": 0.1, "transmission": 0.9, "ior": 1.5}, "red": {"kd": [0.8, 0.1, 0.1]}},
+    "nodes": [{"name": "left", "transform": {"translate": [-2, 0, 0]},
+               "mesh": {"file": ")" + gem + R"(", "materials": {"emerald": "glass"}}},
+              {"name": "right", "transform": {"translate": [2, 0, 0]}, "mesh": {"file": ")" + gem + R"("}}],
+    "animation": {"fps": 10, "frames": [0, 10],
+                  "tracks": [{"node": "gem", "property": "translate",
+                              "keys": [{"frame": 0, "value": [0, 0, 0]}, {"frame": 10, "value": [0, 3, 0]}]}]}})");
+  const Scene& scene = loaded.scene;
+  REQUIRE(scene.bvh.instances().size() == 2);
+  // The first placement uses the scene's glass (material 0); the second keeps the file's emerald.
+  const MeshInstance& left = scene.bvh.instances()[0].bounds.centre().x < 0 ? scene.bvh.instances()[0]
+                                                                             : scene.bvh.instances()[1];
+  const MeshInstance& right = &left == &scene.bvh.instances()[0] ? scene.bvh.instances()[1] : scene.bvh.instances()[0];
+  CHECK(left.material == 0);
+  CHECK(right.material >= 2);
+  CHECK(scene.materials()[left.material].transmissive());
+  CHECK_FALSE(scene.materials()[right.material].transmissive());
+  // The track names the node inside the file: both placements of the file move.
+  const Scene later = loaded.graph.at(1.0f, BvhBuildOptions{});
+  for (const MeshInstance& i : later.bvh.instances()) {
+    const MeshInstance& before = i.bounds.centre().x < 0 ? left : right;
+    CHECK(i.bounds.centre().y - before.bounds.centre().y == Approx(3.0f).epsilon(1e-4));
+  }
+}

@@ -75,6 +75,21 @@ TEST_CASE("schema: rejects what the loader rejects for its shape", "[schema]") {
   CHECK(rejects(j));
   j = base();
   j["lights"] = {{{"type", "spot"}, {"position", {0, 1, 0}}}};
+  CHECK(rejects(j));  // no direction
+  j["lights"][0]["direction"] = {0, -1, 0};
+  CHECK_FALSE(rejects(j));
+  j["lights"][0]["outer_angle"] = 120;
+  CHECK(rejects(j));
+  j["lights"] = {{{"type", "directional"}, {"direction", {0, 0, 0}}}};
+  CHECK(rejects(j));
+  j["lights"][0]["direction"] = {1, -1, 0};
+  CHECK_FALSE(rejects(j));
+  j["lights"] = {{{"type", "laser"}, {"position", {0, 1, 0}}}};
+  CHECK(rejects(j));
+  j = base();
+  j["nodes"].push_back({{"mesh", {{"file", "a.glb"}, {"materials", {{"Bottle", "m"}}}}}});
+  CHECK_FALSE(rejects(j));
+  j["nodes"].back()["mesh"]["materials"]["Cap"] = 3;
   CHECK(rejects(j));
   j = base();
   j["nodes"].push_back({{"material", "m"}});  // a material on a group node
