@@ -96,17 +96,35 @@ void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapp
 uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, const std::string& where) {
   uint32_t& done = decoded_[image_index][static_cast<size_t>(encoding)];
   if (done != kNoTexture - 1) return done;
-  done = kNoTexture;
   const tinygltf::Image& image = model_.images[image_index];
-  std::string name = "image " + to_string(image_index), error;
-  std::vector<unsigned char> bytes = image.image;
-  if (bytes.empty() && !image.uri.empty()) {
-    const std::string path = resolve_path(base_dir_, percent_decoded(image.uri));
+  std::string name = "image " + to_string(image_index);
+  done = decode_bytes(image.image, image.uri, encoding, name, where);
+  return done;
+}
+
+TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where) {
+  TextureSlot slot;
+  const auto found = files_.find(uri);
+  if (found != files_.end()) {
+    slot.texture = found->second;
+    return slot;
+  }
+  std::string name = "\"" + uri + "\"";
+  slot.texture = files_[uri] = decode_bytes({}, uri, TextureEncoding::kLinear, name, where);
+  return slot;
+}
+
+// The image's own bytes, or (when empty) the file its URI names beside the model.
+uint32_t ImageDecoder::decode_bytes(std::vector<unsigned char> bytes, const std::string& uri,
+                                    TextureEncoding encoding, std::string& name, const std::string& where) {
+  std::string error;
+  if (bytes.empty() && !uri.empty()) {
+    const std::string path = resolve_path(base_dir_, percent_decoded(uri));
     name = "\"" + path + "\"";
     auto file = read_input_bytes(path, limits_.gltf_total_bytes, error);
     if (!file) {
       out_.warnings.push_back(where + ": cannot read " + name + " (" + error + "); ignored");
-      return done;
+      return kNoTexture;
     }
     if (std::find(out_.files.begin(), out_.files.end(), path) == out_.files.end()) out_.files.push_back(path);
     bytes = std::move(*file);
@@ -114,11 +132,10 @@ uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, cons
   auto texture = decode_texture(bytes, name, encoding, limits_.texture_texels, error);
   if (!texture) {
     out_.warnings.push_back(where + ": " + error + "; ignored");
-    return done;
+    return kNoTexture;
   }
-  done = static_cast<uint32_t>(out_.textures.size());
   out_.textures.push_back(std::move(*texture));
-  return done;
+  return static_cast<uint32_t>(out_.textures.size() - 1);
 }
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,9 +37,13 @@ class ImageDecoder {
   // and metallic-roughness maps are data, alpha masks read the alpha channel), its UV set, its
   // sampler's wrap and filter modes and its KHR_texture_transform.
   TextureSlot slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where);
+  // A data slot for an image file beside the glTF file (rtcli's extras), decoded once.
+  TextureSlot file_slot(const std::string& uri, const std::string& where);
 
  private:
   uint32_t decode(size_t image_index, TextureEncoding encoding, const std::string& where);
+  uint32_t decode_bytes(std::vector<unsigned char> bytes, const std::string& uri, TextureEncoding encoding,
+                        std::string& name, const std::string& where);
   void read_sampler(int sampler, TextureMapping& mapping);
   void read_transform(const tinygltf::Value& transform, TextureMapping& mapping, const std::string& where);
 
@@ -48,6 +53,7 @@ class ImageDecoder {
   ImportedModel& out_;
   // Per image and encoding: its texture, kNoTexture if unusable, kNoTexture - 1 if not tried.
   std::vector<std::array<uint32_t, 3>> decoded_;
+  std::map<std::string, uint32_t> files_;  // file_slot's, by URI
 };
 
 }  // namespace rt

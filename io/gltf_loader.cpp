@@ -11,6 +11,7 @@
 
 #include "io/gltf_accessor.h"
 #include "io/gltf_animation.h"
+#include "io/gltf_extras.h"
 #include "io/gltf_file.h"
 #include "io/gltf_images.h"
 #include "io/gltf_lights.h"
@@ -368,6 +369,8 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     if (node.mesh >= 0 && !import_instancing(model, node, limits, imported, error)) return false;
     const auto index = static_cast<int32_t>(out.nodes.size());
     if (!import_camera(model, node, index, out, error) || !import_light(model, node, index, out, error)) return false;
+    if (auto area = area_light_from_extras(node.extras, "node \"" + node.name + "\"", out.warnings))
+      out.lights.push_back(LightPlacement{*area, index});
     node_map[static_cast<size_t>(item.node)] = index;
     out.nodes.push_back(std::move(imported));
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, index});
@@ -392,6 +395,7 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     const tinygltf::Material& m = model.materials[i];
     const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
     out.materials.push_back(import_material(m, images, where, out.warnings));
+    apply_material_extras(m.extras, images, where, out.materials.back(), out.warnings);
     out.material_names.push_back(m.name);
   }
   Importer importer(model, limits, out, error);

@@ -1,0 +1,84 @@
+#include "io/gltf_extras.h"
+
+#include <cmath>
+
+#include <tiny_gltf.h>
+
+#include "io/gltf_images.h"
+
+namespace rt {
+namespace {
+
+std::optional<float> number(const tinygltf::Value& object, const char* key) {
+  if (!object.Has(key) || !object.Get(key).IsNumber()) return std::nullopt;
+  const double v = object.Get(key).GetNumberAsDouble();
+  return std::isfinite(v) ? std::optional<float>(static_cast<float>(v)) : std::nullopt;
+}
+
+// `count` finite numbers, or nullopt.
+std::optional<std::vector<float>> numbers(const tinygltf::Value& object, const char* key, int count) {
+  if (!object.Has(key)) return std::nullopt;
+  const tinygltf::Value& v = object.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != static_cast<size_t>(count)) return std::nullopt;
+  std::vector<float> out;
+  for (int i = 0; i < count; ++i) {
+    if (!v.Get(i).IsNumber() || !std::isfinite(v.Get(i).GetNumberAsDouble())) return std::nullopt;
+    out.push_back(static_cast<float>(v.Get(i).GetNumberAsDouble()));
+  }
+  return out;
+}
+
+// Blender writes booleans of custom properties as 0 or 1.
+bool flag(const tinygltf::Value& object, const char* key) {
+  if (!object.Has(key)) return false;
+  const tinygltf::Value& v = object.Get(key);
+  return v.IsBool() ? v.Get<bool>() : (v.IsNumber() && v.GetNumberAsDouble() != 0.0);
+}
+
+}  // namespace
+
+std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, const std::string& where,
+                                                std::vector<std::string>& warnings) {
+  if (!extras.IsObject() || !extras.Has("rtcli_area_light")) return std::nullopt;
+  const tinygltf::Value& a = extras.Get("rtcli_area_light");
+  const auto size = a.IsObject() ? numbers(a, "size", 2) : std::nullopt;
+  const auto power = a.IsObject() ? number(a, "power") : std::nullopt;
+  const auto colour = a.IsObject() ? numbers(a, "color", 3) : std::nullopt;
+  if (!size || !power || !((*size)[0] > 0.0f) || !((*size)[1] > 0.0f) || *power < 0.0f) {
+    warnings.push_back(where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
+    return std::nullopt;
+  }
+  if (a.Has("shape") && a.Get("shape").IsString()) {
+    const std::string shape = a.Get("shape").Get<std::string>();
+    if (shape == "DISK" || shape == "ELLIPSE")
+      warnings.push_back(where + ": a " + shape + " area light is drawn as the rectangle of the same size");
+  }
+  const float sx = (*size)[0], sy = (*size)[1];
+  RectLight light;
+  // Centred on the node; edge1 x edge2 = -Z, the way Blender's area lights face.
+  light.corner = Vec3(-0.5f * sx, 0.5f * sy, 0.0f);
+  light.edge1 = Vec3(sx, 0.0f, 0.0f);
+  light.edge2 = Vec3(0.0f, -sy, 0.0f);
+  const Vec3 c = colour ? glm::max(Vec3((*colour)[0], (*colour)[1], (*colour)[2]), Vec3(0.0f)) : Vec3(1.0f);
+  light.colour = c * (*power / (kPi * kPi));
+  light.attenuation = Attenuation{0.0f, 0.0f, 1.0f};
+  light.two_sided = flag(a, "two_sided");
+  return light;
+}
+
+void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, const std::string& where,
+                           Material& material, std::vector<std::string>& warnings) {
+  if (!extras.IsObject() || !extras.Has("rtcli_bump")) return;
+  const tinygltf::Value& b = extras.Get("rtcli_bump");
+  if (!b.IsObject() || !b.Has("image") || !b.Get("image").IsString()) {
+    warnings.push_back(where + ": rtcli_bump needs an \"image\" file name; ignored");
+    return;
+  }
+  material.bump.height = images.file_slot(b.Get("image").Get<std::string>(), where + " rtcli_bump");
+  material.bump.strength = number(b, "strength").value_or(1.0f);
+  material.bump.epsilon = std::max(0.0f, number(b, "epsilon").value_or(0.0f));
+  // Blender's exporter wrote the Bump node's height image as a normal map: not one.
+  if (material.bump.height.present()) material.normal_map = NormalMap{};
+}
+
+}  // namespace rt
