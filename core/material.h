@@ -57,7 +57,8 @@ struct Material {
 
   // Every texture slot, for whoever renumbers textures (a glTF file's, added to a scene's).
   std::array<TextureSlot*, 7> texture_slots() {
-    return {&texture, &specular_texture, &bump.height, &normal_map.map, &emission_texture, &pbr.texture, &cutout.texture};
+    return {&texture,          &specular_texture, &bump.height,   &normal_map.map,
+            &emission_texture, &pbr.texture,      &cutout.texture};
   }
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }

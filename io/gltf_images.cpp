@@ -82,7 +82,8 @@ void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapp
       out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
       return;
     }
-    const Vec2 value(static_cast<float>(v.Get(0).GetNumberAsDouble()), static_cast<float>(v.Get(1).GetNumberAsDouble()));
+    const Vec2 value(static_cast<float>(v.Get(0).GetNumberAsDouble()),
+                     static_cast<float>(v.Get(1).GetNumberAsDouble()));
     if (is_finite(Vec3(value, 0.0f))) out = value;
   };
   pair("offset", mapping.offset);
@@ -115,8 +116,8 @@ TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& w
 }
 
 // The image's own bytes, or (when empty) the file its URI names beside the model.
-uint32_t ImageDecoder::decode_bytes(std::vector<unsigned char> bytes, const std::string& uri,
-                                    TextureEncoding encoding, std::string& name, const std::string& where) {
+uint32_t ImageDecoder::decode_bytes(std::vector<unsigned char> bytes, const std::string& uri, TextureEncoding encoding,
+                                    std::string& name, const std::string& where) {
   std::string error;
   if (bytes.empty() && !uri.empty()) {
     const std::string path = resolve_path(base_dir_, percent_decoded(uri));

@@ -15,8 +15,8 @@
 #include "io/gltf_file.h"
 #include "io/gltf_images.h"
 #include "io/gltf_lights.h"
-#include "io/input_file.h"
 #include "io/gltf_materials.h"
+#include "io/input_file.h"
 #include "io/texture_file.h"
 
 namespace rt {
@@ -155,7 +155,8 @@ class Importer {
                                  : 4;
       if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, error_))
         return fail(where + " COLOR_0: " + error_);
-      if (raw.size() / static_cast<size_t>(components) != n) return fail(where + ": COLOR_0 and POSITION counts differ");
+      if (raw.size() / static_cast<size_t>(components) != n)
+        return fail(where + ": COLOR_0 and POSITION counts differ");
       ip.mesh.colours.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const float* c = &raw[static_cast<size_t>(components) * i];
@@ -268,8 +269,8 @@ bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node,
   std::vector<float> t, r, s;
   size_t count = 0;
   bool any = false;
-  for (auto [name, components, values] : {std::tuple{"TRANSLATION", 3, &t}, std::tuple{"ROTATION", 4, &r},
-                                           std::tuple{"SCALE", 3, &s}}) {
+  for (auto [name, components, values] :
+       {std::tuple{"TRANSLATION", 3, &t}, std::tuple{"ROTATION", 4, &r}, std::tuple{"SCALE", 3, &s}}) {
     if (!attributes.Has(name)) continue;
     const tinygltf::Value& index = attributes.Get(name);
     if (!index.IsInt() ||
@@ -279,8 +280,8 @@ bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node,
     }
     const size_t n = values->size() / static_cast<size_t>(components);
     if (any && n != count) {
-      error = where + name + ": expected " + to_string(count) + " values like the other attributes, found " +
-              to_string(n);
+      error =
+          where + name + ": expected " + to_string(count) + " values like the other attributes, found " + to_string(n);
       return false;
     }
     count = n;

@@ -28,9 +28,9 @@ struct ImportedNode {
   std::string name;
   int32_t parent = -1;  // index into ImportedModel::nodes, always lower than the node's own
   Trs trs;
-  std::optional<Mat4> matrix;  // the node's "matrix" instead of TRS
-  int32_t mesh = -1;           // index into ImportedModel::meshes
-  int32_t gltf_index = -1;     // the node's index in the file, for messages
+  std::optional<Mat4> matrix;    // the node's "matrix" instead of TRS
+  int32_t mesh = -1;             // index into ImportedModel::meshes
+  int32_t gltf_index = -1;       // the node's index in the file, for messages
   std::vector<Mat4> instancing;  // EXT_mesh_gpu_instancing: node-space placements of the mesh
 };
 
@@ -47,7 +47,7 @@ struct ImportedModel {
   std::vector<CameraPlacement> cameras;                // node indexes `nodes`; camera in node space
   std::vector<LightPlacement> lights;                  // KHR_lights_punctual, in node space
   float animation_end = 0.0f;                          // the last key time of all tracks, seconds
-  std::vector<Material> materials;  // per glTF material (io/gltf_materials.h); texture slots index `textures`
+  std::vector<Material> materials;          // per glTF material (io/gltf_materials.h); texture slots index `textures`
   std::vector<std::string> material_names;  // per glTF material, as the file names them ("" if not)
   std::vector<Texture> textures;            // the images the materials use, decoded once per encoding
   std::vector<std::string> warnings;

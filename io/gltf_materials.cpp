@@ -42,9 +42,12 @@ Vec3 clamped01(Vec3 v) { return glm::clamp(v, Vec3(0.0f), Vec3(1.0f)); }
 }  // namespace
 
 const std::vector<std::string>& gltf_material_extensions() {
-  static const std::vector<std::string> names{
-      "KHR_materials_emissive_strength", "KHR_materials_ior",   "KHR_materials_transmission",
-      "KHR_materials_volume",            "KHR_materials_unlit", "KHR_texture_transform"};
+  static const std::vector<std::string> names{"KHR_materials_emissive_strength",
+                                              "KHR_materials_ior",
+                                              "KHR_materials_transmission",
+                                              "KHR_materials_volume",
+                                              "KHR_materials_unlit",
+                                              "KHR_texture_transform"};
   return names;
 }
 
@@ -115,8 +118,8 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
     out.cutout.cutoff = m.alphaMode == "MASK" ? static_cast<float>(m.alphaCutoff) : 0.5f;
     out.cutout.factor = m.alphaMode == "MASK" ? alpha : 1.0f;
     if (base.index >= 0) {
-      out.cutout.texture = images.slot(texture_ref(base.index, base.texCoord, base.extensions),
-                                       TextureEncoding::kAlpha, where + " baseColorTexture (alpha)");
+      out.cutout.texture = images.slot(texture_ref(base.index, base.texCoord, base.extensions), TextureEncoding::kAlpha,
+                                       where + " baseColorTexture (alpha)");
       out.cutout.texture.mapping.filter = out.texture.mapping.filter;
     }
     if (m.alphaMode == "BLEND" && alpha < 1.0f) {

@@ -69,8 +69,8 @@ class Builder {
         if (nodes_[i].name == t.node) (from_file_[i] ? in_files : in_scene).push_back(i);
       const std::vector<size_t> found = in_scene.empty() ? in_files : std::vector<size_t>{in_scene.front()};
       if (found.empty()) {
-        std::string message = "expected the name of a node under /nodes or inside a glTF file they place, found \"" +
-                              t.node + "\"";
+        std::string message =
+            "expected the name of a node under /nodes or inside a glTF file they place, found \"" + t.node + "\"";
         if (const auto near = closest_match(t.node, names)) message += " (did you mean \"" + *near + "\"?)";
         error(t.pointer + "/node", message);
         continue;
@@ -79,7 +79,8 @@ class Builder {
         if (nodes_[node].matrix) {
           error(t.pointer + "/node", "expected a node with translate/rotate/scale to animate, found \"" + t.node +
                                          "\" placed by a matrix (" +
-                                         (from_file_[node] ? "in the glTF file placed at " : "") + pointers_[node] + ")");
+                                         (from_file_[node] ? "in the glTF file placed at " : "") + pointers_[node] +
+                                         ")");
           break;
         }
         Track track = t.track;

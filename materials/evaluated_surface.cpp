@@ -31,9 +31,9 @@ Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direc
     const TextureMapping& mapping = m.normal_map.map.mapping;
     const bool file_tangents = si.tangent.w != 0.0f && mapping.projection == Projection::kUv && mapping.uv_set == 0 &&
                                mapping.scale == Vec2(1.0f) && mapping.rotation_degrees == 0.0f;
-    n = file_tangents ? tangent_space_normal(n, Vec3(si.tangent), si.tangent.w, texel, m.normal_map.scale)
-                      : tangent_space_normal(n, p.dpdu, handedness_from_uv(n, p.dpdu, p.dpdv), texel,
-                                             m.normal_map.scale);
+    n = file_tangents
+            ? tangent_space_normal(n, Vec3(si.tangent), si.tangent.w, texel, m.normal_map.scale)
+            : tangent_space_normal(n, p.dpdu, handedness_from_uv(n, p.dpdu, p.dpdv), texel, m.normal_map.scale);
   }
   if (m.bump.height.present()) {
     SurfaceInteraction tilted = si;

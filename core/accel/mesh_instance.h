@@ -18,9 +18,9 @@ struct AlphaCutout;
 struct MeshInstance {
   const Bvh* bvh = nullptr;  // object space, triangles only (ids = the mesh's triangle indices)
   Transform transform;
-  Aabb bounds;            // world space: the BVH's box through the transform
-  uint32_t mesh = 0;      // which mesh of the scene's assets, for surface records
-  uint32_t material = 0;  // the placement's material (a mesh can be placed with several)
+  Aabb bounds;                          // world space: the BVH's box through the transform
+  uint32_t mesh = 0;                    // which mesh of the scene's assets, for surface records
+  uint32_t material = 0;                // the placement's material (a mesh can be placed with several)
   const AlphaCutout* cutout = nullptr;  // an alpha-masked material's coverage test; null: solid
 };
 

@@ -110,8 +110,8 @@ TEST_CASE("Blender fixture: a JSON scene makes the Blender material glass by nam
     "nodes": [{"mesh": {"file": ")" + fixture() + R"(", "materials": {"Glass": "diamond", "Red": "chrome"}}}]})");
   std::set<uint32_t> used;
   for (const MeshInstance& i : loaded.scene.bvh.instances()) used.insert(i.material);
-  CHECK(used.count(0) == 1);  // diamond
-  CHECK(used.count(1) == 1);  // chrome
-  CHECK(used.size() == 3);    // and the file's own Floor
+  CHECK(used.count(0) == 1);               // diamond
+  CHECK(used.count(1) == 1);               // chrome
+  CHECK(used.size() == 3);                 // and the file's own Floor
   CHECK(loaded.scene.lights.size() == 3);  // the scene has none of its own: the file's
 }

@@ -1,8 +1,11 @@
 // glTF materials by the documented rule (io/gltf_materials.h): factors, extensions, texture
 // transforms and samplers, vertex colours, metallic-roughness per shading point, alpha masks for
 // camera and shadow rays, BLEND and unlit.
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
+#include "core/render/renderer.h"
 #include "io/gltf_loader.h"
 #include "materials/evaluated_surface.h"
 #include "materials/pbr_to_phong.h"
@@ -31,10 +34,9 @@ std::string quad_file(const std::string& name, const Json& material, const std::
   Json views = {{{"buffer", 0}, {"byteLength", 48}},
                 {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 32}},
                 {{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 12}}};
-  Json accessors = {
-      {{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-      {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-      {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
+  Json accessors = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+                    {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
+                    {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
   if (!colours.empty()) {
     buffer += std::string(4, '\0');  // align the bytes to 4 (the views above end at 92)
     for (uint8_t c : colours) buffer.push_back(static_cast<char>(c));
@@ -114,7 +116,8 @@ TEST_CASE("pbr_to_phong: hand-computed terms for a rough metal and a smooth diel
 
 TEST_CASE("glTF materials: factors and extensions by the documented rule", "[gltf][materials]") {
   const Json material = {
-      {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}}, {"metallicFactor", 0.3}, {"roughnessFactor", 0.6}}},
+      {"pbrMetallicRoughness",
+       {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}}, {"metallicFactor", 0.3}, {"roughnessFactor", 0.6}}},
       {"emissiveFactor", {1.0, 0.5, 0.0}},
       {"extensions",
        {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}},
@@ -155,9 +158,9 @@ TEST_CASE("glTF materials: KHR_texture_transform and sampler filters on texture 
   CHECK(t.offset == Vec2(0.5f, 0.0f));
   CHECK(t.rotation_degrees == Approx(90.0f));
   CHECK(t.scale == Vec2(2.0f, 3.0f));
-  CHECK(t.uv_set == 1);  // the extension's texCoord overrides the textureInfo's
-  CHECK(t.filter == TextureFilter::kNearest);                               // magFilter NEAREST
-  CHECK(m.pbr.texture.mapping.filter == TextureFilter::kTrilinear);         // no sampler: mipmapped
+  CHECK(t.uv_set == 1);                        // the extension's texCoord overrides the textureInfo's
+  CHECK(t.filter == TextureFilter::kNearest);  // magFilter NEAREST
+  CHECK(m.pbr.texture.mapping.filter == TextureFilter::kTrilinear);  // no sampler: mipmapped
   CHECK(m.texture.texture != m.pbr.texture.texture);
 }
 
@@ -168,8 +171,8 @@ TEST_CASE("glTF materials: metallicRoughness texture and COLOR_0 at the shading 
                            {"roughnessFactor", 1.0},
                            {"metallicRoughnessTexture", {{"index", 1}}}}}};
   // COLOR_0 (255, 128, 0, 255) on every vertex: linear (1, 128/255, 0).
-  const std::string gltf = quad_file("metal-rough.gltf", material, {255, 128, 0, 255, 255, 128, 0, 255, 255, 128, 0,
-                                                                     255, 255, 128, 0, 255});
+  const std::string gltf =
+      quad_file("metal-rough.gltf", material, {255, 128, 0, 255, 255, 128, 0, 255, 255, 128, 0, 255, 255, 128, 0, 255});
   const LoadedScene loaded = quad_scene("metal-rough.json", gltf);
   const EvaluatedSurface s = quad_surface(loaded.scene, 0.3f, 0.6f);
   const Vec3 base = Vec3(0.8f, 0.6f, 0.4f) * Vec3(1.0f, 128.0f / 255.0f, 0.0f);
@@ -184,7 +187,8 @@ TEST_CASE("glTF materials: metallicRoughness texture and COLOR_0 at the shading 
 }
 
 TEST_CASE("glTF materials: alpha MASK cuts the surface out for camera and shadow rays", "[gltf][materials][alpha]") {
-  const Json mask = {{"alphaMode", "MASK"}, {"alphaCutoff", 0.5}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}};
+  const Json mask = {
+      {"alphaMode", "MASK"}, {"alphaCutoff", 0.5}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}};
   const LoadedScene loaded = quad_scene("mask.json", quad_file("mask.gltf", mask));
   const Scene& scene = loaded.scene;
   Hit hit;
@@ -246,4 +250,58 @@ TEST_CASE("glTF materials: BLEND becomes unbent transmission, unlit shows the ba
   CHECK(s.emission.z == Approx(0.6f));
   CHECK(s.diffuse == Vec3(0.0f));
   CHECK(s.specular == Vec3(0.0f));
+}
+
+TEST_CASE("glTF samples: TextureCoordinateTest's squares land where their labels say", "[gltf][materials][uv]") {
+  if (!rt::test::have_sample_models()) {
+    WARN("../shared/gltf not found: sample-model tests skipped");
+    return;
+  }
+  Diagnostics diags;
+  const auto loaded = load_scene(rt::test::sample_model("TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"),
+                                 rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  RenderSettings settings = loaded->description.render;
+  settings.width = settings.height = 64;
+  Image image;
+  render(loaded->scene, settings, image);
+  // Each square's colour comes from its base colour texture through TEXCOORD_0: yellow top left,
+  // orange top right, blue bottom left, green bottom right (the model's reference screenshot).
+  const Vec3 yellow = image.at(13, 22), orange = image.at(50, 22), blue = image.at(16, 40), green = image.at(48, 40);
+  INFO("yellow " << yellow.x << " " << yellow.y << " " << yellow.z);
+  INFO("orange " << orange.x << " " << orange.y << " " << orange.z);
+  INFO("blue " << blue.x << " " << blue.y << " " << blue.z);
+  INFO("green " << green.x << " " << green.y << " " << green.z);
+  CHECK(std::min(yellow.x, yellow.y) > 4.0f * yellow.z);
+  CHECK(orange.x > 2.0f * orange.y);
+  CHECK(orange.y > 2.0f * orange.z);
+  CHECK(blue.z > 2.0f * std::max(blue.x, blue.y));
+  CHECK(green.y > 2.0f * std::max(green.x, green.z));
+}
+
+TEST_CASE("glTF samples: BoxTextured's image from a file and from the GLB's buffer are the same texture",
+          "[gltf][materials]") {
+  if (!rt::test::have_sample_models()) {
+    WARN("../shared/gltf not found: sample-model tests skipped");
+    return;
+  }
+  const ImportedModel external = import_file(rt::test::sample_model("BoxTextured/glTF/BoxTextured.gltf"));
+  const ImportedModel embedded = import_file(rt::test::sample_model("BoxTextured/glTF-Binary/BoxTextured.glb"));
+  REQUIRE(external.materials.size() == 1);
+  REQUIRE(embedded.materials.size() == 1);
+  const TextureSlot& a = external.materials[0].texture;
+  const TextureSlot& b = embedded.materials[0].texture;
+  REQUIRE(a.present());
+  REQUIRE(b.present());
+  CHECK(a.mapping.filter == TextureFilter::kTrilinear);  // LINEAR_MIPMAP_LINEAR
+  const Texture& ta = external.textures[a.texture];
+  const Texture& tb = embedded.textures[b.texture];
+  REQUIRE(ta.width() == tb.width());
+  REQUIRE(ta.height() == tb.height());
+  for (int y = 0; y < ta.height(); y += 17)
+    for (int x = 0; x < ta.width(); x += 13) CHECK(ta.texel(x, y) == tb.texel(x, y));
+  // The file was read beside the model; the GLB needed no other file.
+  CHECK(std::any_of(external.files.begin(), external.files.end(),
+                    [](const std::string& f) { return f.find("CesiumLogoFlat.png") != std::string::npos; }));
+  CHECK(embedded.files.size() == 1);
 }

@@ -135,8 +135,8 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
 }
 
 TEST_CASE("glTF EXT_mesh_gpu_instancing: one mesh placed once per row, in its node's space", "[gltf][instancing]") {
-  std::string buffer = rt::test::square_positions();             // view 0: 48 bytes
-  rt::test::append<float>(buffer, {0, 0, 0, 2, 0, 0, 4, 0, 0});  // view 1: TRANSLATION, 36 bytes
+  std::string buffer = rt::test::square_positions();                      // view 0: 48 bytes
+  rt::test::append<float>(buffer, {0, 0, 0, 2, 0, 0, 4, 0, 0});           // view 1: TRANSLATION, 36 bytes
   rt::test::append<float>(buffer, {1, 1, 1, 1, 1, 1, 0.5f, 0.5f, 0.5f});  // view 2: SCALE, 36 bytes
   const Json doc = {
       {"scenes", {{{"nodes", {0}}}}},
@@ -155,9 +155,10 @@ TEST_CASE("glTF EXT_mesh_gpu_instancing: one mesh placed once per row, in its no
         {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 36}},
         {{"buffer", 0}, {"byteOffset", 84}, {"byteLength", 36}}}}};
   const std::string gltf = rt::test::write_gltf("instanced.gltf", buffer, doc);
-  const LoadedScene loaded = rt::test::load_scene_text(
-      "instanced.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
-                            "nodes": [{"mesh": {"file": ")" + gltf + R"("}}]})");
+  const LoadedScene loaded =
+      rt::test::load_scene_text("instanced.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+                            "nodes": [{"mesh": {"file": ")" +
+                                                      gltf + R"("}}]})");
   CHECK(loaded.scene.bvh.instances().size() == 3);  // one mesh stored, placed three times
   CHECK(loaded.scene.assets->meshes.size() == 1);
   const auto hits = [&](float x, float y) {
@@ -181,15 +182,16 @@ TEST_CASE("JSON scenes: a glTF file's materials replaced by name, its nodes anim
     "materials": {"glass": {"kd": 0.1, "transmission": 0.9, "ior": 1.5}, "red": {"kd": [0.8, 0.1, 0.1]}},
     "nodes": [{"name": "left", "transform": {"translate": [-2, 0, 0]},
                "mesh": {"file": ")" + gem + R"(", "materials": {"emerald": "glass"}}},
-              {"name": "right", "transform": {"translate": [2, 0, 0]}, "mesh": {"file": ")" + gem + R"("}}],
+              {"name": "right", "transform": {"translate": [2, 0, 0]}, "mesh": {"file": ")" +
+                                                                                    gem + R"("}}],
     "animation": {"fps": 10, "frames": [0, 10],
                   "tracks": [{"node": "gem", "property": "translate",
                               "keys": [{"frame": 0, "value": [0, 0, 0]}, {"frame": 10, "value": [0, 3, 0]}]}]}})");
   const Scene& scene = loaded.scene;
   REQUIRE(scene.bvh.instances().size() == 2);
   // The first placement uses the scene's glass (material 0); the second keeps the file's emerald.
-  const MeshInstance& left = scene.bvh.instances()[0].bounds.centre().x < 0 ? scene.bvh.instances()[0]
-                                                                             : scene.bvh.instances()[1];
+  const MeshInstance& left =
+      scene.bvh.instances()[0].bounds.centre().x < 0 ? scene.bvh.instances()[0] : scene.bvh.instances()[1];
   const MeshInstance& right = &left == &scene.bvh.instances()[0] ? scene.bvh.instances()[1] : scene.bvh.instances()[0];
   CHECK(left.material == 0);
   CHECK(right.material >= 2);

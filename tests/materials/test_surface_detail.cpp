@@ -156,8 +156,8 @@ TEST_CASE("bump: a linear ramp tilts the normal by the slope's angle", "[materia
       const float expected = std::atan(std::fabs(strength) / (2.0f * scale)) * 180.0f / kPi;
       INFO("strength " << strength << ", scale " << scale);
       CHECK(degrees_between(s.n, {0, 1, 0}) == Approx(expected).epsilon(1e-4));
-      CHECK(s.n.z == Approx(0.0f).margin(1e-6));                   // no slope along v
-      CHECK((s.n.x < 0.0f) == (strength > 0.0f));                   // leans away from the rise
+      CHECK(s.n.z == Approx(0.0f).margin(1e-6));   // no slope along v
+      CHECK((s.n.x < 0.0f) == (strength > 0.0f));  // leans away from the rise
     }
   }
 }
