@@ -49,11 +49,13 @@ bool write_file(std::string* err, const std::string&, const std::vector<unsigned
   return false;
 }
 
-// Images are not decoded here: an embedded one (data URI or buffer view) keeps its encoded bytes
-// in image->image, and the importer decodes only those a material it maps actually uses.
+// Images are not decoded here: one from a data URI keeps its encoded bytes in image->image, and
+// the importer decodes only those a material it maps actually uses. One in a buffer view is read
+// later from the view, once check_buffer_views has seen it inside its buffer: tinygltf hands
+// this callback the view's bytes without that check.
 bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
                         const unsigned char* bytes, int size, void*) {
-  if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+  if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 

@@ -99,7 +99,23 @@ uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, cons
   if (done != kNoTexture - 1) return done;
   const tinygltf::Image& image = model_.images[image_index];
   std::string name = "image " + to_string(image_index);
-  done = decode_bytes(image.image, image.uri, encoding, name, where);
+  std::vector<unsigned char> bytes = image.image;
+  if (bytes.empty() && image.bufferView >= 0 && static_cast<size_t>(image.bufferView) < model_.bufferViews.size()) {
+    // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(image.bufferView)];
+    if (view.buffer >= 0 && static_cast<size_t>(view.buffer) < model_.buffers.size()) {
+      const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
+      if (view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset)
+        bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
+                     data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
+    }
+    if (bytes.empty()) {
+      out_.warnings.push_back(where + ": image " + to_string(image_index) + "'s buffer view holds no image; ignored");
+      done = kNoTexture;
+      return done;
+    }
+  }
+  done = decode_bytes(std::move(bytes), image.uri, encoding, name, where);
   return done;
 }
 
