@@ -5,6 +5,9 @@ namespace rt {
 void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
   const Material& m = materials[material];
   if (!m.cutout.enabled || mask(mesh, material)) return;
+  // Coverage that cannot vary and reaches the cutoff everywhere needs no test: drawn solid.
+  const bool varies = m.cutout.texture.present() || !meshes[mesh].mesh.colours.empty();
+  if (!varies && m.cutout.factor >= m.cutout.cutoff) return;
   MaskedPlacement p;
   p.mesh = mesh;
   p.material = material;
