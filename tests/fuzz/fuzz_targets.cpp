@@ -167,7 +167,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
 
 std::string texture_image(const uint8_t* data, size_t size) {
   const std::vector<unsigned char> bytes(data, data + size);
-  for (const TextureEncoding encoding : {TextureEncoding::kSrgb, TextureEncoding::kLinear}) {
+  for (const TextureEncoding encoding : {TextureEncoding::kSrgb, TextureEncoding::kLinear, TextureEncoding::kAlpha}) {
     std::string error;
     const auto texture = decode_texture(bytes, "fuzz input", encoding, uint64_t{1} << 20, error);
     if (!texture) {
