@@ -157,6 +157,7 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     if (const auto w = o.weight("transmission")) mat.transmission = *w;
     if (const auto n = o.number("ior", kPositive)) mat.ior = static_cast<float>(*n);
     if (const auto a = o.colour("absorption")) mat.absorption = *a;
+    if (const auto e = o.colour("emission")) mat.emission = *e;
     if (spelt("glossy", is_ks)) {
       if (is_ks) mat.glossy = 1.0f / (1.0f + (mat.ks.x + mat.ks.y + mat.ks.z) / 3.0f);
     } else if (const auto g = o.number("glossy", kNonNegative)) {

@@ -161,3 +161,26 @@ TEST_CASE("golden image: textures (every shape, natural and projected, a normal-
 TEST_CASE("golden image: bump maps on sphere, cube, cylinder and cone", "[render][golden][bump]") {
   check_golden("bumps", "scenes/bumps.json", 200, 100);
 }
+
+TEST_CASE("emission: camera and mirror rays see an emissive surface's own radiance", "[render][emission]") {
+  // No lights: all there is to see is emission, directly and in a mirror.
+  const LoadedScene s = rt::test::load_scene_text("emission.json", R"({
+    "render": {"width": 21, "height": 21, "max_depth": 3},
+    "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 30},
+    "lights": [],
+    "materials": {"lamp": {"kd": 0, "emission": [2, 1, 0.5]},
+                  "mirror": {"kd": 0, "reflectivity": 0.5}},
+    "nodes": [{"shape": "sphere", "material": "lamp", "transform": {"translate": [0.8, 0, 1], "scale": 0.25}},
+              {"shape": "cube", "material": "mirror", "transform": {"translate": [0, 0, -1.2], "scale": [3, 3, 0.1]}}]})");
+  Image image;
+  render(s.scene, s.description.render, image);
+  const Vec3 centre = image.at(18, 10);  // the sphere, seen directly
+  CHECK(centre.x == Approx(2.0f));
+  CHECK(centre.y == Approx(1.0f));
+  CHECK(centre.z == Approx(0.5f));
+  // Nearer the middle the mirror shows it at half the radiance (reflectivity 0.5).
+  const Vec3 mirrored = image.at(13, 10);
+  CHECK(mirrored.x == Approx(1.0f));
+  CHECK(mirrored.z == Approx(0.25f));
+  CHECK(image.at(5, 10) == Vec3(0.0f));  // the mirror, showing the black background
+}
