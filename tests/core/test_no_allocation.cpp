@@ -65,7 +65,16 @@ Scene small_scene() {
   glossy.specular_texture.texture = 0;
   glossy.specular_texture.mapping.projection = Projection::kSpherical;
   glossy.specular_texture.mapping.scale = Vec2(3.0f, 2.0f);
-  assets->materials = {matte, mirror, glass, glossy};
+  // A glTF-like material: metallic-roughness per point from a texture, emission, an alpha mask.
+  Material leaf;
+  leaf.pbr.enabled = true;
+  leaf.pbr.metallic = 0.5f;
+  leaf.pbr.roughness = 0.7f;
+  leaf.pbr.texture.texture = 2;
+  leaf.emission = Vec3(0.1f);
+  leaf.cutout.enabled = true;
+  leaf.cutout.texture.texture = 0;
+  assets->materials = {matte, mirror, glass, glossy, leaf};
   scene.lights = {PointLight{{2, 5, 3}, Vec3(1.0f), {}},
                   RectLight{{-1, 4, -1}, {2, 0, 0}, {0, 0, 2}, Vec3(0.5f), {}, true}};
   PrimitiveSet prims;
@@ -85,6 +94,12 @@ Scene small_scene() {
   assets->meshes.push_back(std::move(geometry));
   // Glass (material 2): shadow rays pass through it with the any-hit visitor.
   prims.instances.push_back(place_mesh(assets->meshes[0].bvh, *make_transform(Mat4(1.0f)), 0, 2));
+  // The same mesh again with the masked material: traversal tests its coverage at each crossing.
+  assets->add_mask(0, 4);
+  REQUIRE(assets->mask(0, 4));
+  prims.instances.push_back(place_mesh(assets->meshes[0].bvh,
+                                       *make_transform(compose_trs({0.1f, 0, 0}, {0, 0, 0}, {1, 1, 1})), 0, 4,
+                                       assets->mask(0, 4)));
   scene.assets = assets;
   for (ShapeKind k :
        {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
@@ -123,7 +138,8 @@ struct OneTile {
 }  // namespace
 
 TEST_CASE(
-    "tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps) allocate nothing per "
+    "tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps, alpha masks, "
+    "metallic-roughness) allocate nothing per "
     "ray",
     "[bvh][alloc]") {
   OneTile t{AntialiasSettings{}};
