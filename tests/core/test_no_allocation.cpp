@@ -98,8 +98,8 @@ Scene small_scene() {
   assets->add_mask(0, 4);
   REQUIRE(assets->mask(0, 4));
   prims.instances.push_back(place_mesh(assets->meshes[0].bvh,
-                                       *make_transform(compose_trs({0.1f, 0, 0}, {0, 0, 0}, {1, 1, 1})), 0, 4,
-                                       assets->mask(0, 4)));
+                                       *make_transform(compose_trs({1.5f, 1.5f, 0}, {0, 0, 0}, {0.25f, 0.25f, 0.25f})),
+                                       0, 4, assets->mask(0, 4)));
   scene.assets = assets;
   for (ShapeKind k :
        {ShapeKind::kSphere, ShapeKind::kCylinder, ShapeKind::kCone, ShapeKind::kCube, ShapeKind::kPlane}) {
@@ -148,13 +148,15 @@ TEST_CASE(
 
   const long before = g_allocations.load();
   Rng rng(3);
-  int hits = 0;
+  int hits = 0, masked = 0;
   for (int i = 0; i < 20000; ++i) {
     Ray r;
     r.origin = Vec3(0, 0, 8);
     r.direction = glm::normalize(Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, -1.0f));
     Hit h;
-    hits += scene.intersect(r, h);
+    const bool hit = scene.intersect(r, h);
+    hits += hit;
+    masked += hit && scene.bvh.is_instance(h.prim) && scene.bvh.instance(h.prim).cutout != nullptr;
     hits += scene.occluded(r);
   }
   t.render();
@@ -164,6 +166,7 @@ TEST_CASE(
     for (int x = 0; x < t.grid.width; ++x) sum += t.film.at(x, y).color;
 
   CHECK(hits > 1000);
+  CHECK(masked > 0);  // the alpha-masked instance was traced
   CHECK(counters[RayKind::kShadow] > 0);
   CHECK(counters[RayKind::kReflection] > 0);
   CHECK(counters[RayKind::kRefraction] > 0);
