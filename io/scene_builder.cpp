@@ -1,26 +1,16 @@
 #include "io/scene_builder.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
-#include <map>
 
 #include "core/thread_count.h"
 #include "io/gltf_loader.h"
 #include "io/json_reader.h"
+#include "io/model_library.h"
 #include "io/texture_library.h"
 
 namespace rt {
 namespace {
-
-// Half the float range: the difference of two such coordinates (a triangle's edge) is finite.
-constexpr float kMaxVertexCoordinate = std::numeric_limits<float>::max() / 2;
-
-std::string format_point(Vec3 p) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "[%g, %g, %g]", p.x, p.y, p.z);
-  return buf;
-}
 
 class Builder {
  public:
@@ -224,7 +214,7 @@ class Builder {
   // A glTF file's node tree, grafted under scene node `parent` (or its one named mesh, carried by
   // `parent` itself), with the file's animation tracks moved onto the grafted nodes.
   void add_model(const MeshReference& ref, int32_t parent, std::optional<uint32_t> material_override) {
-    const LoadedModel* loaded = load_model(ref);
+    const LoadedModel* loaded = models_.load(ref);
     if (!loaded) return;
     const ImportedModel& model = loaded->model;
     // The node's "material" replaces them all; "materials" in the mesh object replaces by name.
@@ -292,104 +282,6 @@ class Builder {
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
   }
 
-  struct LoadedPrimitive {
-    uint32_t geometry;  // index into assets_.meshes
-    uint32_t material;  // into assets_.materials
-    int file_material;  // the file's own index (-1: none), for overrides by name
-  };
-  struct LoadedModel {
-    ImportedModel model;                               // its nodes and tracks (meshes moved out)
-    std::vector<std::vector<LoadedPrimitive>> meshes;  // per glTF mesh
-  };
-
-  // Each file (and named mesh) is read once: its primitives become meshes with their own BVHs.
-  const LoadedModel* load_model(const MeshReference& ref) {
-    const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
-    if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
-    std::optional<LoadedModel>& slot = models_[key];
-    ImportError why;
-    auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, why);
-    if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
-    if (!model && why.unknown_mesh) {
-      error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
-                                       "), found \"" + *ref.mesh_name + "\"");
-      return nullptr;
-    }
-    if (!model) {
-      error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
-                                       (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") + ": " +
-                                       why.message);
-      return nullptr;
-    }
-    for (const std::string& w : model->warnings) warning(ref.pointer, "\"" + ref.file + "\": " + w);
-    LoadedModel loaded;
-    const auto first_material = static_cast<uint32_t>(assets_.materials.size());
-    add_model_materials(*model, ref.pointer);
-    loaded.meshes.resize(model->meshes.size());
-    for (size_t m = 0; m < model->meshes.size(); ++m) {
-      for (ImportedPrimitive& p : model->meshes[m]) {
-        if (!add_geometry(std::move(p.mesh), ref)) return nullptr;
-        const uint32_t material =
-            p.material >= 0 ? first_material + static_cast<uint32_t>(p.material) : default_material();
-        loaded.meshes[m].push_back(
-            LoadedPrimitive{static_cast<uint32_t>(assets_.meshes.size() - 1), material, p.material});
-      }
-    }
-    model->meshes.clear();
-    loaded.model = std::move(*model);
-    slot = std::move(loaded);
-    return &*slot;
-  }
-
-  // The mesh in its object space with its own BVH (counted against the triangle limit once,
-  // however often it is placed: instances share it).
-  bool add_geometry(TriangleMesh mesh, const MeshReference& ref) {
-    triangles_ += mesh.triangle_count();
-    if (triangles_ > options_.limits.triangles) {
-      limit_error(ref.pointer, "expected at most " + std::to_string(options_.limits.triangles) +
-                                   " triangles in a scene's meshes, found more");
-      return false;
-    }
-    for (const Vec3& v : mesh.positions) {
-      if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
-        error(ref.pointer, "expected \"" + ref.file +
-                               "\" within +-1.7e38 (half the single-precision range, so that "
-                               "edges stay finite), found a vertex at " +
-                               format_point(v));
-        return false;
-      }
-    }
-    MeshGeometry g;
-    g.mesh = std::move(mesh);
-    if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
-    assets_.meshes.push_back(std::move(g));
-    return true;
-  }
-
-  // The model's materials, their texture slots moved to where its textures land in the scene.
-  void add_model_materials(ImportedModel& model, const std::string& pointer) {
-    const auto first_texture = static_cast<uint32_t>(assets_.textures.size());
-    for (Texture& t : model.textures) textures_.add(std::move(t));
-    if (!textures_.within_budget())
-      limit_error(pointer, "expected at most " + std::to_string(options_.limits.scene_texels) +
-                               " texels in all the scene's textures together, found more");
-    model.textures.clear();
-    for (Material m : model.materials) {
-      for (TextureSlot* slot : m.texture_slots())
-        if (slot->present()) slot->texture += first_texture;
-      assets_.materials.push_back(m);
-    }
-  }
-
-  // Our Material defaults stand in for glTF's default material (which a Phong model can't match).
-  uint32_t default_material() {
-    if (!default_material_) {
-      default_material_ = static_cast<uint32_t>(assets_.materials.size());
-      assets_.materials.push_back(Material{});
-    }
-    return *default_material_;
-  }
-
   void limit_error(const std::string& pointer, const std::string& message) {
     over_limit_ = true;
     error(pointer, message + " (a limit that keeps memory bounded; see README, \"Limits\")");
@@ -421,11 +313,16 @@ class Builder {
   std::vector<Track> tracks_;
   std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
   std::vector<LightPlacement> file_lights_;
-  std::map<std::string, std::optional<LoadedModel>> models_;  // empty: the file failed
-  std::optional<uint32_t> default_material_;
   std::vector<std::string> files_;
+  ModelLibrary models_{assets_,
+                       textures_,
+                       options_,
+                       bvh_options_,
+                       files_,
+                       ProblemSink{[this](const std::string& p, std::string m) { error(p, std::move(m)); },
+                                   [this](const std::string& p, std::string m) { warning(p, std::move(m)); },
+                                   [this](const std::string& p, std::string m) { limit_error(p, m); }}};
   uint64_t instances_ = 0;
-  uint64_t triangles_ = 0;
   bool over_limit_ = false;
 };
 
