@@ -5,28 +5,10 @@
 #include <tiny_gltf.h>
 
 #include "io/gltf_images.h"
+#include "io/gltf_values.h"
 
 namespace rt {
 namespace {
-
-std::optional<float> number(const tinygltf::Value& object, const char* key) {
-  if (!object.Has(key) || !object.Get(key).IsNumber()) return std::nullopt;
-  const double v = object.Get(key).GetNumberAsDouble();
-  return std::isfinite(v) ? std::optional<float>(static_cast<float>(v)) : std::nullopt;
-}
-
-// `count` finite numbers, or nullopt.
-std::optional<std::vector<float>> numbers(const tinygltf::Value& object, const char* key, int count) {
-  if (!object.Has(key)) return std::nullopt;
-  const tinygltf::Value& v = object.Get(key);
-  if (!v.IsArray() || v.ArrayLen() != static_cast<size_t>(count)) return std::nullopt;
-  std::vector<float> out;
-  for (int i = 0; i < count; ++i) {
-    if (!v.Get(i).IsNumber() || !std::isfinite(v.Get(i).GetNumberAsDouble())) return std::nullopt;
-    out.push_back(static_cast<float>(v.Get(i).GetNumberAsDouble()));
-  }
-  return out;
-}
 
 // Blender writes booleans of custom properties as 0 or 1.
 bool flag(const tinygltf::Value& object, const char* key) {
@@ -41,9 +23,9 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
                                                 std::vector<std::string>& warnings) {
   if (!extras.IsObject() || !extras.Has("rtcli_area_light")) return std::nullopt;
   const tinygltf::Value& a = extras.Get("rtcli_area_light");
-  const auto size = a.IsObject() ? numbers(a, "size", 2) : std::nullopt;
-  const auto power = a.IsObject() ? number(a, "power") : std::nullopt;
-  const auto colour = a.IsObject() ? numbers(a, "color", 3) : std::nullopt;
+  const auto size = gltf_numbers(a, "size", 2);
+  const auto power = gltf_number(a, "power");
+  const auto colour = gltf_numbers(a, "color", 3);
   if (!size || !power || !((*size)[0] > 0.0f) || !((*size)[1] > 0.0f) || *power < 0.0f) {
     warnings.push_back(where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
     return std::nullopt;
@@ -75,8 +57,8 @@ void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, 
     return;
   }
   material.bump.height = images.file_slot(b.Get("image").Get<std::string>(), where + " rtcli_bump");
-  material.bump.strength = number(b, "strength").value_or(1.0f);
-  material.bump.epsilon = std::max(0.0f, number(b, "epsilon").value_or(0.0f));
+  material.bump.strength = gltf_number(b, "strength").value_or(1.0f);
+  material.bump.epsilon = std::max(0.0f, gltf_number(b, "epsilon").value_or(0.0f));
   // Blender's exporter wrote the Bump node's height image as a normal map: not one.
   if (material.bump.height.present()) material.normal_map = NormalMap{};
 }

@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include "io/gltf_values.h"
 #include "io/input_file.h"
 
 namespace rt {
@@ -77,21 +78,13 @@ void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {
 void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapping, const std::string& where) {
   const auto pair = [&](const char* key, Vec2& out) {
     if (!t.Has(key)) return;
-    const tinygltf::Value& v = t.Get(key);
-    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) {
-      out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
-      return;
-    }
-    const Vec2 value(static_cast<float>(v.Get(0).GetNumberAsDouble()),
-                     static_cast<float>(v.Get(1).GetNumberAsDouble()));
-    if (is_finite(Vec3(value, 0.0f))) out = value;
+    const auto v = gltf_numbers(t, key, 2);
+    if (v) out = Vec2((*v)[0], (*v)[1]);
+    else out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
   };
   pair("offset", mapping.offset);
   pair("scale", mapping.scale);
-  if (t.Has("rotation") && t.Get("rotation").IsNumber()) {
-    const double radians = t.Get("rotation").GetNumberAsDouble();
-    if (std::isfinite(radians)) mapping.rotation_degrees = static_cast<float>(radians * 180.0 / 3.14159265358979323846);
-  }
+  if (const auto radians = gltf_number(t, "rotation")) mapping.rotation_degrees = *radians * (180.0f / kPi);
 }
 
 uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, const std::string& where) {

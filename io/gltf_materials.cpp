@@ -5,28 +5,10 @@
 #include <tiny_gltf.h>
 
 #include "io/gltf_images.h"
+#include "io/gltf_values.h"
 
 namespace rt {
 namespace {
-
-// A number in an extension object, or `fallback` when it is absent or not a finite number.
-float number(const tinygltf::Value& object, const char* key, float fallback) {
-  if (!object.Has(key) || !object.Get(key).IsNumber()) return fallback;
-  const double v = object.Get(key).GetNumberAsDouble();
-  return std::isfinite(v) ? static_cast<float>(v) : fallback;
-}
-
-Vec3 colour(const tinygltf::Value& object, const char* key, Vec3 fallback) {
-  if (!object.Has(key)) return fallback;
-  const tinygltf::Value& v = object.Get(key);
-  if (!v.IsArray() || v.ArrayLen() < 3) return fallback;
-  Vec3 out;
-  for (int c = 0; c < 3; ++c) {
-    if (!v.Get(c).IsNumber()) return fallback;
-    out[c] = static_cast<float>(v.Get(c).GetNumberAsDouble());
-  }
-  return is_finite(out) ? out : fallback;
-}
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   const auto it = extensions.find(name);
@@ -86,7 +68,7 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
     out.emission = Vec3(static_cast<float>(m.emissiveFactor[0]), static_cast<float>(m.emissiveFactor[1]),
                         static_cast<float>(m.emissiveFactor[2]));
   if (const auto* strength = extension(m.extensions, "KHR_materials_emissive_strength"))
-    out.emission *= std::max(0.0f, number(*strength, "emissiveStrength", 1.0f));
+    out.emission *= std::max(0.0f, gltf_number(*strength, "emissiveStrength").value_or(1.0f));
   out.emission = glm::max(out.emission, Vec3(0.0f));
   if (!is_finite(out.emission)) out.emission = Vec3(0.0f);
   const auto& emissive = m.emissiveTexture;
@@ -97,18 +79,20 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   // Refraction: transmission with its index, and the volume's absorption inside.
   bool ior_given = false;
   if (const auto* ior = extension(m.extensions, "KHR_materials_ior")) {
-    const float value = number(*ior, "ior", 1.5f);
+    const float value = gltf_number(*ior, "ior").value_or(1.5f);
     out.ior = value >= 1.0f ? value : 1.5f;  // the extension allows 0 (a special case we do not model)
     ior_given = true;
   }
   if (const auto* t = extension(m.extensions, "KHR_materials_transmission")) {
-    out.transmission = Vec3(std::clamp(number(*t, "transmissionFactor", 0.0f), 0.0f, 1.0f));
+    out.transmission = Vec3(std::clamp(gltf_number(*t, "transmissionFactor").value_or(0.0f), 0.0f, 1.0f));
     if (t->Has("transmissionTexture"))
       warnings.push_back(where + ": KHR_materials_transmission's transmissionTexture is not used; the factor is");
   }
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
-    const float distance = number(*v, "attenuationDistance", kInfinity);
-    const Vec3 c = glm::clamp(colour(*v, "attenuationColor", Vec3(1.0f)), Vec3(1e-6f), Vec3(1.0f));
+    const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);
+    const auto given = gltf_numbers(*v, "attenuationColor", 3);
+    const Vec3 colour = given ? Vec3((*given)[0], (*given)[1], (*given)[2]) : Vec3(1.0f);
+    const Vec3 c = glm::clamp(colour, Vec3(1e-6f), Vec3(1.0f));
     if (distance > 0.0f && std::isfinite(distance)) out.absorption = -glm::log(c) / distance;
   }
 

@@ -222,11 +222,7 @@ class Builder {
       const auto& names = model.material_names;
       if (std::find(names.begin(), names.end(), o.file_material) != names.end()) continue;
       std::string message = "expected the name of a material in \"" + ref.file + "\"";
-      if (!names.empty() && names.size() <= 12) {
-        message += " (";
-        for (size_t i = 0; i < names.size(); ++i) message += (i ? ", \"" : "\"") + names[i] + "\"";
-        message += ")";
-      }
+      if (!names.empty() && names.size() <= 12) message += " (" + join_quoted(names) + ")";
       message += ", found \"" + o.file_material + "\"";
       if (const auto near = closest_match(o.file_material, names)) message += " (did you mean \"" + *near + "\"?)";
       error(o.pointer, message);

@@ -70,14 +70,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   // The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
   Vec3 kd = m.kd * Vec3(si.colour);
   if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, -s.wo, cone_width, detail);
-  s.diffuse = kd * (Vec3(1.0f) - m.transmission);
-  s.specular = m.ks;
-  if (detail.textures && m.specular_texture.present())
-    s.specular *= sample_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
-  s.shininess = m.shininess;
-  s.reflectivity = m.reflectivity;
-  s.glossy = m.glossy;
-  if (m.pbr.enabled) {
+  if (m.pbr.enabled) {  // glTF's model, converted here so that its texture can vary it
     float metallic = m.pbr.metallic, roughness = m.pbr.roughness;
     if (detail.textures && m.pbr.texture.present()) {
       const Vec3 t = sample_at(m.pbr.texture, si, textures, -s.wo, cone_width, detail);
@@ -90,6 +83,14 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     s.shininess = p.shininess;
     s.reflectivity = p.reflectivity;
     s.glossy = p.glossy;
+  } else {
+    s.diffuse = kd * (Vec3(1.0f) - m.transmission);
+    s.specular = m.ks;
+    if (detail.textures && m.specular_texture.present())
+      s.specular *= sample_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
+    s.shininess = m.shininess;
+    s.reflectivity = m.reflectivity;
+    s.glossy = m.glossy;
   }
   s.transmission = m.transmission;
   s.ior = m.ior;
