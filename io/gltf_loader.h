@@ -20,7 +20,7 @@
 namespace rt {
 
 struct ImportedPrimitive {
-  TriangleMesh mesh;  // mesh.material unused here: see `material`
+  TriangleMesh mesh;  // in the mesh's object space
   int material = -1;  // index into ImportedModel::materials, -1 = none
 };
 
