@@ -89,7 +89,49 @@ Quat between(const RotationKey& a, const RotationKey& b, float s) {
   return axis_angle_to_quat(a.axis, a.degrees + s * (b.degrees - a.degrees));
 }
 
-std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, const std::string& ptr, float fps) {
+// Splits every linear rotation step wider than 90 written degrees into equal steps of at most
+// 90, counting the keys first: the track takes at most `keys_left` keys, else nothing is made.
+bool split_wide_rotations(const JsonReader& r, const std::string& ptr, const std::vector<RotationKey>& rotations,
+                          uint64_t keys_left, uint64_t keys_limit, Track& track) {
+  const std::vector<float>& times = track.keys->times;
+  std::vector<double> steps(rotations.size(), 1.0);
+  double total = 1.0;
+  for (size_t k = 1; k < rotations.size(); ++k) {
+    steps[k] = std::max(1.0, std::ceil(static_cast<double>(written_step(rotations[k - 1], rotations[k])) /
+                                       static_cast<double>(kMaxWrittenStep)));
+    total += steps[k];
+  }
+  if (total > static_cast<double>(keys_left)) {
+    r.error(ptr + "/keys", "expected at most " + std::to_string(keys_limit) +
+                               " animation keys in a scene, counting the steps of at most 90 degrees that wide "
+                               "rotations are split into, found " +
+                               (total > 1e15 ? std::string("more than 10^15") : std::to_string(static_cast<uint64_t>(total))) +
+                               " in this track" +
+                               (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it" : "") +
+                               " (a limit that keeps memory bounded; see README, \"Limits\")");
+    return false;
+  }
+  Keyframes dense;
+  dense.times.reserve(static_cast<size_t>(total));
+  dense.values.reserve(static_cast<size_t>(total));
+  dense.times.push_back(times[0]);
+  dense.values.push_back(track.keys->values[0]);
+  for (size_t k = 1; k < rotations.size(); ++k) {
+    const auto n = static_cast<int64_t>(steps[k]);
+    for (int64_t s = 1; s < n; ++s) {
+      const float f = static_cast<float>(static_cast<double>(s) / steps[k]);
+      dense.times.push_back(glm::mix(times[k - 1], times[k], f));
+      dense.values.push_back(as_vec4(between(rotations[k - 1], rotations[k], f)));
+    }
+    dense.times.push_back(times[k]);
+    dense.values.push_back(track.keys->values[k]);
+  }
+  track.keys = std::make_shared<const Keyframes>(std::move(dense));
+  return true;
+}
+
+std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, const std::string& ptr, float fps,
+                                            uint64_t keys_left, uint64_t keys_limit) {
   ObjectReader o(r, v, ptr);
   TrackDescription t;
   t.pointer = ptr;
@@ -111,6 +153,7 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
   t.track.part = static_cast<TrsPart>(*part);
   t.track.interpolation = *interpolation == 1 ? Interpolation::kStep : Interpolation::kLinear;
   std::vector<RotationKey> rotations;
+  Keyframes keyframes;
   bool ok = true;
   for (size_t k = 0; k < keys->size(); ++k) {
     const std::string kp = pointer_child(keys_ptr, k);
@@ -123,9 +166,9 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
       continue;
     }
     const float seconds = static_cast<float>(*frame / fps);
-    if (!t.track.times.empty() && !(seconds > t.track.times.back())) {
+    if (!keyframes.times.empty() && !(seconds > keyframes.times.back())) {
       r.error(key.child("frame"), "expected frames in increasing order, found " + describe((*keys)[k]["frame"]) +
-                                      " after a key at frame " + std::to_string(t.track.times.back() * fps));
+                                      " after a key at frame " + std::to_string(keyframes.times.back() * fps));
       ok = false;
       continue;
     }
@@ -145,34 +188,28 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
       ok = false;
       continue;
     }
-    t.track.times.push_back(seconds);
-    t.track.values.push_back(*out);
+    keyframes.times.push_back(seconds);
+    keyframes.values.push_back(*out);
   }
   if (!ok) return std::nullopt;
+  t.track.keys = std::make_shared<const Keyframes>(std::move(keyframes));
   // Degrees mean what they say: a wide linear step becomes several steps of at most 90 degrees.
-  if (t.track.part == TrsPart::kRotation && t.track.interpolation == Interpolation::kLinear) {
-    Track dense = t.track;
-    dense.times = {t.track.times[0]};
-    dense.values = {t.track.values[0]};
-    for (size_t k = 1; k < rotations.size(); ++k) {
-      const int steps = std::min(
-          1 << 16, static_cast<int>(std::ceil(written_step(rotations[k - 1], rotations[k]) / kMaxWrittenStep)));
-      for (int s = 1; s < steps; ++s) {
-        const float f = static_cast<float>(s) / static_cast<float>(steps);
-        dense.times.push_back(glm::mix(t.track.times[k - 1], t.track.times[k], f));
-        dense.values.push_back(as_vec4(between(rotations[k - 1], rotations[k], f)));
-      }
-      dense.times.push_back(t.track.times[k]);
-      dense.values.push_back(t.track.values[k]);
-    }
-    t.track = std::move(dense);
+  if (t.track.part == TrsPart::kRotation && t.track.interpolation == Interpolation::kLinear &&
+      !split_wide_rotations(r, ptr, rotations, keys_left, keys_limit, t.track))
+    return std::nullopt;
+  if (t.track.keys->times.size() > keys_left) {
+    r.error(ptr + "/keys", "expected at most " + std::to_string(keys_limit) + " animation keys in a scene, found " +
+                               std::to_string(keys_limit - keys_left + t.track.keys->times.size()) +
+                               " (a limit that keeps memory bounded; see README, \"Limits\")");
+    return std::nullopt;
   }
   return t;
 }
 
 }  // namespace
 
-std::optional<AnimationDescription> parse_animation(const JsonReader& r, const Json& value, const std::string& ptr) {
+std::optional<AnimationDescription> parse_animation(const JsonReader& r, const Json& value, const std::string& ptr,
+                                                   uint64_t max_keys) {
   ObjectReader o(r, value, ptr);
   if (!o.valid()) {
     r.expected(ptr, "an object with fps, frames and tracks", value);
@@ -201,8 +238,13 @@ std::optional<AnimationDescription> parse_animation(const JsonReader& r, const J
     if (!tracks->is_array()) {
       r.expected(tp, "an array of tracks", *tracks);
     } else {
-      for (size_t i = 0; i < tracks->size(); ++i)
-        if (auto t = parse_track(r, (*tracks)[i], pointer_child(tp, i), a.fps)) a.tracks.push_back(std::move(*t));
+      uint64_t keys = 0;
+      for (size_t i = 0; i < tracks->size(); ++i) {
+        auto t = parse_track(r, (*tracks)[i], pointer_child(tp, i), a.fps, max_keys - keys, max_keys);
+        if (!t) continue;
+        keys += t->track.keys->times.size();
+        a.tracks.push_back(std::move(*t));
+      }
     }
   }
   o.finish();

@@ -251,6 +251,11 @@ bool read_accessor(const tinygltf::Model& model, int index, int components, uint
 
 }  // namespace
 
+uint64_t accessor_count(const tinygltf::Model& model, int index) {
+  if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) return 0;
+  return model.accessors[static_cast<size_t>(index)].count;
+}
+
 bool check_buffer_views(const tinygltf::Model& model, std::string& error) {
   for (size_t i = 0; i < model.bufferViews.size(); ++i)
     if (!checked_view(model, static_cast<int>(i), error)) return false;

@@ -20,6 +20,10 @@ namespace rt {
 // loading; the readers below check again what they read, so they are safe on their own too.
 bool check_buffer_views(const tinygltf::Model& model, std::string& error);
 
+// The count accessor `index` claims (0 if there is no such accessor), for budgets checked before
+// anything is read; the readers below check it against the data.
+uint64_t accessor_count(const tinygltf::Model& model, int index);
+
 // Accessor `index` as count x `components` floats, count at most max_elements.
 bool read_float_accessor(const tinygltf::Model& model, int index, int components, uint64_t max_elements,
                          std::vector<float>& out, std::string& error);

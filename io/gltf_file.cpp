@@ -1,7 +1,5 @@
 #include "io/gltf_file.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cstring>
 
@@ -15,17 +13,22 @@
 namespace rt {
 namespace {
 
-// What the file-system callbacks share: the budget left for external buffers, and the files read.
+// What the file-system callbacks share: the model's folder, the budget left for external
+// buffers, and the files read.
 struct FileAccess {
+  std::string base_dir;
+  bool outside_files = false;  // LoadLimits::outside_files
   uint64_t budget = 0;
   std::vector<std::string> files;
 };
 
-bool file_exists(const std::string& path, void*) {
-  // Anything that is there counts, so that read_file() reports what is wrong with it (a FIFO, a
-  // link loop) instead of tinygltf's "file not found".
-  struct stat st {};
-  return ::lstat(path.c_str(), &st) == 0;
+// tinygltf looks for a buffer in the model's folder, then in the current one. Every path in the
+// model's folder "exists", so that read_file() says what is wrong with it (missing, a FIFO, a
+// link loop, outside the folder) instead of tinygltf's "file not found"; the current folder is
+// never searched.
+bool file_exists(const std::string& path, void* user) {
+  const std::string& base = static_cast<FileAccess*>(user)->base_dir;
+  return path.size() > base.size() && path.compare(0, base.size(), base) == 0;
 }
 
 std::string expand_path(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
@@ -33,6 +36,10 @@ std::string expand_path(const std::string& path, void*) { return path; }  // no 
 bool read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   auto* access = static_cast<FileAccess*>(user);
   std::string error;
+  if (!access->outside_files && !is_inside_folder(path, access->base_dir)) {
+    if (err) *err = outside_folder_message(path.substr(std::min(path.size(), access->base_dir.size() + 1)), access->base_dir);
+    return false;
+  }
   auto bytes = read_input_bytes(path, access->budget, error);
   if (!bytes) {
     if (err) *err = error;
@@ -82,6 +89,12 @@ uint32_t read_u32(const unsigned char* p) {
 
 }  // namespace
 
+std::string outside_folder_message(const std::string& uri, const std::string& base_dir) {
+  return "\"" + uri + "\" is outside the model's folder \"" + base_dir +
+         "\": a glTF file's images and buffers are read from its own folder and below, so that a downloaded "
+         "model cannot show other files (--allow-outside-files reads it)";
+}
+
 const std::vector<std::string>& supported_gltf_extensions() {
   // Quantized attributes are read like any other component type (io/gltf_accessor.cpp); lights
   // come from io/gltf_lights.h, instancing from io/gltf_loader.cpp, materials from io/gltf_materials.h.
@@ -124,7 +137,8 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
     return result;
   }
 
-  FileAccess access{limits.gltf_total_bytes - std::min<uint64_t>(limits.gltf_total_bytes, bytes.size()), {}};
+  FileAccess access{base_dir, limits.outside_files,
+                    limits.gltf_total_bytes - std::min<uint64_t>(limits.gltf_total_bytes, bytes.size()), {}};
   auto model = std::make_shared<tinygltf::Model>();
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});

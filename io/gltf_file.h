@@ -28,6 +28,9 @@ struct GltfFile {
 GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& base_dir, const LoadLimits& limits,
                     std::string& error);
 
+// The error for an image or buffer URI that leaves the model's folder (LoadLimits::outside_files).
+std::string outside_folder_message(const std::string& uri, const std::string& base_dir);
+
 // Extensions whose presence in extensionsRequired rtcli accepts.
 const std::vector<std::string>& supported_gltf_extensions();
 

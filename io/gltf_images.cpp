@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include "io/gltf_file.h"
 #include "io/gltf_values.h"
 #include "io/input_file.h"
 
@@ -28,12 +29,8 @@ std::string percent_decoded(const std::string& uri) {
 }
 
 ImageDecoder::ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits,
-                           ImportedModel& out)
-    : model_(model),
-      base_dir_(base_dir),
-      limits_(limits),
-      out_(out),
-      decoded_(model.images.size(), {kNoTexture - 1, kNoTexture - 1, kNoTexture - 1}) {}
+                           LimitUsage& usage, ImportedModel& out)
+    : model_(model), base_dir_(base_dir), limits_(limits), usage_(usage), out_(out) {}
 
 TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where) {
   TextureSlot slot;
@@ -87,61 +84,83 @@ void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapp
   if (const auto radians = gltf_number(t, "rotation")) mapping.rotation_degrees = *radians * (180.0f / kPi);
 }
 
+template <class Decode>
+uint32_t ImageDecoder::once(const std::string& source, TextureEncoding encoding, const Decode& decode) {
+  if (!failure_.empty()) return kNoTexture;
+  const auto key = std::make_pair(source, encoding);
+  if (const auto it = decoded_.find(key); it != decoded_.end()) return it->second;
+  const uint32_t texture = decode();
+  decoded_.emplace(key, texture);
+  return texture;
+}
+
 uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, const std::string& where) {
-  uint32_t& done = decoded_[image_index][static_cast<size_t>(encoding)];
-  if (done != kNoTexture - 1) return done;
   const tinygltf::Image& image = model_.images[image_index];
-  std::string name = "image " + to_string(image_index);
-  std::vector<unsigned char> bytes = image.image;
-  if (bytes.empty() && image.bufferView >= 0 && static_cast<size_t>(image.bufferView) < model_.bufferViews.size()) {
-    // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
-    const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(image.bufferView)];
-    if (view.buffer >= 0 && static_cast<size_t>(view.buffer) < model_.buffers.size()) {
-      const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
-      if (view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset)
-        bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
-                     data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
-    }
-    if (bytes.empty()) {
-      out_.warnings.push_back(where + ": image " + to_string(image_index) + "'s buffer view holds no image; ignored");
-      done = kNoTexture;
-      return done;
-    }
+  const std::string name = "image " + to_string(image_index);
+  if (image.bufferView >= 0) {
+    return once("view " + to_string(image.bufferView), encoding, [&] {
+      // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
+      std::vector<unsigned char> bytes;
+      if (static_cast<size_t>(image.bufferView) < model_.bufferViews.size()) {
+        const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(image.bufferView)];
+        if (view.buffer >= 0 && static_cast<size_t>(view.buffer) < model_.buffers.size()) {
+          const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
+          if (view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset)
+            bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
+                         data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
+        }
+      }
+      if (bytes.empty()) {
+        out_.warnings.push_back(where + ": " + name + "'s buffer view holds no image; ignored");
+        return kNoTexture;
+      }
+      return decode_bytes(bytes, name + " (buffer view " + to_string(image.bufferView) + ")", encoding, where);
+    });
   }
-  done = decode_bytes(std::move(bytes), image.uri, encoding, name, where);
-  return done;
+  if (!image.image.empty())  // a data URI's bytes
+    return once(name, encoding, [&] { return decode_bytes(image.image, name, encoding, where); });
+  if (!image.uri.empty()) return decode_file(image.uri, encoding, where);
+  out_.warnings.push_back(where + ": " + name + " has no data; ignored");
+  return kNoTexture;
 }
 
 TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where) {
   TextureSlot slot;
-  const auto found = files_.find(uri);
-  if (found != files_.end()) {
-    slot.texture = found->second;
-    return slot;
-  }
-  std::string name = "\"" + uri + "\"";
-  slot.texture = files_[uri] = decode_bytes({}, uri, TextureEncoding::kLinear, name, where);
+  slot.texture = decode_file(uri, TextureEncoding::kLinear, where);
   return slot;
 }
 
-// The image's own bytes, or (when empty) the file its URI names beside the model.
-uint32_t ImageDecoder::decode_bytes(std::vector<unsigned char> bytes, const std::string& uri, TextureEncoding encoding,
-                                    std::string& name, const std::string& where) {
-  std::string error;
-  if (bytes.empty() && !uri.empty()) {
-    const std::string path = resolve_path(base_dir_, percent_decoded(uri));
-    name = "\"" + path + "\"";
-    auto file = read_input_bytes(path, limits_.gltf_total_bytes, error);
+// The file a URI names, in the model's folder or below (links resolved) unless the caller
+// allows more: a downloaded model must not show the user's other files in its render.
+uint32_t ImageDecoder::decode_file(const std::string& uri, TextureEncoding encoding, const std::string& where) {
+  const std::string path = resolve_path(base_dir_, percent_decoded(uri));
+  return once("file " + path, encoding, [&] {
+    const std::string name = "\"" + path + "\"";
+    if (!limits_.outside_files && !is_inside_folder(path, base_dir_)) {
+      failure_ = where + ": " + outside_folder_message(uri, base_dir_);
+      return kNoTexture;
+    }
+    std::string error;
+    auto file = read_input_bytes(path, kMaxTextureFileBytes, error);
     if (!file) {
       out_.warnings.push_back(where + ": cannot read " + name + " (" + error + "); ignored");
       return kNoTexture;
     }
     if (std::find(out_.files.begin(), out_.files.end(), path) == out_.files.end()) out_.files.push_back(path);
-    bytes = std::move(*file);
-  }
-  auto texture = decode_texture(bytes, name, encoding, limits_.texture_texels, error);
+    return decode_bytes(*file, name, encoding, where);
+  });
+}
+
+uint32_t ImageDecoder::decode_bytes(const std::vector<unsigned char>& bytes, const std::string& name,
+                                    TextureEncoding encoding, const std::string& where) {
+  TextureError error;
+  auto texture = decode_texture(bytes, name, encoding, limits_, usage_, error);
   if (!texture) {
-    out_.warnings.push_back(where + ": " + error + "; ignored");
+    if (error.over_budget) {
+      failure_ = where + ": " + error.message;
+      over_limit_ = true;
+    }
+    else out_.warnings.push_back(where + ": " + error.message + "; ignored");
     return kNoTexture;
   }
   out_.textures.push_back(std::move(*texture));

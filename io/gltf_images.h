@@ -1,10 +1,13 @@
 // The images of a glTF file's materials, each decoded once per encoding into
-// ImportedModel::textures: from a data URI, a buffer view or a file beside the model
-// (percent-encoded URIs, "%20" a space). An image that cannot be used is a warning and leaves
-// the slot empty: the model still renders.
+// ImportedModel::textures: from a data URI, a buffer view or a file in the model's folder
+// (percent-encoded URIs, "%20" a space). Images with the same source (several images on one
+// buffer view or file) share one texture. Each image's size is read from its header and
+// counted against the scene's texel budget before it is decoded. An image that cannot be used is
+// a warning and leaves the slot empty: the model still renders. Two things stop the import
+// instead (failure()): an image that does not fit in the budget, and a URI that leaves the
+// model's folder (unless LoadLimits::outside_files).
 #pragma once
 
-#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,7 +34,8 @@ struct GltfTextureRef {
 
 class ImageDecoder {
  public:
-  ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits, ImportedModel& out);
+  ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits, LimitUsage& usage,
+               ImportedModel& out);
 
   // The slot for a material's texture: its image decoded as `encoding` (colour is sRGB, normal
   // and metallic-roughness maps are data, alpha masks read the alpha channel), its UV set, its
@@ -40,20 +44,31 @@ class ImageDecoder {
   // A data slot for an image file beside the glTF file (rtcli's extras), decoded once.
   TextureSlot file_slot(const std::string& uri, const std::string& where);
 
+  // Why the import must stop, or empty; whether that is the scene's texel budget.
+  const std::string& failure() const { return failure_; }
+  bool failure_is_over_limit() const { return over_limit_; }
+
  private:
   uint32_t decode(size_t image_index, TextureEncoding encoding, const std::string& where);
-  uint32_t decode_bytes(std::vector<unsigned char> bytes, const std::string& uri, TextureEncoding encoding,
-                        std::string& name, const std::string& where);
+  uint32_t decode_file(const std::string& uri, TextureEncoding encoding, const std::string& where);
+  uint32_t decode_bytes(const std::vector<unsigned char>& bytes, const std::string& name, TextureEncoding encoding,
+                        const std::string& where);
+  // The texture already decoded from `source` as `encoding`, or decoded now by `decode`.
+  template <class Decode>
+  uint32_t once(const std::string& source, TextureEncoding encoding, const Decode& decode);
   void read_sampler(int sampler, TextureMapping& mapping);
   void read_transform(const tinygltf::Value& transform, TextureMapping& mapping, const std::string& where);
 
   const tinygltf::Model& model_;
   const std::string& base_dir_;
   const LoadLimits& limits_;
+  LimitUsage& usage_;
   ImportedModel& out_;
-  // Per image and encoding: its texture, kNoTexture if unusable, kNoTexture - 1 if not tried.
-  std::vector<std::array<uint32_t, 3>> decoded_;
-  std::map<std::string, uint32_t> files_;  // file_slot's, by URI
+  // Per source ("view N", "file PATH", "image N" for a data URI) and encoding: its texture, or
+  // kNoTexture if unusable.
+  std::map<std::pair<std::string, TextureEncoding>, uint32_t> decoded_;
+  std::string failure_;
+  bool over_limit_ = false;
 };
 
 }  // namespace rt

@@ -38,8 +38,15 @@ std::vector<uint32_t> to_triangle_list(std::vector<uint32_t> v, int mode) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const LoadLimits& limits, ImportedModel& out, std::string& error)
-      : model_(model), limits_(limits), out_(out), error_(error), imported_(model.meshes.size(), false) {
+  Importer(const tinygltf::Model& model, const LoadLimits& limits, LimitUsage& usage, ImportedModel& out,
+           ImportError& error)
+      : model_(model),
+        limits_(limits),
+        usage_(usage),
+        out_(out),
+        import_error_(error),
+        error_(error.message),
+        imported_(model.meshes.size(), false) {
     out_.meshes.resize(model.meshes.size());
   }
 
@@ -74,6 +81,25 @@ class Importer {
     return false;
   }
 
+  // The primitive's vertices and triangles, from its accessors' counts, against what the scene
+  // has left: checked before anything is read, so that many primitives sharing one huge
+  // accessor stop at the first that does not fit.
+  bool reserve(uint64_t vertices, uint64_t triangles, const std::string& where) {
+    const auto over = [&](const char* what, uint64_t limit, uint64_t used, uint64_t wanted) {
+      import_error_.over_limit = true;
+      return fail(where + ": expected at most " + to_string(limit) + " " + what +
+                  " in a scene's meshes, found " + to_string(wanted) + " here" +
+                  (used ? " after " + to_string(used) + " in the meshes before it" : std::string()));
+    };
+    if (vertices > limits_.vertices || usage_.vertices > limits_.vertices - vertices)
+      return over("vertices", limits_.vertices, usage_.vertices, vertices);
+    if (triangles > limits_.triangles || usage_.triangles > limits_.triangles - triangles)
+      return over("triangles", limits_.triangles, usage_.triangles, triangles);
+    usage_.vertices += vertices;
+    usage_.triangles += triangles;
+    return true;
+  }
+
   bool import_primitive(const tinygltf::Primitive& prim, const std::string& where,
                         std::vector<ImportedPrimitive>& out) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
@@ -90,6 +116,11 @@ class Importer {
     ip.material = prim.material;
     if (prim.material >= static_cast<int>(model_.materials.size()))
       return fail(where + ": material " + to_string(prim.material) + " does not exist");
+    const uint64_t vertex_count = accessor_count(model_, pos_it->second);
+    const uint64_t index_count = prim.indices >= 0 ? accessor_count(model_, prim.indices) : vertex_count;
+    const uint64_t triangle_count =
+        mode == TINYGLTF_MODE_TRIANGLES ? index_count / 3 : (index_count >= 2 ? index_count - 2 : 0);
+    if (!reserve(vertex_count, triangle_count, where)) return false;
     std::vector<float> raw;
     if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, error_))
       return fail(where + " POSITION: " + error_);
@@ -172,7 +203,9 @@ class Importer {
 
   const tinygltf::Model& model_;
   const LoadLimits& limits_;
+  LimitUsage& usage_;
   ImportedModel& out_;
+  ImportError& import_error_;
   std::string& error_;
   std::vector<bool> imported_;
 };
@@ -261,7 +294,7 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
 
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
                                                const std::optional<std::string>& mesh_name, const LoadLimits& limits,
-                                               ImportError& import_error) {
+                                               LimitUsage& usage, ImportError& import_error) {
   std::string& error = import_error.message;
   GltfFile file = parse_gltf(bytes, base_dir, limits, error);
   ImportedModel out;
@@ -269,15 +302,20 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   out.warnings = std::move(file.warnings);
   if (!file.model) return std::nullopt;
   const tinygltf::Model& model = *file.model;
-  ImageDecoder images(model, base_dir, limits, out);
+  ImageDecoder images(model, base_dir, limits, usage, out);
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
     const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
     out.materials.push_back(import_material(m, images, where, out.warnings));
     apply_material_extras(m.extras, images, where, out.materials.back(), out.warnings);
     out.material_names.push_back(m.name);
+    if (!images.failure().empty()) {
+      import_error.over_limit = images.failure_is_over_limit();
+      error = images.failure();
+      return std::nullopt;
+    }
   }
-  Importer importer(model, limits, out, error);
+  Importer importer(model, limits, usage, out, import_error);
 
   if (mesh_name) {
     std::string names;
@@ -307,7 +345,7 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   std::vector<int32_t> node_map(model.nodes.size(), -1);
   if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, out, node_map, error))
     return std::nullopt;
-  if (!import_animations(model, node_map, limits, out, error)) return std::nullopt;
+  if (!import_animations(model, node_map, limits, usage, out, import_error)) return std::nullopt;
   return out;
 }
 
@@ -326,11 +364,11 @@ std::vector<ModelPlacement> placements(const ImportedModel& model) {
 }
 
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         const LoadLimits& limits, ImportError& error) {
+                                         const LoadLimits& limits, LimitUsage& usage, ImportError& error) {
   auto bytes = read_input_bytes(path, limits.gltf_total_bytes, error.message);
   if (!bytes) return std::nullopt;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, error);
+  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, usage, error);
   if (model) model->files.insert(model->files.begin(), path);
   return model;
 }

@@ -57,6 +57,7 @@ struct ImportedModel {
 struct ImportError {
   std::string message;        // completes "could not be loaded: ..." or "has no mesh named ..."
   bool unknown_mesh = false;  // the file loaded, but has no mesh of the requested name
+  bool over_limit = false;    // the file is fine, but the scene's limits have no room for it
 };
 
 // Every node with a mesh, at rest (the tracks not applied).
@@ -64,12 +65,20 @@ std::vector<ModelPlacement> placements(const ImportedModel& model);
 
 // With mesh_name: that mesh only, on one node with an identity transform. Without: every mesh the file's
 // default scene places, at its node transforms (or every mesh once if the file has no scene).
+// Vertices, triangles, texels and animation keys are checked against what `usage` says the scene
+// has left of `limits` before they are read or decoded, and added to it.
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         const LoadLimits& limits, ImportError& error);
+                                         const LoadLimits& limits, LimitUsage& usage, ImportError& error);
+// A model on its own: nothing else counts against the limits.
+inline std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
+                                                const LoadLimits& limits, ImportError& error) {
+  LimitUsage usage;
+  return import_gltf(path, mesh_name, limits, usage, error);
+}
 
 // The same from the file's bytes already in memory; external buffers resolve against base_dir.
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
                                                const std::optional<std::string>& mesh_name, const LoadLimits& limits,
-                                               ImportError& error);
+                                               LimitUsage& usage, ImportError& error);
 
 }  // namespace rt

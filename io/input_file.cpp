@@ -124,6 +124,20 @@ std::string format_bytes(uint64_t bytes) {
   return buf;
 }
 
+bool is_inside_folder(const std::string& path, const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path inner = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) return false;
+  fs::path outer = fs::weakly_canonical(fs::absolute(folder.empty() ? "." : folder, ec), ec);
+  if (ec) return false;
+  if (!outer.has_filename()) outer = outer.parent_path();  // "dir/" -> "dir"
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+    if (i == inner.end() || *i != *o) return false;
+  return i != inner.end();  // something below the folder, not the folder itself
+}
+
 std::string resolve_path(const std::string& folder, const std::string& file) {
   const std::filesystem::path p(file);
   return p.is_absolute() ? p.string() : (std::filesystem::path(folder) / p).lexically_normal().string();

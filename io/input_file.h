@@ -19,6 +19,10 @@ std::optional<std::vector<unsigned char>> read_input_bytes(const std::string& pa
 // A path as written in a scene file: relative paths resolve against the scene file's folder.
 std::string resolve_path(const std::string& folder, const std::string& file);
 
+// Whether `path` lies inside `folder` (at any depth), both resolved: symbolic links followed,
+// "." and ".." removed. A path that cannot be resolved is outside.
+bool is_inside_folder(const std::string& path, const std::string& folder);
+
 // "64 MiB", "1.5 GiB", "812 bytes": sizes in limit messages.
 std::string format_bytes(uint64_t bytes);
 

@@ -136,9 +136,18 @@ std::optional<double> read_number(const JsonReader& r, const Json& v, const std:
     r.expected(ptr, rule.describe(), v);
     return std::nullopt;
   }
-  // Non-integer values are stored as floats: one that overflows would become an infinity.
-  if (!rule.integer && !std::isfinite(static_cast<float>(v.get<double>()))) {
+  // Non-integer values are stored as floats: one that overflows would become an infinity, and
+  // the range is checked again on the value as stored (1e-300 is 0 in single precision).
+  const float stored = static_cast<float>(v.get<double>());
+  if (!rule.integer && !std::isfinite(stored)) {
     r.expected(ptr, "a number that fits in single precision (|x| < 3.4e38)", v);
+    return std::nullopt;
+  }
+  if (!rule.integer && !rule.accepts(stored)) {
+    r.expected(ptr,
+               rule.describe() + " in single precision, where it is stored (this one becomes " +
+                   format_number(static_cast<double>(stored)) + ")",
+               v);
     return std::nullopt;
   }
   return v.get<double>();

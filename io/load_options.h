@@ -17,12 +17,25 @@ struct LoadLimits {
   uint64_t scene_file_bytes = uint64_t{64} << 20;  // a JSON scene file
   uint64_t gltf_json_bytes = uint64_t{64} << 20;   // a .gltf file, or the JSON chunk of a .glb
   uint64_t gltf_total_bytes = uint64_t{1} << 30;   // a model's files together: .glb or .gltf plus its .bin files
-  uint64_t vertices = uint64_t{1} << 25;           // in one glTF primitive (33,554,432)
+  uint64_t vertices = uint64_t{1} << 25;           // in a scene's meshes, each stored mesh once (33,554,432)
   uint64_t triangles = uint64_t{1} << 25;          // in a scene's meshes, each stored mesh once
   uint64_t instances = uint64_t{1} << 20;          // analytic shapes plus placed mesh primitives
   uint64_t nodes = uint64_t{1} << 20;              // scene-file nodes, and glTF nodes per file
   uint64_t texture_texels = uint64_t{1} << 25;     // in one texture image (e.g. 8192 x 4096)
-  uint64_t scene_texels = uint64_t{1} << 27;       // in all of a scene's textures together
+  uint64_t scene_texels = uint64_t{1} << 27;       // in all of a scene's textures together, mip levels included
+  uint64_t animation_keys = uint64_t{1} << 20;     // in all of a scene's tracks, after splitting wide rotations
+  // A glTF file's image and buffer URIs may leave its folder (`--allow-outside-files`). A scene
+  // file's own paths are never restricted: the user wrote them.
+  bool outside_files = false;
+};
+
+// What a scene has taken of its limits so far, counted as it loads: a model, an image or a track
+// is checked against what is left before it is read, decoded or expanded.
+struct LimitUsage {
+  uint64_t texels = 0;  // mip levels included
+  uint64_t vertices = 0;
+  uint64_t triangles = 0;
+  uint64_t animation_keys = 0;  // a glTF sampler shared by several channels counts once
 };
 
 struct LoadOptions {

@@ -18,10 +18,12 @@ std::string format_point(Vec3 p) {
 }  // namespace
 
 ModelLibrary::ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options,
-                           const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink)
+                           LimitUsage& usage, const BvhBuildOptions& bvh_options, std::vector<std::string>& files,
+                           ProblemSink sink)
     : assets_(assets),
       textures_(textures),
       options_(options),
+      usage_(usage),
       bvh_options_(bvh_options),
       files_(files),
       sink_(std::move(sink)) {}
@@ -31,8 +33,12 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
   std::optional<LoadedModel>& slot = models_[key];
   ImportError why;
-  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, why);
+  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, usage_, why);
   if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
+  if (!model && why.over_limit) {
+    sink_.over_limit(ref.pointer + "/file", "\"" + ref.file + "\": " + why.message);
+    return nullptr;
+  }
   if (!model && why.unknown_mesh) {
     sink_.error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
                                            "), found \"" + *ref.mesh_name + "\"");
@@ -47,7 +53,7 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   for (const std::string& w : model->warnings) sink_.warning(ref.pointer, "\"" + ref.file + "\": " + w);
   LoadedModel loaded;
   const auto first_material = static_cast<uint32_t>(assets_.materials.size());
-  add_materials(*model, ref.pointer);
+  add_materials(*model);
   loaded.meshes.resize(model->meshes.size());
   for (size_t m = 0; m < model->meshes.size(); ++m) {
     for (ImportedPrimitive& p : model->meshes[m]) {
@@ -64,15 +70,9 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   return &*slot;
 }
 
-// The mesh in its object space with its own BVH (counted against the triangle limit once,
-// however often it is placed: instances share it).
+// The mesh in its object space with its own BVH (counted against the triangle limit once, at
+// import, however often it is placed: instances share it).
 bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
-  triangles_ += mesh.triangle_count();
-  if (triangles_ > options_.limits.triangles) {
-    sink_.over_limit(ref.pointer, "expected at most " + std::to_string(options_.limits.triangles) +
-                                      " triangles in a scene's meshes, found more");
-    return false;
-  }
   for (const Vec3& v : mesh.positions) {
     if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
       sink_.error(ref.pointer, "expected \"" + ref.file +
@@ -89,13 +89,11 @@ bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
   return true;
 }
 
-// The model's materials, their texture slots moved to where its textures land in the scene.
-void ModelLibrary::add_materials(ImportedModel& model, const std::string& pointer) {
+// The model's materials, their texture slots moved to where its textures land in the scene (the
+// import counted their texels).
+void ModelLibrary::add_materials(ImportedModel& model) {
   const auto first_texture = static_cast<uint32_t>(assets_.textures.size());
   for (Texture& t : model.textures) textures_.add(std::move(t));
-  if (!textures_.within_budget())
-    sink_.over_limit(pointer, "expected at most " + std::to_string(options_.limits.scene_texels) +
-                                  " texels in all the scene's textures together, found more");
   model.textures.clear();
   for (Material m : model.materials) {
     for (TextureSlot* slot : m.texture_slots())

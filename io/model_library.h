@@ -38,7 +38,7 @@ struct LoadedModel {
 
 class ModelLibrary {
  public:
-  ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options,
+  ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options, LimitUsage& usage,
                const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink);
 
   // The file (or its one named mesh) that `ref` names, loaded the first time; null if it cannot
@@ -47,18 +47,18 @@ class ModelLibrary {
 
  private:
   bool add_geometry(TriangleMesh mesh, const MeshReference& ref);
-  void add_materials(ImportedModel& model, const std::string& pointer);
+  void add_materials(ImportedModel& model);
   uint32_t default_material();
 
   SceneAssets& assets_;
   TextureLibrary& textures_;
   const LoadOptions& options_;
+  LimitUsage& usage_;  // the scene's, shared with the texture library
   const BvhBuildOptions& bvh_options_;
   std::vector<std::string>& files_;  // every file read (LoadedScene::inputs)
   ProblemSink sink_;
   std::map<std::string, std::optional<LoadedModel>> models_;  // by path and mesh name; empty: failed
   std::optional<uint32_t> default_material_;
-  uint64_t triangles_ = 0;
 };
 
 }  // namespace rt

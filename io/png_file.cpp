@@ -1,10 +1,11 @@
 #include "io/png_file.h"
 
-#include <stb_image.h>
-
+#include "core/render_settings.h"
 #include "io/atomic_file.h"
+#include "io/image_header.h"
 #include "io/input_file.h"
 #include "io/png_encoder.h"
+#include "io/png_jpeg_decoder.h"
 
 namespace rt {
 
@@ -12,15 +13,22 @@ std::optional<Rgb8Image> read_png(const std::string& path, std::string& error) {
   constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
   const auto bytes = read_input_bytes(path, kMaxFileBytes, error);
   if (!bytes) return std::nullopt;
-  int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load_from_memory(bytes->data(), static_cast<int>(bytes->size()), &w, &h, &channels, 3);
-  if (!data) {
-    error = std::string("cannot read image: ") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+  auto header = read_image_header(bytes->data(), bytes->size(), error);
+  if (header && header->format != ImageFormat::kPng) error = "expected a PNG image, found a JPEG image";
+  if (!header || header->format != ImageFormat::kPng) return std::nullopt;
+  if (uint64_t{header->width} * header->height > kMaxPixels) {
+    error = "expected a PNG of at most " + std::to_string(kMaxPixels) + " pixels, found " +
+            std::to_string(header->width) + " x " + std::to_string(header->height);
     return std::nullopt;
   }
-  Rgb8Image image{w, h, std::vector<uint8_t>(data, data + static_cast<size_t>(w) * static_cast<size_t>(h) * 3)};
-  stbi_image_free(data);
-  return image;
+  header->sixteen_bit = false;  // read as 8 bits a sample
+  const auto image = decode_png_jpeg(bytes->data(), bytes->size(), *header, 3, error);
+  if (!image) {
+    error = "cannot decode the PNG: " + error;
+    return std::nullopt;
+  }
+  const size_t samples = static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 3;
+  return Rgb8Image{image->width, image->height, std::vector<uint8_t>(image->bytes(), image->bytes() + samples)};
 }
 
 bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads) {

@@ -1,4 +1,4 @@
-// PNG files: the one module that reads (stb_image) and writes (io/png_encoder.h) them.
+// PNG files: the one module that reads (io/png_jpeg_decoder.h) and writes (io/png_encoder.h) them.
 #pragma once
 
 #include <optional>
@@ -8,8 +8,8 @@
 
 namespace rt {
 
-// Reads a PNG (or any format stb_image reads) as 8-bit RGB: a regular file of at most 256 MiB
-// (io/input_file.h).
+// Reads a PNG as 8-bit RGB (16-bit samples rounded): a regular file of at most 256 MiB
+// (io/input_file.h) and at most kMaxPixels pixels (the largest image rtcli renders).
 std::optional<Rgb8Image> read_png(const std::string& path, std::string& error);
 
 // Writes a PNG through a temporary file and an atomic rename (io/atomic_file.h), encoding on up

@@ -22,6 +22,9 @@ class Builder {
         options_(options),
         diags_(diags),
         bvh_options_{resolve_thread_count(options.threads)} {
+    // The scene file's tracks were counted when they were parsed; glTF files' come on top.
+    if (desc_.animation)
+      for (const TrackDescription& t : desc_.animation->tracks) usage_.animation_keys += t.track.keys->times.size();
     for (const MaterialDescription& m : desc_.materials) assets_.materials.push_back(with_textures(m));
   }
 
@@ -134,7 +137,7 @@ class Builder {
     const AnimationDescription* a = desc_.animation ? &*desc_.animation : nullptr;
     g.timeline.fps = a ? a->fps : 30.0f;
     float end = 0.0f;
-    for (const Track& t : g.tracks) end = std::max(end, t.times.back());
+    for (const Track& t : g.tracks) end = std::max(end, t.end());
     g.animated = !g.tracks.empty() || a;
     g.timeline.first_frame = a && a->first_frame ? *a->first_frame : 0;
     // Default: up to the frame of the last key (rounded up, so that no key is cut off).
@@ -190,10 +193,11 @@ class Builder {
   Material with_textures(const MaterialDescription& m) {
     Material out = m.material;
     const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
-      if (!ref) return;
-      std::string why;
+      if (!ref || over_limit_) return;
+      TextureError why;
       slot.texture = textures_.load(*ref, why, files_);
-      if (!why.empty()) error(ref->pointer, why);
+      if (why.over_budget) limit_error(ref->pointer, why.message);
+      else if (!why.message.empty()) error(ref->pointer, why.message);
     };
     fill(m.texture, out.texture);
     fill(m.specular_texture, out.specular_texture);
@@ -302,7 +306,8 @@ class Builder {
   const BvhBuildOptions bvh_options_;
   const size_t errors_before_ = diags_.error_count();
   SceneAssets assets_;
-  TextureLibrary textures_{assets_.textures, options_.limits};
+  LimitUsage usage_;
+  TextureLibrary textures_{assets_.textures, options_.limits, usage_};
   std::vector<SceneNode> nodes_;
   std::vector<std::string> pointers_;  // per node: where the scene file describes it
   std::vector<bool> from_file_;        // per node: grafted from a glTF file
@@ -313,6 +318,7 @@ class Builder {
   ModelLibrary models_{assets_,
                        textures_,
                        options_,
+                       usage_,
                        bvh_options_,
                        files_,
                        ProblemSink{[this](const std::string& p, std::string m) { error(p, std::move(m)); },

@@ -306,7 +306,7 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
     NodeParseContext ctx{r, folder, scene.materials, {}, options.limits.nodes, 0};
     scene.nodes = parse_nodes(ctx, *v, "/nodes");
   }
-  if (const Json* v = top.get("animation")) scene.animation = parse_animation(r, *v, "/animation");
+  if (const Json* v = top.get("animation")) scene.animation = parse_animation(r, *v, "/animation", options.limits.animation_keys);
   top.finish();
   return scene;
 }

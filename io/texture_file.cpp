@@ -1,106 +1,95 @@
 #include "io/texture_file.h"
 
-#include <stb_image.h>
-
-#include <algorithm>
 #include <array>
-#include <cstring>
-#include <memory>
 
 #include "core/color.h"
+#include "io/image_header.h"
 #include "io/input_file.h"
+#include "io/png_jpeg_decoder.h"
 
 namespace rt {
 namespace {
 
-constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
+using std::to_string;
 
-std::string stb_reason() { return stbi_failure_reason() ? stbi_failure_reason() : "unknown error"; }
-
-struct StbFree {
-  void operator()(void* p) const { stbi_image_free(p); }
-};
-
-// Width and height from a PNG file's IHDR chunk (it must come first), or false if there is none.
-bool png_header_size(const std::vector<unsigned char>& b, int& w, int& h) {
-  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (b.size() < 24 || !std::equal(kSignature, kSignature + 8, b.begin()) || std::memcmp(&b[12], "IHDR", 4) != 0)
+// The header's size against the limits: the image alone, then with its mip levels within what
+// the scene's earlier textures left.
+bool fits(const ImageHeader& h, const std::string& name, const LoadLimits& limits, const LimitUsage& usage,
+          TextureError& error) {
+  const uint64_t texels = uint64_t{h.width} * h.height;
+  if (texels > limits.texture_texels) {
+    error.message = "expected an image of at most " + to_string(limits.texture_texels) + " texels in " + name +
+                    ", found " + to_string(h.width) + " x " + to_string(h.height) + " (" + to_string(texels) + ")";
     return false;
-  const auto be32 = [&](size_t i) {
-    return (uint32_t{b[i]} << 24) | (uint32_t{b[i + 1]} << 16) | (uint32_t{b[i + 2]} << 8) | uint32_t{b[i + 3]};
-  };
-  const uint32_t width = be32(16), height = be32(20);
-  if (width > 0x7fffffffu || height > 0x7fffffffu) return false;
-  w = static_cast<int>(width);
-  h = static_cast<int>(height);
+  }
+  const uint64_t needed = Texture::texels_with_mip_levels(h.width, h.height);
+  const uint64_t left = usage.texels >= limits.scene_texels ? 0 : limits.scene_texels - usage.texels;
+  if (needed > left) {
+    error.over_budget = true;
+    error.message = name + " (" + to_string(h.width) + " x " + to_string(h.height) + ", " + to_string(needed) +
+                    " texels with its mip levels) does not fit in the scene's texture budget: " +
+                    to_string(usage.texels) + " of its " + to_string(limits.scene_texels) +
+                    " texels are taken by the textures loaded before it";
+    return false;
+  }
   return true;
 }
 
 }  // namespace
 
-std::optional<Texture> load_texture(const std::string& path, TextureEncoding encoding, uint64_t max_texels,
-                                    std::string& error) {
-  const auto bytes = read_input_bytes(path, kMaxFileBytes, error);
+std::optional<Texture> load_texture(const std::string& path, TextureEncoding encoding, const LoadLimits& limits,
+                                    LimitUsage& usage, TextureError& error) {
+  const auto bytes = read_input_bytes(path, kMaxTextureFileBytes, error.message);
   if (!bytes) {
-    error = "cannot read \"" + path + "\": " + error;
+    error.message = "cannot read \"" + path + "\": " + error.message;
     return std::nullopt;
   }
-  return decode_texture(*bytes, path, encoding, max_texels, error);
+  return decode_texture(*bytes, "\"" + path + "\"", encoding, limits, usage, error);
 }
 
-std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& path,
-                                      TextureEncoding encoding, uint64_t max_texels, std::string& error) {
-  if (bytes.size() > kMaxFileBytes) {
-    error = "cannot read \"" + path + "\" as an image: it is larger than " + format_bytes(kMaxFileBytes);
+std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& name,
+                                      TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
+                                      TextureError& error) {
+  if (bytes.size() > kMaxTextureFileBytes) {
+    error.message = "cannot read " + name + " as an image: it is larger than " + format_bytes(kMaxTextureFileBytes);
     return std::nullopt;
   }
-  const auto* data = bytes.data();
-  const int size = static_cast<int>(bytes.size());
-  int w = 0, h = 0, channels = 0;
-  const bool known = stbi_info_from_memory(data, size, &w, &h, &channels);
-  // stb_image refuses empty and enormous PNG files without saying their size; the header does.
-  if (!known && !png_header_size(bytes, w, h)) {
-    error = "cannot read \"" + path + "\" as an image (PNG or JPEG): " + stb_reason();
+  std::string why;
+  const auto header = read_image_header(bytes.data(), bytes.size(), why);
+  if (!header) {
+    error.message = why + " in " + name;
     return std::nullopt;
   }
-  const uint64_t texels = static_cast<uint64_t>(w) * static_cast<uint64_t>(h);
-  if (!known || w <= 0 || h <= 0 || texels > max_texels) {
-    error = "expected an image of 1 to " + std::to_string(max_texels) + " texels, found " + std::to_string(w) + " x " +
-            std::to_string(h) + " in \"" + path + "\"";
-    return std::nullopt;
-  }
+  if (!fits(*header, name, limits, usage, error)) return std::nullopt;
 
-  std::vector<Vec3> linear(static_cast<size_t>(texels));
-  // stb_image converts any layout to the channels asked for (alpha 1 where the file has none).
+  // The decoder converts any layout to the channels asked for (alpha 1 where the file has none).
   const bool alpha = encoding == TextureEncoding::kAlpha;
-  const int wanted = alpha ? 4 : 3;
-  const auto step = static_cast<size_t>(wanted);
-  if (stbi_is_16_bit_from_memory(data, size)) {
-    const std::unique_ptr<uint16_t, StbFree> pixels(stbi_load_16_from_memory(data, size, &w, &h, &channels, wanted));
-    if (!pixels) {
-      error = "cannot decode \"" + path + "\": " + stb_reason();
-      return std::nullopt;
-    }
+  const auto image = decode_png_jpeg(bytes.data(), bytes.size(), *header, alpha ? 4 : 3, why);
+  if (!image) {
+    error.message = "cannot decode " + name + ": " + why;
+    return std::nullopt;
+  }
+  std::vector<Vec3> linear(static_cast<size_t>(header->width) * header->height);
+  const auto channel = [&](int c) { return alpha ? 3 : c; };
+  if (image->sixteen_bit) {
     for (size_t i = 0; i < linear.size(); ++i)
       for (int c = 0; c < 3; ++c) {
-        const float v = static_cast<float>(pixels.get()[step * i + static_cast<size_t>(alpha ? 3 : c)]) / 65535.0f;
+        const float v = image->sample(i, channel(c));
         linear[i][c] = encoding == TextureEncoding::kSrgb ? srgb_decode(v) : v;
       }
   } else {
-    const std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &w, &h, &channels, wanted));
-    if (!pixels) {
-      error = "cannot decode \"" + path + "\": " + stb_reason();
-      return std::nullopt;
-    }
     std::array<float, 256> decode{};  // one entry per 8-bit code
     for (int v = 0; v < 256; ++v) {
       const float f = static_cast<float>(v) / 255.0f;
       decode[static_cast<size_t>(v)] = encoding == TextureEncoding::kSrgb ? srgb_decode(f) : f;
     }
+    const uint8_t* samples = image->bytes();
+    const size_t step = static_cast<size_t>(image->channels);
     for (size_t i = 0; i < linear.size(); ++i)
-      for (int c = 0; c < 3; ++c) linear[i][c] = decode[pixels.get()[step * i + static_cast<size_t>(alpha ? 3 : c)]];
+      for (int c = 0; c < 3; ++c) linear[i][c] = decode[samples[step * i + static_cast<size_t>(channel(c))]];
   }
-  return Texture(w, h, std::move(linear));
+  usage.texels += Texture::texels_with_mip_levels(header->width, header->height);
+  return Texture(image->width, image->height, std::move(linear));
 }
 
 }  // namespace rt

@@ -17,9 +17,10 @@ Vec4 slerp(Vec4 a, Vec4 b, float s) {
 }
 
 Vec4 sample_track(const Track& track, float seconds) {
-  const std::vector<float>& times = track.times;
+  const std::vector<float>& times = track.keys->times;
+  const std::vector<Vec4>& values = track.keys->values;
   const bool cubic = track.interpolation == Interpolation::kCubicSpline;
-  const auto value = [&](size_t key) { return track.values[cubic ? 3 * key + 1 : key]; };
+  const auto value = [&](size_t key) { return values[cubic ? 3 * key + 1 : key]; };
   if (times.empty()) return Vec4(0.0f);
   if (!(seconds > times.front())) return value(0);  // also NaN
   if (seconds >= times.back()) return value(times.size() - 1);
@@ -34,8 +35,8 @@ Vec4 sample_track(const Track& track, float seconds) {
       return rotation ? slerp(value(k), value(k + 1), s) : glm::mix(value(k), value(k + 1), s);
     case Interpolation::kCubicSpline: {
       // Hermite basis on [t_k, t_k+1] with tangents scaled by the interval (glTF 2.0, Appendix C).
-      const Vec4 p0 = track.values[3 * k + 1], m0 = dt * track.values[3 * k + 2];
-      const Vec4 p1 = track.values[3 * (k + 1) + 1], m1 = dt * track.values[3 * (k + 1)];
+      const Vec4 p0 = values[3 * k + 1], m0 = dt * values[3 * k + 2];
+      const Vec4 p1 = values[3 * (k + 1) + 1], m1 = dt * values[3 * (k + 1)];
       const float s2 = s * s, s3 = s2 * s;
       const Vec4 v = (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
       if (!rotation) return v;

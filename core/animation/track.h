@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/animation/trs.h"
@@ -15,14 +16,22 @@ namespace rt {
 enum class TrsPart : uint8_t { kTranslation, kRotation, kScale };
 enum class Interpolation : uint8_t { kStep, kLinear, kCubicSpline };
 
-struct Track {
-  uint32_t node = 0;  // index into SceneGraph::nodes
-  TrsPart part = TrsPart::kTranslation;
-  Interpolation interpolation = Interpolation::kLinear;
+// A track's keys. Shared, never copied, by every track that plays them: glTF channels that use
+// one sampler, and a file's tracks wherever the file is placed.
+struct Keyframes {
   std::vector<float> times;  // seconds, strictly increasing, at least one
   // One value per key (a vector in xyz, or a rotation as a unit quaternion x, y, z, w); cubic
   // spline: three per key, in-tangent, value, out-tangent (glTF's layout).
   std::vector<Vec4> values;
+};
+
+struct Track {
+  uint32_t node = 0;  // index into SceneGraph::nodes
+  TrsPart part = TrsPart::kTranslation;
+  Interpolation interpolation = Interpolation::kLinear;
+  std::shared_ptr<const Keyframes> keys = std::make_shared<const Keyframes>();
+
+  float end() const { return keys->times.empty() ? 0.0f : keys->times.back(); }  // the last key's time
 };
 
 // The track's value at `seconds`.

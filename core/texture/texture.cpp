@@ -39,6 +39,16 @@ Texture::Texture(int width, int height, std::vector<Vec3> texels) {
   }
 }
 
+uint64_t Texture::texels_with_mip_levels(uint64_t width, uint64_t height) {
+  uint64_t total = width * height;
+  while (width > 1 || height > 1) {
+    width = std::max<uint64_t>(1, width / 2);
+    height = std::max<uint64_t>(1, height / 2);
+    total += width * height;
+  }
+  return total;
+}
+
 Vec3 Texture::nearest(Vec2 uv, TextureWrap wrap, int level) const {
   const int w = width(level), h = height(level);
   const int x = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.x, w, wrap))), w, wrap);

@@ -25,6 +25,9 @@ class Texture {
  public:
   // texels: width x height, row-major, row 0 at the top; both sides >= 1.
   Texture(int width, int height, std::vector<Vec3> texels);
+  // The texels a width x height texture holds with its mip chain (what the constructor builds),
+  // for budgets checked before an image is decoded.
+  static uint64_t texels_with_mip_levels(uint64_t width, uint64_t height);
 
   int width(int level = 0) const { return levels_[static_cast<size_t>(level)].width; }
   int height(int level = 0) const { return levels_[static_cast<size_t>(level)].height; }

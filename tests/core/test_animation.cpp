@@ -12,8 +12,7 @@ Track vec_track(Interpolation interpolation, std::vector<float> times, std::vect
   Track t;
   t.part = TrsPart::kTranslation;
   t.interpolation = interpolation;
-  t.times = std::move(times);
-  t.values = std::move(values);
+  t.keys = std::make_shared<const Keyframes>(Keyframes{std::move(times), std::move(values)});
   return t;
 }
 
@@ -44,8 +43,7 @@ TEST_CASE("animation: linear and step tracks at keys, between keys and outside t
 TEST_CASE("animation: rotations slerp at constant speed, the short way round", "[animation]") {
   Track t;
   t.part = TrsPart::kRotation;
-  t.times = {0.0f, 1.0f};
-  t.values = {quat_y(0), quat_y(90)};
+  t.keys = std::make_shared<const Keyframes>(Keyframes{{0.0f, 1.0f}, {quat_y(0), quat_y(90)}});
   for (const float s : {0.25f, 0.5f, 0.8f}) {
     const Vec4 q = sample_track(t, s);
     CHECK(glm::length(q) == Approx(1.0f));
@@ -54,7 +52,7 @@ TEST_CASE("animation: rotations slerp at constant speed, the short way round", "
     CHECK(q.x == Approx(0.0f).margin(1e-6));
   }
   // 350 degrees from 0 is 10 degrees the other way: slerp takes that way (q and -q agree).
-  t.values = {quat_y(0), quat_y(350)};
+  t.keys = std::make_shared<const Keyframes>(Keyframes{{0.0f, 1.0f}, {quat_y(0), quat_y(350)}});
   const Vec4 mid = sample_track(t, 0.5f);
   const Quat q(mid.w, mid.x, mid.y, mid.z);
   const Vec3 x = q * Vec3(1, 0, 0);
@@ -66,8 +64,9 @@ TEST_CASE("animation: cubic spline follows glTF's Hermite form", "[animation]") 
   Track t;
   t.part = TrsPart::kTranslation;
   t.interpolation = Interpolation::kCubicSpline;
-  t.times = {0.0f, 2.0f};
-  t.values = {Vec4(9), Vec4(0), Vec4(3), Vec4(-1), Vec4(1), Vec4(9)};  // (in, value, out) per key
+  // (in, value, out) per key
+  t.keys = std::make_shared<const Keyframes>(
+      Keyframes{{0.0f, 2.0f}, {Vec4(9), Vec4(0), Vec4(3), Vec4(-1), Vec4(1), Vec4(9)}});
   // At s = 0.5 the Hermite weights are 0.5, 0.125, 0.5, -0.125 and tangents scale by dt = 2:
   // p = 0.5 * 0 + 0.125 * (2 * 3) + 0.5 * 1 - 0.125 * (2 * -1) = 0.75 + 0.5 + 0.25 = 1.5.
   CHECK(sample_track(t, 1.0f).x == Approx(1.5f));

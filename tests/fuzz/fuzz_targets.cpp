@@ -88,8 +88,9 @@ std::string gltf_model(const uint8_t* data, size_t size) {
   const LoadOptions options = fuzz_options();
   ImportError error;
   const std::vector<unsigned char> bytes(data, data + size);
-  auto model =
-      import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt, options.limits, error);
+  LimitUsage usage;
+  auto model = import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt,
+                                 options.limits, usage, error);
   if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
   std::vector<TriangleMesh> meshes;
   size_t triangles = 0;
@@ -168,10 +169,13 @@ std::string bvh_build(const uint8_t* data, size_t size) {
 std::string texture_image(const uint8_t* data, size_t size) {
   const std::vector<unsigned char> bytes(data, data + size);
   for (const TextureEncoding encoding : {TextureEncoding::kSrgb, TextureEncoding::kLinear, TextureEncoding::kAlpha}) {
-    std::string error;
-    const auto texture = decode_texture(bytes, "fuzz input", encoding, uint64_t{1} << 20, error);
+    LoadLimits limits;
+    limits.texture_texels = uint64_t{1} << 20;
+    LimitUsage usage;
+    TextureError error;
+    const auto texture = decode_texture(bytes, "fuzz input", encoding, limits, usage, error);
     if (!texture) {
-      if (error.empty()) return "decode_texture failed without saying why";
+      if (error.message.empty()) return "decode_texture failed without saying why";
       return "";
     }
     if (texture->width() < 1 || texture->height() < 1) return "a decoded texture has no texels";

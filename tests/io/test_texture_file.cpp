@@ -58,11 +58,30 @@ std::string png(int w, int h, int channels, int depth, const std::vector<uint16_
   return std::string(out.begin(), out.end());
 }
 
+// Limits with `texels` for one image and the default budget for all.
+LoadLimits limits_of(uint64_t texels) {
+  LoadLimits limits;
+  limits.texture_texels = texels;
+  return limits;
+}
+
+// What load_texture says about a file: empty when it loads.
+std::string load_error(const std::string& path, TextureEncoding encoding = TextureEncoding::kSrgb,
+                       uint64_t texels = uint64_t{1} << 20) {
+  LimitUsage usage;
+  TextureError error;
+  const auto t = load_texture(path, encoding, limits_of(texels), usage, error);
+  if (t) return "";
+  CHECK_FALSE(error.message.empty());
+  return error.message;
+}
+
 Texture load(const std::string& name, const std::string& bytes, TextureEncoding encoding) {
   const std::string path = rt::test::write_file(name, bytes);
-  std::string error;
-  auto t = load_texture(path, encoding, uint64_t{1} << 20, error);
-  INFO(error);
+  LimitUsage usage;
+  TextureError error;
+  auto t = load_texture(path, encoding, limits_of(uint64_t{1} << 20), usage, error);
+  INFO(error.message);
   REQUIRE(t);
   return std::move(*t);
 }
@@ -102,24 +121,21 @@ TEST_CASE("texture files: 8 and 16 bits, grey, grey + alpha, RGB, RGBA, sRGB or 
 }
 
 TEST_CASE("texture files: missing, not an image, zero-sized or too large are errors", "[texture][io]") {
-  std::string error;
-  CHECK_FALSE(load_texture(rt::test::output_path("no_such_texture.png"), TextureEncoding::kSrgb, 1 << 20, error));
-  CHECK_THAT(error, Catch::Contains("no_such_texture.png"));
+  CHECK_THAT(load_error(rt::test::output_path("no_such_texture.png")),
+             Catch::Contains("no_such_texture.png") && Catch::Contains("file not found"));
 
   const std::string text = rt::test::write_file("not_an_image.png", "hello, I am text");
-  error.clear();
-  CHECK_FALSE(load_texture(text, TextureEncoding::kSrgb, 1 << 20, error));
-  CHECK_THAT(error, Catch::Contains("cannot read") && Catch::Contains("as an image"));
+  CHECK_THAT(load_error(text), Catch::Contains("expected a PNG or JPEG image, found neither (it starts with the "
+                                               "bytes 68 65 6c 6c) in \"" +
+                                               text + "\""));
 
   const std::string big = rt::test::write_file("tex_big.png", png(64, 64, 1, 8, std::vector<uint16_t>(64 * 64, 9)));
-  error.clear();
-  CHECK_FALSE(load_texture(big, TextureEncoding::kLinear, 1000, error));
-  CHECK_THAT(error, Catch::Contains("expected an image of 1 to 1000 texels, found 64 x 64"));
+  CHECK_THAT(load_error(big, TextureEncoding::kLinear, 1000),
+             Catch::Contains("expected an image of at most 1000 texels in \"" + big + "\", found 64 x 64 (4096)"));
 
   const std::string empty = rt::test::write_file("tex_zero.png", png(0, 0, 1, 8, {}));
-  error.clear();
-  CHECK_FALSE(load_texture(empty, TextureEncoding::kLinear, 1000, error));
-  CHECK_FALSE(error.empty());
+  CHECK_THAT(load_error(empty, TextureEncoding::kLinear, 1000),
+             Catch::Contains("expected a PNG of 1 to 2^31 - 1 pixels a side, found 0 x 0"));
 }
 
 TEST_CASE("make_textures: the checked-in example textures are exactly what the generator makes", "[texture][tools]") {

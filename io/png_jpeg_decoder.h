@@ -1,0 +1,41 @@
+// PNG and JPEG decoding, by Debian's stb_image compiled here with every other format left out
+// (io/stb_image_impl.cpp): no other decoder is reachable, whatever a file holds, and the
+// sanitizers and fuzzers instrument the decoder. The caller has read the header
+// (io/image_header.h) and checked its size against the limits; the decoded image must match it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "io/image_header.h"
+
+namespace rt {
+
+class DecodedImage {
+ public:
+  int width = 0, height = 0;
+  int channels = 0;  // per pixel, as asked for: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+  bool sixteen_bit = false;
+
+  // Sample `c` of pixel `i` (row-major) in [0, 1].
+  float sample(size_t i, int c) const {
+    const size_t k = i * static_cast<size_t>(channels) + static_cast<size_t>(c);
+    return sixteen_bit ? static_cast<float>(static_cast<const uint16_t*>(data.get())[k]) / 65535.0f
+                       : static_cast<float>(static_cast<const uint8_t*>(data.get())[k]) / 255.0f;
+  }
+  // 8-bit samples (not for a 16-bit image).
+  const uint8_t* bytes() const { return static_cast<const uint8_t*>(data.get()); }
+
+  std::unique_ptr<void, void (*)(void*)> data{nullptr, nullptr};
+};
+
+// Decodes the image `header` describes into `channels` samples a pixel (alpha 1 where the file
+// has none): 16 bits for a 16-bit PNG, 8 otherwise. nullopt and the decoder's reason in `error`
+// when the data is corrupt.
+std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                            int channels, std::string& error);
+
+}  // namespace rt
