@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
+#include <set>
 
 #include <tiny_gltf.h>
 
 #include "io/gltf_file.h"
 #include "io/gltf_values.h"
+#include "io/image_header.h"
 #include "io/input_file.h"
 
 namespace rt {
@@ -84,6 +87,56 @@ void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapp
   if (const auto radians = gltf_number(t, "rotation")) mapping.rotation_degrees = *radians * (180.0f / kPi);
 }
 
+std::span<const unsigned char> ImageDecoder::view_bytes(int index) const {
+  // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
+  if (index < 0 || static_cast<size_t>(index) >= model_.bufferViews.size()) return {};
+  const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(index)];
+  if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size()) return {};
+  const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
+  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) return {};
+  return std::span<const unsigned char>(data).subspan(view.byteOffset, view.byteLength);
+}
+
+bool ImageDecoder::fit_in_budget() {
+  std::set<std::string> seen;
+  uint64_t needed = 0;
+  size_t counted = 0;
+  for (const tinygltf::Texture& texture : model_.textures) {
+    if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) continue;
+    const tinygltf::Image& image = model_.images[static_cast<size_t>(texture.source)];
+    std::string source;
+    std::span<const unsigned char> bytes;
+    std::optional<std::vector<unsigned char>> file;
+    if (image.bufferView >= 0) {
+      source = "view " + to_string(image.bufferView);
+      bytes = view_bytes(image.bufferView);
+    } else if (!image.image.empty()) {
+      source = "image " + to_string(texture.source);
+      bytes = image.image;
+    } else if (!image.uri.empty()) {
+      const std::string path = resolve_path(base_dir_, percent_decoded(image.uri));
+      source = "file " + path;
+      if (seen.count(source) || (!limits_.outside_files && !is_inside_folder(path, base_dir_))) continue;
+      std::string ignored;  // an unreadable file is a warning when its texture is decoded
+      file = read_input_bytes(path, kMaxTextureFileBytes, ignored);
+      if (file) bytes = *file;
+    }
+    if (bytes.empty() || !seen.insert(source).second) continue;
+    std::string ignored;  // so is a broken image
+    const auto header = read_image_header(bytes.data(), bytes.size(), ignored);
+    if (!header || uint64_t{header->width} * header->height > limits_.texture_texels) continue;
+    needed += Texture::texels_with_mip_levels(header->width, header->height);
+    ++counted;
+  }
+  const uint64_t left = usage_.texels >= limits_.scene_texels ? 0 : limits_.scene_texels - usage_.texels;
+  if (needed <= left) return true;
+  failure_ = "its textures' " + to_string(counted) + " images need " + to_string(needed) +
+             " texels with their mip levels (read from their headers), more than the " + to_string(left) +
+             " left of the scene's texture budget of " + to_string(limits_.scene_texels) + " texels";
+  over_limit_ = true;
+  return false;
+}
+
 template <class Decode>
 uint32_t ImageDecoder::once(const std::string& source, TextureEncoding encoding, const Decode& decode) {
   if (!failure_.empty()) return kNoTexture;
@@ -99,17 +152,7 @@ uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, cons
   const std::string name = "image " + to_string(image_index);
   if (image.bufferView >= 0) {
     return once("view " + to_string(image.bufferView), encoding, [&] {
-      // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
-      std::vector<unsigned char> bytes;
-      if (static_cast<size_t>(image.bufferView) < model_.bufferViews.size()) {
-        const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(image.bufferView)];
-        if (view.buffer >= 0 && static_cast<size_t>(view.buffer) < model_.buffers.size()) {
-          const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
-          if (view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset)
-            bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
-                         data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
-        }
-      }
+      const auto bytes = view_bytes(image.bufferView);
       if (bytes.empty()) {
         out_.warnings.push_back(where + ": " + name + "'s buffer view holds no image; ignored");
         return kNoTexture;
@@ -151,7 +194,7 @@ uint32_t ImageDecoder::decode_file(const std::string& uri, TextureEncoding encod
   });
 }
 
-uint32_t ImageDecoder::decode_bytes(const std::vector<unsigned char>& bytes, const std::string& name,
+uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const std::string& name,
                                     TextureEncoding encoding, const std::string& where) {
   TextureError error;
   auto texture = decode_texture(bytes, name, encoding, limits_, usage_, error);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,10 @@ class ImageDecoder {
   // A data slot for an image file beside the glTF file (rtcli's extras), decoded once.
   TextureSlot file_slot(const std::string& uri, const std::string& where);
 
+  // Whether the images the file's textures use, each source once and sized from its header, fit
+  // in what is left of the scene's texel budget; if not, failure() says so. Before decoding any.
+  bool fit_in_budget();
+
   // Why the import must stop, or empty; whether that is the scene's texel budget.
   const std::string& failure() const { return failure_; }
   bool failure_is_over_limit() const { return over_limit_; }
@@ -51,8 +56,10 @@ class ImageDecoder {
  private:
   uint32_t decode(size_t image_index, TextureEncoding encoding, const std::string& where);
   uint32_t decode_file(const std::string& uri, TextureEncoding encoding, const std::string& where);
-  uint32_t decode_bytes(const std::vector<unsigned char>& bytes, const std::string& name, TextureEncoding encoding,
+  uint32_t decode_bytes(std::span<const unsigned char> bytes, const std::string& name, TextureEncoding encoding,
                         const std::string& where);
+  // A buffer view's bytes (empty if it has none).
+  std::span<const unsigned char> view_bytes(int view) const;
   // The texture already decoded from `source` as `encoding`, or decoded now by `decode`.
   template <class Decode>
   uint32_t once(const std::string& source, TextureEncoding encoding, const Decode& decode);

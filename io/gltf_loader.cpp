@@ -36,6 +36,77 @@ std::vector<uint32_t> to_triangle_list(std::vector<uint32_t> v, int mode) {
   return out;
 }
 
+struct MeshCost {
+  uint64_t vertices = 0, triangles = 0;
+};
+
+// What a primitive will take, from its accessors' counts (nothing for points and lines, which
+// are skipped).
+MeshCost primitive_cost(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  const auto pos = prim.attributes.find("POSITION");
+  if (pos == prim.attributes.end() || (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                                       mode != TINYGLTF_MODE_TRIANGLE_FAN))
+    return {};
+  const uint64_t vertices = accessor_count(model, pos->second);
+  const uint64_t indices = prim.indices >= 0 ? accessor_count(model, prim.indices) : vertices;
+  return {vertices, mode == TINYGLTF_MODE_TRIANGLES ? indices / 3 : (indices >= 2 ? indices - 2 : 0)};
+}
+
+// The meshes an import will read, each once: the one asked for by name, those the default
+// scene's nodes use, or all of them when the file has no scene.
+std::vector<bool> meshes_used(const tinygltf::Model& model, const std::optional<std::string>& mesh_name, int scene) {
+  std::vector<bool> used(model.meshes.size(), false);
+  if (mesh_name) {
+    for (size_t i = 0; i < model.meshes.size(); ++i)
+      if (model.meshes[i].name == *mesh_name) {
+        used[i] = true;
+        break;
+      }
+    return used;
+  }
+  if (scene < 0 || static_cast<size_t>(scene) >= model.scenes.size()) {
+    used.assign(used.size(), true);
+    return used;
+  }
+  std::vector<bool> seen(model.nodes.size(), false);
+  std::vector<int> stack(model.scenes[static_cast<size_t>(scene)].nodes);
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    if (n < 0 || static_cast<size_t>(n) >= seen.size() || seen[static_cast<size_t>(n)]) continue;
+    seen[static_cast<size_t>(n)] = true;
+    const tinygltf::Node& node = model.nodes[static_cast<size_t>(n)];
+    if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < used.size()) used[static_cast<size_t>(node.mesh)] = true;
+    stack.insert(stack.end(), node.children.begin(), node.children.end());
+  }
+  return used;
+}
+
+// Whether the meshes the import will read fit in what the scene has left, before any is read.
+bool meshes_fit(const tinygltf::Model& model, const std::vector<bool>& used, const LoadLimits& limits,
+                const LimitUsage& usage, std::string& error) {
+  MeshCost total;
+  for (size_t m = 0; m < model.meshes.size(); ++m) {
+    if (!used[m]) continue;
+    for (const tinygltf::Primitive& prim : model.meshes[m].primitives) {
+      const MeshCost c = primitive_cost(model, prim);
+      total.vertices += std::min<uint64_t>(c.vertices, uint64_t{1} << 40);  // no wrap, whatever the counts
+      total.triangles += std::min<uint64_t>(c.triangles, uint64_t{1} << 40);
+    }
+  }
+  const auto over = [&](const char* what, uint64_t limit, uint64_t taken, uint64_t wanted) {
+    error = "its meshes need " + to_string(wanted) + " " + what + " (from their accessors' counts), more than the " +
+            to_string(limit - std::min(limit, taken)) + " left of the " + to_string(limit) + " a scene's meshes may have";
+    return false;
+  };
+  if (total.vertices + usage.vertices > limits.vertices)
+    return over("vertices", limits.vertices, usage.vertices, total.vertices);
+  if (total.triangles + usage.triangles > limits.triangles)
+    return over("triangles", limits.triangles, usage.triangles, total.triangles);
+  return true;
+}
+
 class Importer {
  public:
   Importer(const tinygltf::Model& model, const LoadLimits& limits, LimitUsage& usage, ImportedModel& out,
@@ -84,7 +155,8 @@ class Importer {
   // The primitive's vertices and triangles, from its accessors' counts, against what the scene
   // has left: checked before anything is read, so that many primitives sharing one huge
   // accessor stop at the first that does not fit.
-  bool reserve(uint64_t vertices, uint64_t triangles, const std::string& where) {
+  bool reserve(MeshCost cost, const std::string& where) {
+    const uint64_t vertices = cost.vertices, triangles = cost.triangles;
     const auto over = [&](const char* what, uint64_t limit, uint64_t used, uint64_t wanted) {
       import_error_.over_limit = true;
       return fail(where + ": expected at most " + to_string(limit) + " " + what +
@@ -116,11 +188,7 @@ class Importer {
     ip.material = prim.material;
     if (prim.material >= static_cast<int>(model_.materials.size()))
       return fail(where + ": material " + to_string(prim.material) + " does not exist");
-    const uint64_t vertex_count = accessor_count(model_, pos_it->second);
-    const uint64_t index_count = prim.indices >= 0 ? accessor_count(model_, prim.indices) : vertex_count;
-    const uint64_t triangle_count =
-        mode == TINYGLTF_MODE_TRIANGLES ? index_count / 3 : (index_count >= 2 ? index_count - 2 : 0);
-    if (!reserve(vertex_count, triangle_count, where)) return false;
+    if (!reserve(primitive_cost(model_, prim), where)) return false;
     std::vector<float> raw;
     if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, error_))
       return fail(where + " POSITION: " + error_);
@@ -303,6 +371,11 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   if (!file.model) return std::nullopt;
   const tinygltf::Model& model = *file.model;
   ImageDecoder images(model, base_dir, limits, usage, out);
+  if (!images.fit_in_budget()) {
+    import_error.over_limit = true;
+    error = images.failure();
+    return std::nullopt;
+  }
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
     const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
@@ -314,6 +387,11 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
       error = images.failure();
       return std::nullopt;
     }
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+  if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, error)) {
+    import_error.over_limit = true;
+    return std::nullopt;
   }
   Importer importer(model, limits, usage, out, import_error);
 
@@ -332,7 +410,6 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     return std::nullopt;
   }
 
-  const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
   if (scene >= static_cast<int>(model.scenes.size())) {
     error = "its default scene " + to_string(scene) + " does not exist";
     return std::nullopt;

@@ -47,7 +47,7 @@ std::optional<Texture> load_texture(const std::string& path, TextureEncoding enc
   return decode_texture(*bytes, "\"" + path + "\"", encoding, limits, usage, error);
 }
 
-std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& name,
+std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, const std::string& name,
                                       TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
                                       TextureError& error) {
   if (bytes.size() > kMaxTextureFileBytes) {
@@ -64,7 +64,7 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, c
 
   // The decoder converts any layout to the channels asked for (alpha 1 where the file has none).
   const bool alpha = encoding == TextureEncoding::kAlpha;
-  const auto image = decode_png_jpeg(bytes.data(), bytes.size(), *header, alpha ? 4 : 3, why);
+  auto image = decode_png_jpeg(bytes.data(), bytes.size(), *header, alpha ? 4 : 3, why);
   if (!image) {
     error.message = "cannot decode " + name + ": " + why;
     return std::nullopt;
@@ -88,8 +88,9 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, c
     for (size_t i = 0; i < linear.size(); ++i)
       for (int c = 0; c < 3; ++c) linear[i][c] = decode[samples[step * i + static_cast<size_t>(channel(c))]];
   }
+  image.reset();  // the decoder's pixels go before the mip levels are made: a lower peak
   usage.texels += Texture::texels_with_mip_levels(header->width, header->height);
-  return Texture(image->width, image->height, std::move(linear));
+  return Texture(static_cast<int>(header->width), static_cast<int>(header->height), std::move(linear));
 }
 
 }  // namespace rt

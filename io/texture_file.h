@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,7 @@ std::optional<Texture> load_texture(const std::string& path, TextureEncoding enc
 
 // The same from an image already in memory (a glTF buffer view or data URI); `name` names it
 // in errors.
-std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes, const std::string& name,
+std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, const std::string& name,
                                       TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
                                       TextureError& error);
 
