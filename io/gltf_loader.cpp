@@ -96,8 +96,9 @@ bool meshes_fit(const tinygltf::Model& model, const std::vector<bool>& used, con
     }
   }
   const auto over = [&](const char* what, uint64_t limit, uint64_t taken, uint64_t wanted) {
-    error = "its meshes need " + to_string(wanted) + " " + what + " (from their accessors' counts), more than the " +
-            to_string(limit - std::min(limit, taken)) + " left of the " + to_string(limit) + " a scene's meshes may have";
+    error = "expected at most " + to_string(limit) + " " + what + " in a scene's meshes, found " + to_string(wanted) +
+            " in this file's (counted from their accessors, before reading them)" +
+            (taken ? " after " + to_string(taken) + " in the meshes before it" : std::string());
     return false;
   };
   if (total.vertices + usage.vertices > limits.vertices)
