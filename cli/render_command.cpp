@@ -1,5 +1,6 @@
 #include "cli/render_command.h"
 
+#include <climits>
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,7 +29,8 @@ std::string default_output(const std::string& scene, bool animation) {
   return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");
 }
 
-// Refuses an output we could never write before spending minutes on the render.
+// Refuses an output we could never write before spending minutes on the render: a missing or
+// read-only folder, a folder in its place, a name too long for the file system.
 bool check_output(const std::string& path, std::string& error) {
   namespace fs = std::filesystem;
   const fs::path p(path);
@@ -44,6 +46,18 @@ bool check_output(const std::string& path, std::string& error) {
   }
   if (fs::is_directory(p, ec)) {
     error = "cannot write \"" + path + "\": it is a folder";
+    return false;
+  }
+  const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const std::string name = p.filename().string();
+  if (name_max > 0 && name.size() > static_cast<size_t>(name_max)) {
+    error = "cannot write \"" + path + "\": its name is " + std::to_string(name.size()) + " bytes, more than the " +
+            std::to_string(name_max) + " the file system allows";
+    return false;
+  }
+  if (path.size() >= PATH_MAX) {
+    error = "cannot write \"" + path.substr(0, 60) + "...\": its path is " + std::to_string(path.size()) +
+            " bytes, more than the " + std::to_string(PATH_MAX - 1) + " the system allows";
     return false;
   }
   return true;
@@ -206,7 +220,7 @@ int run_render(const RenderCommand& cmd) {
     outputs.push_back(beside(output, ".aa-depth"));
   }
   for (const std::string& out : outputs) {
-    if (output_is_an_input(out, loaded->inputs, error)) {
+    if (!check_output(out, error) || output_is_an_input(out, loaded->inputs, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitBadInput;
     }

@@ -1,7 +1,10 @@
 #include "io/scene_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "core/thread_count.h"
 #include "io/gltf_loader.h"
@@ -11,6 +14,9 @@
 
 namespace rt {
 namespace {
+
+// Copies in one place from which a scene gets a warning (Builder::warn_of_stacks).
+constexpr size_t kStackWarning = 64;
 
 class Builder {
  public:
@@ -117,6 +123,7 @@ class Builder {
                 : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
                   "that reaches infinity");
     }
+    warn_of_stacks(g, t0);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
@@ -144,6 +151,38 @@ class Builder {
     const double last = std::ceil(static_cast<double>(end) * g.timeline.fps - 1e-3);
     g.timeline.last_frame =
         a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
+  }
+
+  // Many copies of one mesh or shape in one place (a glTF file instancing a mesh at one point,
+  // nodes duplicated by mistake) make every ray that reaches them test each copy: no BVH can
+  // separate them, and the render crawls. Said at load, from the placements (so validate says it
+  // too, without building a BVH).
+  void warn_of_stacks(const SceneGraph& g, float seconds) {
+    const std::vector<Mat4> world = g.world_transforms(seconds);
+    using Placement = std::pair<int64_t, std::array<float, 16>>;  // mesh (or -1 - shape), world matrix
+    std::vector<std::pair<Placement, size_t>> copies;                // and the node
+    for (size_t n = 0; n < g.nodes.size(); ++n) {
+      const SceneNode& node = g.nodes[n];
+      if (!node.has_geometry()) continue;
+      const int64_t what = node.shape ? -1 - static_cast<int64_t>(*node.shape) : node.meshes.front().mesh;
+      for (size_t c = 0; c < std::max<size_t>(1, node.instancing.size()); ++c) {
+        const Mat4 m = node.instancing.empty() ? world[n] : world[n] * node.instancing[c];
+        std::array<float, 16> key;
+        for (int k = 0; k < 16; ++k) key[static_cast<size_t>(k)] = m[k / 4][k % 4];
+        copies.push_back({{what, key}, n});
+      }
+    }
+    std::sort(copies.begin(), copies.end());
+    size_t most = 0, node = 0;
+    for (size_t i = 0, j = 0; i < copies.size(); i = j) {
+      for (j = i + 1; j < copies.size() && copies[j].first == copies[i].first; ++j) {}
+      if (j - i > most) std::tie(most, node) = std::make_pair(j - i, copies[i].second);
+    }
+    if (most < kStackWarning) return;
+    warning(pointers_[node], std::to_string(most) + " copies of " + (g.nodes[node].shape ? "a shape" : "a mesh") +
+                                 " are placed at exactly the same spot (the same world transform): no BVH can "
+                                 "separate them, so every ray that reaches them tests all " +
+                                 std::to_string(most) + " and the render will be slow (README, \"Limits\")");
   }
 
   // --camera NAME: a glTF camera by its name or its node's, instead of the scene's camera.

@@ -167,6 +167,7 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       }
     }
     std::copy_n(left.begin(), n + 1, right_border.begin() + row);
+    ctx.row_done(tile.width());
   }
   if (grid_.below(tile.index) >= 0) bottom_borders_[static_cast<size_t>(tile.index)] = std::move(above);
   if (grid_.right(tile.index) >= 0) right_borders_[static_cast<size_t>(tile.index)] = std::move(right_border);

@@ -4,6 +4,8 @@
 // the finished tile into the Film, so no two threads ever write the same memory.
 #pragma once
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -43,10 +45,31 @@ struct Film {
   std::vector<uint8_t> depth;     // per pixel, row-major
 
   Film() = default;
-  Film(int width, int height)
-      : color(width, height),
-        samples(static_cast<size_t>(width) * static_cast<size_t>(height), 0),
-        depth(samples.size(), 0) {}
+  Film(int width, int height) { allocate(width, height, nullptr); }
+
+  // Sized for width x height pixels, all zero, grown a slice at a time with `cancel` checked in
+  // between: at 8192 x 8192 the film is a gigabyte to write, and Ctrl-C must not wait for it.
+  // False (the film left partly grown) once `cancel` is set.
+  bool allocate(int width, int height, const std::atomic<bool>* cancel) {
+    const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+    color.width = width;
+    color.height = height;
+    color.pixels.clear();
+    samples.clear();
+    depth.clear();
+    color.pixels.reserve(n);
+    samples.reserve(n);
+    depth.reserve(n);
+    constexpr size_t kSlice = size_t{1} << 20;
+    while (samples.size() < n) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+      const size_t next = std::min(n, samples.size() + kSlice);
+      color.pixels.resize(next, Vec3(0.0f));
+      samples.resize(next, 0);
+      depth.resize(next, 0);
+    }
+    return true;
+  }
 
   int width() const { return color.width; }
   int height() const { return color.height; }

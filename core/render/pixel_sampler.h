@@ -16,8 +16,9 @@
 
 namespace rt {
 
-// What a worker thread hands a sampler: the scene, settings, its own counters, and the flag
-// that stops the render (checked before every pixel).
+// What a worker thread hands a sampler: the scene, settings, its own counters, the flag that
+// stops the render (checked before every pixel), and the count of finished pixels the progress
+// bar shows (added to after every row of a tile, so that it moves even when a tile is slow).
 struct PixelContext {
   const Scene& scene;
   const RenderSettings& settings;
@@ -25,8 +26,12 @@ struct PixelContext {
   RayCounters& counters;
   uint32_t frame = 0;
   const std::atomic<bool>* cancel = nullptr;
+  std::atomic<uint64_t>* pixels_done = nullptr;
 
   bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
+  void row_done(int pixels) const {
+    if (pixels_done) pixels_done->fetch_add(static_cast<uint64_t>(pixels), std::memory_order_relaxed);
+  }
 };
 
 class PixelSampler {
@@ -49,11 +54,13 @@ std::vector<std::string> pixel_sampler_names();
 // independent; stops (returning false) once the render is cancelled.
 template <class PixelFn>
 bool render_pixels(const Tile& tile, const PixelContext& ctx, FilmTile& out, PixelFn&& pixel) {
-  for (int y = tile.y0; y < tile.y1; ++y)
+  for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (ctx.cancelled()) return false;
       out.at(x, y) = pixel(x, y);
     }
+    ctx.row_done(tile.width());
+  }
   return true;
 }
 

@@ -23,7 +23,12 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   const std::unique_ptr<PixelSampler> sampler = make_pixel_sampler(settings, grid);
   if (!sampler) throw std::invalid_argument("unknown anti-aliasing mode \"" + settings.antialias.mode + "\"");
 
-  film = Film(settings.width, settings.height);
+  if (!film.allocate(settings.width, settings.height, control.cancel)) {
+    RenderStats stats;
+    stats.seconds = elapsed();
+    stats.cancelled = true;
+    return stats;
+  }
   // A sampler that shares tile borders needs each tile's left and upper neighbours finished
   // first: tiles then go out in wavefront order, and a worker waits (rarely) for a neighbour.
   const bool wavefront = sampler->shares_tile_borders();
@@ -46,7 +51,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
-    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel};
+    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel, &pixels_done};
     FilmTile tile_film;
     // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
     for (int k = next++; k < grid.count(); k = next++) {
@@ -60,7 +65,6 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
         tile_film.reset(tile);
         if (sampler->render_tile(tile, ctx, tile_film)) {
           film.store(tile_film);
-          pixels_done += static_cast<uint64_t>(tile.width()) * static_cast<uint64_t>(tile.height());
         } else {
           stopped = true;
         }

@@ -132,7 +132,7 @@ TEST_CASE("cli: bad scenes exit 2 and leave an existing output untouched", "[cli
              Catch::Contains("bad-material.json:4:45: error: /nodes/0/material: expected the name of a material"));
   CHECK(read_file(out) == "the good image from yesterday");
   for (const auto& entry : fs::directory_iterator(output_path("untouched")))
-    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);  // no temporary left behind
+    CHECK(entry.path().filename().string().find(".rtcli-") == std::string::npos);  // no temporary left behind
 
   const Run missing = rtcli("render no-such-scene.json -o '" + out + "'");
   CHECK(missing.code == 2);

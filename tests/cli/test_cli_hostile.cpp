@@ -26,7 +26,7 @@ Run rtcli_bounded(const std::string& args) { return rtcli(args, RTCLI_SOURCE_DIR
 
 bool has_temporary_files(const std::string& folder) {
   for (const auto& entry : fs::directory_iterator(folder))
-    if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+    if (entry.path().filename().string().rfind(".rtcli-", 0) == 0) return true;
   return false;
 }
 
