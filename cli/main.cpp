@@ -7,6 +7,7 @@
 
 #include "cli/bench_command.h"
 #include "cli/exit_codes.h"
+#include "cli/number_checks.h"
 #include "cli/render_command.h"
 #include "cli/validate_command.h"
 #include "core/render_settings.h"
@@ -24,16 +25,17 @@ int main(int argc, char** argv) {
   render_cmd->add_option("-o,--output", render.output,
                          "Output .png, NAME_####.png or .gif (default: <scene name>.png, or .gif for --frames A-B)");
   render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
-      ->check(CLI::Range(1u, 1024u));
+      ->check(whole_number(1, 1024));
   render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
-      ->check(CLI::Range(1, kMaxImageSide));
+      ->check(whole_number(1, kMaxImageSide));
   render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")
-      ->check(CLI::Range(1, kMaxImageSide));
-  render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)");
+      ->check(whole_number(1, kMaxImageSide));
+  render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)")
+      ->check(whole_number(0, UINT64_MAX));
   render_cmd->add_option("--integrator", render.integrator,
                          "whitted (default), or a debug view: normals, uv, depth, albedo (overrides the scene)");
   render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
-      ->check(CLI::Range(1, kMaxGlossySamples));
+      ->check(whole_number(1, kMaxGlossySamples));
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
   render_cmd->add_flag("--no-textures", render.no_textures, "Ignore colour and specular textures (kd and ks alone)");
   render_cmd->add_flag("--no-bumps", render.no_bumps, "Ignore bump and normal maps");
@@ -42,16 +44,16 @@ int main(int argc, char** argv) {
   render_cmd
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")
-      ->check(CLI::Range(1, kMaxShadowSamples));
+      ->check(whole_number(1, kMaxShadowSamples));
   render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: none, uniform or adaptive (overrides the scene)");
   render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
-      ->check(CLI::Range(1, kMaxSamplesPerAxis));
+      ->check(whole_number(1, kMaxSamplesPerAxis));
   render_cmd
       ->add_option("--aa-threshold", render.aa_threshold,
                    "Adaptive anti-aliasing: split a cell whose samples differ by more than T (0-1, displayed values)")
-      ->check(CLI::Range(0.0f, 1.0f));
+      ->check(real_number(0.0, 1.0));
   render_cmd->add_option("--aa-depth", render.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
-      ->check(CLI::Range(0, kMaxAdaptiveDepth));
+      ->check(whole_number(0, kMaxAdaptiveDepth));
   render_cmd
       ->add_option("--aa-positions", render.aa_positions,
                    "Adaptive anti-aliasing: sample cell corners (shared) or quarter centres")
@@ -66,12 +68,17 @@ int main(int argc, char** argv) {
                          "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "
                          "glTF file's first)");
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
+  const char* outside_help =
+      "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
+      "it, so that a downloaded model cannot show other files)";
+  render_cmd->add_flag("--allow-outside-files", render.allow_outside_files, outside_help);
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;
   CLI::App* validate_cmd = app.add_subcommand(
       "validate", "Check scene files (.json) and glTF models (.gltf/.glb) without rendering: every problem, located");
   validate_cmd->add_option("files", validate.files, "Files to check")->required();
+  validate_cmd->add_flag("--allow-outside-files", validate.allow_outside_files, outside_help);
   validate_cmd->add_flag("--json", validate.json,
                          "Print the problems as a JSON array (file, line, column, pointer, severity, message)");
 

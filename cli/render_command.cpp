@@ -206,7 +206,7 @@ int run_render(const RenderCommand& cmd) {
   const auto load_start = std::chrono::steady_clock::now();
   Diagnostics diags;
   std::optional<LoadedScene> loaded =
-      load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0), cmd.camera), diags);
+      load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files), diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
   const Timeline& timeline = loaded->graph.timeline;

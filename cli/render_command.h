@@ -2,7 +2,8 @@
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
 //   [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
-//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME] [--dither] [--quiet]`
+//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME] [--dither] [--allow-outside-files]
+//   [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,7 @@ struct RenderCommand {
   std::optional<std::string> frames;  // "A-B" or "N" (--frames), or "N" (--frame)
   std::optional<std::string> camera;  // a glTF camera by name
   bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
+  bool allow_outside_files = false;   // glTF files may read images and buffers outside their folder
   bool quiet = false;
 };
 

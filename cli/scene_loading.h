@@ -7,8 +7,12 @@
 
 namespace rt {
 
-inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt) {
-  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::move(camera)};
+// outside_files: --allow-outside-files (LoadLimits::outside_files).
+inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt,
+                                    bool outside_files = false) {
+  LoadOptions options{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::move(camera)};
+  options.limits.outside_files = outside_files;
+  return options;
 }
 
 }  // namespace rt

@@ -26,7 +26,7 @@ int run_validate(const ValidateCommand& cmd) {
   bool all_valid = true;
   Json list = Json::array();
   for (const std::string& file : cmd.files) {
-    const Diagnostics diags = validate_file(file, cli_load_options());
+    const Diagnostics diags = validate_file(file, cli_load_options(0, std::nullopt, cmd.allow_outside_files));
     all_valid = all_valid && !diags.has_errors();
     if (cmd.json) {
       for (const Diagnostic& d : diags.all()) list.push_back(to_json(d));

@@ -11,6 +11,7 @@ namespace rt {
 struct ValidateCommand {
   std::vector<std::string> files;
   bool json = false;  // print one JSON array of diagnostics instead of text
+  bool allow_outside_files = false;  // glTF files may read images and buffers outside their folder
 };
 
 int run_validate(const ValidateCommand& cmd);
