@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
+#include <set>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -114,6 +116,7 @@ class Builder {
     const float t0 = g.timeline.seconds(g.timeline.first_frame);
     std::vector<PlacementIssue> issues;
     PrimitiveSet placed = g.place(t0, &issues);
+    warn_of_hidden_files(g, issues);
     for (const PlacementIssue& issue : issues) {
       if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
       error(pointers_[issue.node],
@@ -151,6 +154,21 @@ class Builder {
     const double last = std::ceil(static_cast<double>(end) * g.timeline.fps - 1e-3);
     g.timeline.last_frame =
         a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
+  }
+
+  // A glTF file's parts scaled to nothing are hidden on purpose; all of them is a file that draws
+  // nothing at all, which deserves a word.
+  void warn_of_hidden_files(const SceneGraph& g, const std::vector<PlacementIssue>& issues) {
+    std::map<std::string, std::pair<size_t, std::set<uint32_t>>> files;  // pointer: nodes with geometry, singular ones
+    for (size_t n = 0; n < g.nodes.size(); ++n)
+      if (from_file_[n] && g.nodes[n].has_geometry()) ++files[pointers_[n]].first;
+    for (const PlacementIssue& issue : issues)
+      if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node])
+        files[pointers_[issue.node]].second.insert(issue.node);
+    for (const auto& [pointer, nodes] : files)
+      if (nodes.first > 0 && nodes.second.size() == nodes.first)
+        warning(pointer, "the glTF file has no triangles to render: every node of it that carries a mesh has a "
+                         "singular world transform in the first frame (a zero scale, or a matrix that flattens it)");
   }
 
   // Many copies of one mesh or shape in one place (a glTF file instancing a mesh at one point,
