@@ -54,6 +54,26 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
   return h;
 }
 
+// A define-Huffman-table segment, its tables read as stb_image reads them (by their own counts,
+// not the segment's length). stb_image 2.27 builds each table before checking it: more than 256
+// codes in one writes past its arrays (fixed in 2.28, not in Debian 12's package). False for such
+// a table.
+bool huffman_tables_fit(const unsigned char* b, size_t size, size_t pos) {
+  const auto byte = [&](size_t i) -> unsigned { return i < size ? b[i] : 0; };  // stb reads 0 past the end
+  int64_t left = static_cast<int64_t>(be16(b + pos)) - 2;
+  size_t p = pos + 2;
+  while (left > 0) {
+    const unsigned q = byte(p++);
+    if ((q >> 4) > 1 || (q & 15) > 3) return true;  // refused by stb_image before it builds anything
+    unsigned codes = 0;
+    for (int i = 0; i < 16; ++i) codes += byte(p++);
+    if (codes > 256) return false;
+    p += codes;
+    left -= 17 + static_cast<int64_t>(codes);
+  }
+  return true;
+}
+
 bool is_start_of_frame(unsigned m) { return m >= 0xc0 && m <= 0xcf && m != 0xc4 && m != 0xc8 && m != 0xcc; }
 
 // Walks a JPEG's markers (ITU T.81, Annex B): the frame header gives the size and the coding,
@@ -76,6 +96,10 @@ std::optional<ImageHeader> jpeg_header(const unsigned char* b, size_t size, std:
     if (marker == 0x00 || marker == 0x01 || marker == 0xd8 || (marker >= 0xd0 && marker <= 0xd7)) continue;  // no length
     if (pos + 2 > size) break;
     const size_t length = be16(b + pos);
+    if (marker == 0xc4 && !huffman_tables_fit(b, size, pos)) {  // even in a truncated segment
+      error = "expected Huffman tables of at most 256 codes each in a JPEG, found one with more";
+      return std::nullopt;
+    }
     if (length < 2 || length > size - pos) break;  // truncated: the decoder says so
     if (is_start_of_frame(marker) && !frame) {
       if (marker != 0xc0 && marker != 0xc1 && marker != 0xc2) {

@@ -2,12 +2,18 @@
 # Builds the libFuzzer targets (clang, with AddressSanitizer and UndefinedBehaviorSanitizer) in
 # build-fuzz/ and runs one of them:
 #
-#   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]      TARGET: scene | gltf | bvh | texture
+#   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]
 #
-#   scene  JSON scene files: parse, check, build, render a few pixels
-#   gltf   glTF models (.gltf text and .glb): import, place, build a BVH
-#   bvh    the BVH builder and traversal on triangles with extreme coordinates
-#   texture  image files (PNG, JPEG): decode, build mip levels, sample with every filter and wrap
+#   scene         JSON scene files: parse, check, build, render a few pixels
+#   gltf          glTF models (.gltf text and .glb): import, place, build a BVH
+#   bvh           the BVH builder and traversal on triangles with extreme coordinates
+#   texture       image bytes of any format: identify, decode (PNG, JPEG), build mip levels, sample
+#                 with every filter and wrap
+#   texture_file  the same bytes as a scene file's texture file: load, build, render 4x4
+#   gltf_image    the same bytes as a glTF image in a buffer view, used in every material slot
+#   extras_image  the same bytes as the image file a glTF material's rtcli_bump extras name
+#
+#   tools/fuzz.sh all SECONDS    every target in turn, SECONDS each
 #
 # The corpus lives in build-fuzz/corpus/TARGET, seeded on the first run from scenes/, tests/,
 # ../shared/gltf and tests/fuzz/regressions/TARGET. An input that crashes, leaks, hangs (10 s),
@@ -15,9 +21,14 @@
 # Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-if [ $# -lt 2 ] || ! [[ "$1" =~ ^(scene|gltf|bvh|texture)$ ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
-  echo "usage: tools/fuzz.sh scene|gltf|bvh|texture SECONDS [libFuzzer options...]" >&2
+targets="scene gltf bvh texture texture_file gltf_image extras_image"
+if [ $# -lt 2 ] || ! [[ " $targets all " == *" $1 "* ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
+  echo "usage: tools/fuzz.sh ${targets// /|}|all SECONDS [libFuzzer options...]" >&2
   exit 2
+fi
+if [ "$1" = all ]; then
+  for t in $targets; do "$0" "$t" "${@:2}" || exit $?; done
+  exit 0
 fi
 target="$1" seconds="$2"
 shift 2
@@ -42,7 +53,9 @@ if [ -z "$(ls -A "$corpus")" ]; then
     scene) seed "$root"/scenes/*.json "$root"/tests/data/**/*.json ;;
     gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
     bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
-    texture) seed "$root"/scenes/textures/*.png "$root"/tests/data/bad/textures/*.png "$root"/../shared/gltf/**/*.png ;;
+    texture | texture_file | gltf_image | extras_image)
+      seed "$root"/tests/data/images/* "$root"/tests/data/bad/textures/*.png "$root"/tests/fuzz/regressions/texture/*
+      if [ "$target" = texture ]; then seed "$root"/scenes/textures/*.png "$root"/../shared/gltf/**/*.png; fi ;;
   esac
   seed "$root"/tests/fuzz/regressions/"$target"/*
 fi
@@ -50,5 +63,6 @@ echo "fuzzing $target for $seconds s; corpus $(ls "$corpus" | wc -l) files" >&2
 cd "$build"  # libFuzzer writes crash-* files relative to -artifact_prefix
 dict=()
 [ -f "$root/tests/fuzz/$target.dict" ] && dict=(-dict="$root/tests/fuzz/$target.dict")
+[[ "$target" =~ texture|image ]] && dict=(-dict="$root/tests/fuzz/image.dict")
 exec "$build/fuzz_$target" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
   -max_len=262144 "${dict[@]}" -artifact_prefix="$artifacts/" -print_final_stats=1 "$@"

@@ -4,8 +4,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
@@ -49,6 +55,60 @@ bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) {
   for (int a = 0; a < 3; ++a)
     if (!(p[a] >= box.lo[a] + margin && p[a] <= box.hi[a] - margin)) return false;
   return true;
+}
+
+// A folder of this process's own for the files an input becomes.
+std::filesystem::path scratch_folder() {
+  const auto folder = std::filesystem::temp_directory_path() / ("rtcli-fuzz-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+void write_bytes(const std::filesystem::path& path, const uint8_t* data, size_t size) {
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+// A square with UVs whose material uses image 0 in every slot glTF has (and the alpha mask).
+nlohmann::json textured_square(nlohmann::json image) {
+  const nlohmann::json slot = {{"index", 0}};
+  return {{"asset", {{"version", "2.0"}}},
+          {"scenes", {{{"nodes", {0}}}}},
+          {"nodes", {{{"mesh", 0}}}},
+          {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"material", 0}}}}}}},
+          {"materials",
+           {{{"pbrMetallicRoughness", {{"baseColorTexture", slot}, {"metallicRoughnessTexture", slot}}},
+             {"normalTexture", slot},
+             {"emissiveTexture", slot},
+             {"emissiveFactor", {1, 1, 1}},
+             {"alphaMode", "MASK"}}}},
+          {"textures", {{{"source", 0}}}},
+          {"images", {std::move(image)}},
+          {"accessors",
+           {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+             {"min", {-1, -1, 0}}, {"max", {1, 1, 0}}},
+            {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
+}
+
+// The square's positions and UVs.
+std::vector<unsigned char> square_data() {
+  const float v[] = {-1, -1, 0, 1, -1, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 1};
+  std::vector<unsigned char> out(sizeof v);
+  std::memcpy(out.data(), v, sizeof v);
+  return out;
+}
+
+// Imports a glTF file's bytes from `folder` and places it; an import may fail (with a message).
+std::string import_and_place(const std::vector<unsigned char>& bytes, const std::string& folder) {
+  const LoadOptions options = fuzz_options();
+  ImportError error;
+  LimitUsage usage;
+  const auto model = import_gltf_bytes(bytes, folder, std::nullopt, options.limits, usage, error);
+  if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
+  for (const Texture& t : model->textures)
+    for (const TextureFilter filter : {TextureFilter::kNearest, TextureFilter::kTrilinear})
+      if (!is_finite(t.sample(Vec2(0.3f, 0.7f), TextureWrap::kRepeat, filter, 0.01f)))
+        return "a glTF texture sample is not finite";
+  return "";
 }
 
 }  // namespace
@@ -164,6 +224,71 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
   }
   return "";
+}
+
+std::string texture_file(const uint8_t* data, size_t size) {
+  const auto folder = scratch_folder();
+  write_bytes(folder / "texture.img", data, size);
+  const std::string scene = R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+    "lights": [{"type": "point", "position": [1, 2, 3]}],
+    "materials": {"m": {"texture": "texture.img", "bump": "texture.img", "specular_texture": "texture.img"}},
+    "nodes": [{"shape": "sphere", "material": "m"}]})";
+  const LoadOptions options = fuzz_options();
+  Diagnostics diags;
+  auto doc = parse_json_text((folder / "scene.json").string(), scene, diags);
+  if (!doc) return "the texture_file target's scene does not parse";
+  auto desc = parse_scene(*doc, options, diags);
+  if (!desc) return "the texture_file target's scene is refused";
+  auto built = build_scene(*desc, &*doc, options, diags);
+  if (!built) return diags.has_errors() ? "" : "a scene whose texture failed came with no error";
+  RenderSettings settings = desc->render;
+  settings.width = settings.height = 4;
+  settings.threads = 1;
+  Image image;
+  render(built->first_frame, settings, image);
+  for (const Vec3& p : image.pixels)
+    if (!is_finite(p)) return "a textured pixel is not finite";
+  return "";
+}
+
+std::string gltf_image(const uint8_t* data, size_t size) {
+  std::vector<unsigned char> bin = square_data();
+  const size_t image_offset = bin.size();
+  bin.insert(bin.end(), data, data + size);
+  while (bin.size() % 4) bin.push_back(0);
+  nlohmann::json doc = textured_square({{"bufferView", 1}, {"mimeType", "image/png"}});
+  doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 60}}, {{"buffer", 0}, {"byteOffset", image_offset}, {"byteLength", size}}};
+  if (size == 0) doc["bufferViews"][1]["byteLength"] = 1;  // glTF needs at least one byte
+  doc["buffers"] = {{{"byteLength", bin.size()}}};
+  std::string json = doc.dump();
+  while (json.size() % 4) json.push_back(' ');
+  const auto u32 = [](std::vector<unsigned char>& out, uint32_t v) {
+    for (int k = 0; k < 4; ++k) out.push_back(static_cast<unsigned char>(v >> (8 * k)));
+  };
+  std::vector<unsigned char> glb;
+  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+  u32(glb, 2);
+  u32(glb, static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  u32(glb, static_cast<uint32_t>(json.size()));
+  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+  glb.insert(glb.end(), json.begin(), json.end());
+  u32(glb, static_cast<uint32_t>(bin.size()));
+  glb.insert(glb.end(), {'B', 'I', 'N', '\0'});
+  glb.insert(glb.end(), bin.begin(), bin.end());
+  return import_and_place(glb, scratch_folder().string());
+}
+
+std::string extras_image(const uint8_t* data, size_t size) {
+  const auto folder = scratch_folder();
+  write_bytes(folder / "bump.img", data, size);
+  nlohmann::json doc = textured_square({{"uri", "bump.img"}});
+  doc["materials"][0]["extras"] = {{"rtcli_bump", {{"image", "bump.img"}, {"strength", 2}}}};
+  const std::vector<unsigned char> bin = square_data();
+  write_bytes(folder / "square.bin", bin.data(), bin.size());
+  doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 60}}};
+  doc["buffers"] = {{{"byteLength", 60}, {"uri", "square.bin"}}};
+  const std::string json = doc.dump();
+  return import_and_place(std::vector<unsigned char>(json.begin(), json.end()), folder.string());
 }
 
 std::string texture_image(const uint8_t* data, size_t size) {

@@ -19,9 +19,16 @@ std::string gltf_model(const uint8_t* data, size_t size);
 // dropped): build a BVH, check its structure and trace rays against brute force.
 std::string bvh_build(const uint8_t* data, size_t size);
 
-// An image file (PNG, JPEG, anything stb_image sniffs): decode as colour and as data, then
-// sample it with every filter and wrap mode at extreme coordinates; every value must be finite.
+// Image bytes of any format: decode as colour, data and alpha (PNG and JPEG decode, the rest is
+// refused by name), then sample with every filter and wrap mode at extreme coordinates; every
+// value must be finite.
 std::string texture_image(const uint8_t* data, size_t size);
+// The same bytes by each path an image takes into a scene: a scene file's texture file (loaded,
+// then a 4x4 render), a glTF image in a buffer view (as colour, metallic-roughness, normal map,
+// emission and alpha mask), and the image file a glTF material's rtcli_bump extras name.
+std::string texture_file(const uint8_t* data, size_t size);
+std::string gltf_image(const uint8_t* data, size_t size);
+std::string extras_image(const uint8_t* data, size_t size);
 
 // For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.
 int abort_on_problem(const std::string& problem);

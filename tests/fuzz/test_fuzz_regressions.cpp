@@ -33,3 +33,12 @@ TEST_CASE("fuzz regressions: BVH builds", "[fuzz]") { CHECK(replay("bvh", rt::fu
 TEST_CASE("fuzz regressions: texture images", "[fuzz]") {
   CHECK(replay("texture", rt::fuzz::texture_image) >= 2);
 }
+
+// Every seed image (one of each format stb_image knew, and the hostile ones) by every path an
+// image takes into a scene.
+TEST_CASE("fuzz regressions: image seeds by every path", "[fuzz]") {
+  CHECK(replay("../../data/images", rt::fuzz::texture_image) >= 20);
+  CHECK(replay("../../data/images", rt::fuzz::texture_file) >= 20);
+  CHECK(replay("../../data/images", rt::fuzz::gltf_image) >= 20);
+  CHECK(replay("../../data/images", rt::fuzz::extras_image) >= 20);
+}
