@@ -156,6 +156,16 @@ TEST_CASE("cli limits: a glTF file's images and buffers stay in its folder unles
   CHECK_THAT(r.output, Catch::Contains("\"secret-link.png\" is outside the model's folder"));
 }
 
+TEST_CASE("cli limits: a glTF image in another format is a warning naming it once", "[cli][limits]") {
+  const std::string model = triangle_model("gif-image", {{"uri", "image.gif"}});
+  write_file("gif-image/image.gif", read_file(rt::test::source_path("tests/data/images/image.gif")));
+  const Run r = rtcli_bounded("validate '" + model + "'");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("material 0 baseColorTexture: expected a PNG or JPEG image, found a GIF image in \"" +
+                                       output_path("gif-image/image.gif") + "\"; ignored"));
+  CHECK_THAT(r.output, !Catch::Contains("\"\""));  // quoted once, not twice
+}
+
 TEST_CASE("cli limits: a glTF file whose only node is singular says it draws nothing", "[cli][limits]") {
   std::string buffer;
   rt::test::append<float>(buffer, {-1, -1, 0, 1, -1, 0, 0, 1, 0});
