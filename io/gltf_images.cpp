@@ -56,7 +56,7 @@ TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encodi
     out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " has no image; ignored");
     return slot;
   }
-  slot.texture = decode(static_cast<size_t>(texture.source), encoding, where);
+  slot.texture = decode(source_of(static_cast<size_t>(texture.source)), encoding, where);
   return slot;
 }
 
@@ -97,31 +97,39 @@ std::span<const unsigned char> ImageDecoder::view_bytes(int index) const {
   return std::span<const unsigned char>(data).subspan(view.byteOffset, view.byteLength);
 }
 
+ImageDecoder::Source ImageDecoder::source_of(size_t image_index) const {
+  const tinygltf::Image& image = model_.images[image_index];
+  const std::string name = "image " + to_string(image_index);
+  if (image.bufferView >= 0)
+    return {"view " + to_string(image.bufferView), name + " (buffer view " + to_string(image.bufferView) + ")",
+            view_bytes(image.bufferView), "", ""};
+  if (!image.image.empty()) return {name, name, image.image, "", ""};
+  if (!image.uri.empty()) return file_source(image.uri);
+  return {"", name, {}, "", ""};
+}
+
+ImageDecoder::Source ImageDecoder::file_source(const std::string& uri) const {
+  const std::string path = resolve_path(base_dir_, percent_decoded(uri));
+  return {"file " + path, "\"" + path + "\"", {}, path, uri};
+}
+
 bool ImageDecoder::fit_in_budget() {
   std::set<std::string> seen;
   uint64_t needed = 0;
   size_t counted = 0;
   for (const tinygltf::Texture& texture : model_.textures) {
     if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) continue;
-    const tinygltf::Image& image = model_.images[static_cast<size_t>(texture.source)];
-    std::string source;
-    std::span<const unsigned char> bytes;
+    const Source source = source_of(static_cast<size_t>(texture.source));
+    if (source.key.empty() || !seen.insert(source.key).second) continue;
     std::optional<std::vector<unsigned char>> file;
-    if (image.bufferView >= 0) {
-      source = "view " + to_string(image.bufferView);
-      bytes = view_bytes(image.bufferView);
-    } else if (!image.image.empty()) {
-      source = "image " + to_string(texture.source);
-      bytes = image.image;
-    } else if (!image.uri.empty()) {
-      const std::string path = resolve_path(base_dir_, percent_decoded(image.uri));
-      source = "file " + path;
-      if (seen.count(source) || (!limits_.outside_files && !is_inside_folder(path, base_dir_))) continue;
-      std::string ignored;  // an unreadable file is a warning when its texture is decoded
-      file = read_input_bytes(path, kMaxTextureFileBytes, ignored);
+    std::span<const unsigned char> bytes = source.bytes;
+    if (!source.path.empty()) {
+      // A file outside the folder or unreadable is reported when its texture is decoded.
+      std::string ignored;
+      if (limits_.outside_files || is_inside_folder(source.path, base_dir_))
+        file = read_input_bytes(source.path, kMaxTextureFileBytes, ignored);
       if (file) bytes = *file;
     }
-    if (bytes.empty() || !seen.insert(source).second) continue;
     std::string ignored;  // so is a broken image
     const auto header = read_image_header(bytes.data(), bytes.size(), ignored);
     if (!header || uint64_t{header->width} * header->height > limits_.texture_texels) continue;
@@ -137,61 +145,48 @@ bool ImageDecoder::fit_in_budget() {
   return false;
 }
 
-template <class Decode>
-uint32_t ImageDecoder::once(const std::string& source, TextureEncoding encoding, const Decode& decode) {
+uint32_t ImageDecoder::decode(const Source& source, TextureEncoding encoding, const std::string& where) {
   if (!failure_.empty()) return kNoTexture;
-  const auto key = std::make_pair(source, encoding);
-  if (const auto it = decoded_.find(key); it != decoded_.end()) return it->second;
-  const uint32_t texture = decode();
-  decoded_.emplace(key, texture);
-  return texture;
-}
-
-uint32_t ImageDecoder::decode(size_t image_index, TextureEncoding encoding, const std::string& where) {
-  const tinygltf::Image& image = model_.images[image_index];
-  const std::string name = "image " + to_string(image_index);
-  if (image.bufferView >= 0) {
-    return once("view " + to_string(image.bufferView), encoding, [&] {
-      const auto bytes = view_bytes(image.bufferView);
-      if (bytes.empty()) {
-        out_.warnings.push_back(where + ": " + name + "'s buffer view holds no image; ignored");
-        return kNoTexture;
-      }
-      return decode_bytes(bytes, name + " (buffer view " + to_string(image.bufferView) + ")", encoding, where);
-    });
+  if (source.key.empty()) {
+    out_.warnings.push_back(where + ": " + source.name + " has no data; ignored");
+    return kNoTexture;
   }
-  if (!image.image.empty())  // a data URI's bytes
-    return once(name, encoding, [&] { return decode_bytes(image.image, name, encoding, where); });
-  if (!image.uri.empty()) return decode_file(image.uri, encoding, where);
-  out_.warnings.push_back(where + ": " + name + " has no data; ignored");
-  return kNoTexture;
+  const auto key = std::make_pair(source.key, encoding);
+  if (const auto it = decoded_.find(key); it != decoded_.end()) return it->second;
+  uint32_t texture = kNoTexture;
+  if (source.path.empty() && source.bytes.empty()) {
+    out_.warnings.push_back(where + ": " + source.name + " holds no image; ignored");
+  } else if (source.path.empty()) {
+    texture = decode_bytes(source.bytes, source.name, encoding, where);
+  } else if (const auto file = read_file(source, where)) {
+    texture = decode_bytes(*file, source.name, encoding, where);
+  }
+  if (failure_.empty()) decoded_.emplace(key, texture);
+  return texture;
 }
 
 TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where) {
   TextureSlot slot;
-  slot.texture = decode_file(uri, TextureEncoding::kLinear, where);
+  slot.texture = decode(file_source(uri), TextureEncoding::kLinear, where);
   return slot;
 }
 
-// The file a URI names, in the model's folder or below (links resolved) unless the caller
-// allows more: a downloaded model must not show the user's other files in its render.
-uint32_t ImageDecoder::decode_file(const std::string& uri, TextureEncoding encoding, const std::string& where) {
-  const std::string path = resolve_path(base_dir_, percent_decoded(uri));
-  return once("file " + path, encoding, [&] {
-    const std::string name = "\"" + path + "\"";
-    if (!limits_.outside_files && !is_inside_folder(path, base_dir_)) {
-      failure_ = where + ": " + outside_folder_message(uri, base_dir_);
-      return kNoTexture;
-    }
-    std::string error;
-    auto file = read_input_bytes(path, kMaxTextureFileBytes, error);
-    if (!file) {
-      out_.warnings.push_back(where + ": cannot read " + name + " (" + error + "); ignored");
-      return kNoTexture;
-    }
-    if (std::find(out_.files.begin(), out_.files.end(), path) == out_.files.end()) out_.files.push_back(path);
-    return decode_bytes(*file, name, encoding, where);
-  });
+// In the model's folder or below (links resolved) unless the caller allows more: a downloaded
+// model must not show the user's other files in its render.
+std::optional<std::vector<unsigned char>> ImageDecoder::read_file(const Source& source, const std::string& where) {
+  if (!limits_.outside_files && !is_inside_folder(source.path, base_dir_)) {
+    failure_ = where + ": " + outside_folder_message(source.uri, base_dir_);
+    return std::nullopt;
+  }
+  std::string error;
+  auto file = read_input_bytes(source.path, kMaxTextureFileBytes, error);
+  if (!file) {
+    out_.warnings.push_back(where + ": cannot read " + source.name + " (" + error + "); ignored");
+    return std::nullopt;
+  }
+  if (std::find(out_.files.begin(), out_.files.end(), source.path) == out_.files.end())
+    out_.files.push_back(source.path);
+  return file;
 }
 
 uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const std::string& name,
@@ -202,8 +197,9 @@ uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const 
     if (error.over_budget) {
       failure_ = where + ": " + error.message;
       over_limit_ = true;
+    } else {
+      out_.warnings.push_back(where + ": " + error.message + "; ignored");
     }
-    else out_.warnings.push_back(where + ": " + error.message + "; ignored");
     return kNoTexture;
   }
   out_.textures.push_back(std::move(*texture));

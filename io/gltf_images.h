@@ -9,6 +9,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -54,15 +55,27 @@ class ImageDecoder {
   bool failure_is_over_limit() const { return over_limit_; }
 
  private:
-  uint32_t decode(size_t image_index, TextureEncoding encoding, const std::string& where);
-  uint32_t decode_file(const std::string& uri, TextureEncoding encoding, const std::string& where);
+  // Where an image's bytes are: the key images share a texture by (one per encoding), the name
+  // messages give it, and its bytes in memory or the path of its file.
+  struct Source {
+    std::string key;  // "view N", "image N" (a data URI's bytes), "file PATH"; empty: no data
+    std::string name;
+    std::span<const unsigned char> bytes;  // a buffer view's or a data URI's
+    std::string path;                      // or a file's, resolved against the model's folder
+    std::string uri;                       // the file's URI, as the model writes it
+  };
+  Source source_of(size_t image_index) const;
+  Source file_source(const std::string& uri) const;
+
+  // The texture decoded from `source` as `encoding`: decoded the first time, shared after.
+  uint32_t decode(const Source& source, TextureEncoding encoding, const std::string& where);
+  // A file's bytes, if it is in the model's folder (failure() otherwise) and readable (a warning
+  // otherwise).
+  std::optional<std::vector<unsigned char>> read_file(const Source& source, const std::string& where);
   uint32_t decode_bytes(std::span<const unsigned char> bytes, const std::string& name, TextureEncoding encoding,
                         const std::string& where);
   // A buffer view's bytes (empty if it has none).
   std::span<const unsigned char> view_bytes(int view) const;
-  // The texture already decoded from `source` as `encoding`, or decoded now by `decode`.
-  template <class Decode>
-  uint32_t once(const std::string& source, TextureEncoding encoding, const Decode& decode);
   void read_sampler(int sampler, TextureMapping& mapping);
   void read_transform(const tinygltf::Value& transform, TextureMapping& mapping, const std::string& where);
 
@@ -71,8 +84,7 @@ class ImageDecoder {
   const LoadLimits& limits_;
   LimitUsage& usage_;
   ImportedModel& out_;
-  // Per source ("view N", "file PATH", "image N" for a data URI) and encoding: its texture, or
-  // kNoTexture if unusable.
+  // Per source key and encoding: its texture, or kNoTexture if unusable.
   std::map<std::pair<std::string, TextureEncoding>, uint32_t> decoded_;
   std::string failure_;
   bool over_limit_ = false;
