@@ -102,13 +102,16 @@ bool split_wide_rotations(const JsonReader& r, const std::string& ptr, const std
     total += steps[k];
   }
   if (total > static_cast<double>(keys_left)) {
-    r.error(ptr + "/keys", "expected at most " + std::to_string(keys_limit) +
-                               " animation keys in a scene, counting the steps of at most 90 degrees that wide "
-                               "rotations are split into, found " +
-                               (total > 1e15 ? std::string("more than 10^15") : std::to_string(static_cast<uint64_t>(total))) +
-                               " in this track" +
-                               (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it" : "") +
-                               " (a limit that keeps memory bounded; see README, \"Limits\")");
+    r.error(
+        ptr + "/keys",
+        "expected at most " + std::to_string(keys_limit) +
+            " animation keys in a scene, counting the steps of at most 90 degrees that wide "
+            "rotations are split into, found " +
+            (total > 1e15 ? std::string("more than 10^15") : std::to_string(static_cast<uint64_t>(total))) +
+            " in this track" +
+            (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it"
+                                    : "") +
+            " (a limit that keeps memory bounded; see README, \"Limits\")");
     return false;
   }
   Keyframes dense;
@@ -209,7 +212,7 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
 }  // namespace
 
 std::optional<AnimationDescription> parse_animation(const JsonReader& r, const Json& value, const std::string& ptr,
-                                                   uint64_t max_keys) {
+                                                    uint64_t max_keys) {
   ObjectReader o(r, value, ptr);
   if (!o.valid()) {
     r.expected(ptr, "an object with fps, frames and tracks", value);

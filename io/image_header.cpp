@@ -46,8 +46,8 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
                      ((colour == 2 || colour == 4 || colour == 6) && (depth == 8 || depth == 16));
   if (!valid || b[26] != 0 || b[27] != 0 || b[28] > 1) {
     error = "expected a PNG header PNG defines, found bit depth " + to_string(depth) + " with colour type " +
-            to_string(colour) + " (compression " + to_string(b[26]) + ", filter " + to_string(b[27]) +
-            ", interlace " + to_string(b[28]) + ")";
+            to_string(colour) + " (compression " + to_string(b[26]) + ", filter " + to_string(b[27]) + ", interlace " +
+            to_string(b[28]) + ")";
     return std::nullopt;
   }
   h.sixteen_bit = depth == 16;
@@ -92,8 +92,9 @@ std::optional<ImageHeader> jpeg_header(const unsigned char* b, size_t size, std:
     while (pos < size && b[pos] == 0xff) ++pos;  // fill bytes
     if (pos >= size) break;
     const unsigned marker = b[pos++];
-    if (marker == 0xd9) break;                                                         // end of image
-    if (marker == 0x00 || marker == 0x01 || marker == 0xd8 || (marker >= 0xd0 && marker <= 0xd7)) continue;  // no length
+    if (marker == 0xd9) break;  // end of image
+    if (marker == 0x00 || marker == 0x01 || marker == 0xd8 || (marker >= 0xd0 && marker <= 0xd7))
+      continue;  // no length
     if (pos + 2 > size) break;
     const size_t length = be16(b + pos);
     if (marker == 0xc4 && !huffman_tables_fit(b, size, pos)) {  // even in a truncated segment
@@ -105,8 +106,8 @@ std::optional<ImageHeader> jpeg_header(const unsigned char* b, size_t size, std:
       if (marker != 0xc0 && marker != 0xc1 && marker != 0xc2) {
         error = "expected a baseline or progressive JPEG (Huffman coding), found one coded as " +
                 std::string(marker == 0xc3 || marker == 0xc7 || marker == 0xcb || marker == 0xcf ? "lossless"
-                            : marker >= 0xc9                                                      ? "arithmetic"
-                                                                                                  : "hierarchical") +
+                            : marker >= 0xc9                                                     ? "arithmetic"
+                                                                                                 : "hierarchical") +
                 ", which rtcli cannot decode";
         return std::nullopt;
       }
@@ -177,8 +178,8 @@ std::optional<ImageHeader> read_image_header(const unsigned char* bytes, size_t 
   const char* format = image_format_name(bytes, size);
   if (format && std::strcmp(format, "PNG") == 0) return png_header(bytes, size, error);
   if (format && std::strcmp(format, "JPEG") == 0) return jpeg_header(bytes, size, error);
-  error = format ? std::string("expected a PNG or JPEG image, found a") + (std::strchr("AEIOU", format[0]) ? "n " : " ") +
-                       format + " image"
+  error = format ? std::string("expected a PNG or JPEG image, found a") +
+                       (std::strchr("AEIOU", format[0]) ? "n " : " ") + format + " image"
                  : "expected a PNG or JPEG image, found neither (" + first_bytes(bytes, size) + ")";
   return std::nullopt;
 }

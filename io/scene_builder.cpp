@@ -1,24 +1,17 @@
 #include "io/scene_builder.h"
 
 #include <algorithm>
-#include <array>
-#include <map>
-#include <set>
 #include <cmath>
-#include <tuple>
-#include <utility>
 
 #include "core/thread_count.h"
 #include "io/gltf_loader.h"
 #include "io/json_reader.h"
 #include "io/model_library.h"
+#include "io/placement_warnings.h"
 #include "io/texture_library.h"
 
 namespace rt {
 namespace {
-
-// Copies in one place from which a scene gets a warning (Builder::warn_of_stacks).
-constexpr size_t kStackWarning = 64;
 
 class Builder {
  public:
@@ -116,7 +109,8 @@ class Builder {
     const float t0 = g.timeline.seconds(g.timeline.first_frame);
     std::vector<PlacementIssue> issues;
     PrimitiveSet placed = g.place(t0, &issues);
-    warn_of_hidden_files(g, issues);
+    for (const auto& [pointer, message] : hidden_file_warnings(g, pointers_, from_file_, issues))
+      warning(pointer, message);
     for (const PlacementIssue& issue : issues) {
       if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
       error(pointers_[issue.node],
@@ -126,7 +120,7 @@ class Builder {
                 : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
                   "that reaches infinity");
     }
-    warn_of_stacks(g, t0);
+    if (auto w = stacked_copies_warning(g, t0, pointers_)) warning(w->first, w->second);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
@@ -154,53 +148,6 @@ class Builder {
     const double last = std::ceil(static_cast<double>(end) * g.timeline.fps - 1e-3);
     g.timeline.last_frame =
         a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
-  }
-
-  // A glTF file's parts scaled to nothing are hidden on purpose; all of them is a file that draws
-  // nothing at all, which deserves a word.
-  void warn_of_hidden_files(const SceneGraph& g, const std::vector<PlacementIssue>& issues) {
-    std::map<std::string, std::pair<size_t, std::set<uint32_t>>> files;  // pointer: nodes with geometry, singular ones
-    for (size_t n = 0; n < g.nodes.size(); ++n)
-      if (from_file_[n] && g.nodes[n].has_geometry()) ++files[pointers_[n]].first;
-    for (const PlacementIssue& issue : issues)
-      if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node])
-        files[pointers_[issue.node]].second.insert(issue.node);
-    for (const auto& [pointer, nodes] : files)
-      if (nodes.first > 0 && nodes.second.size() == nodes.first)
-        warning(pointer, "the glTF file has no triangles to render: every node of it that carries a mesh has a "
-                         "singular world transform in the first frame (a zero scale, or a matrix that flattens it)");
-  }
-
-  // Many copies of one mesh or shape in one place (a glTF file instancing a mesh at one point,
-  // nodes duplicated by mistake) make every ray that reaches them test each copy: no BVH can
-  // separate them, and the render crawls. Said at load, from the placements (so validate says it
-  // too, without building a BVH).
-  void warn_of_stacks(const SceneGraph& g, float seconds) {
-    const std::vector<Mat4> world = g.world_transforms(seconds);
-    using Placement = std::pair<int64_t, std::array<float, 16>>;  // mesh (or -1 - shape), world matrix
-    std::vector<std::pair<Placement, size_t>> copies;                // and the node
-    for (size_t n = 0; n < g.nodes.size(); ++n) {
-      const SceneNode& node = g.nodes[n];
-      if (!node.has_geometry()) continue;
-      const int64_t what = node.shape ? -1 - static_cast<int64_t>(*node.shape) : node.meshes.front().mesh;
-      for (size_t c = 0; c < std::max<size_t>(1, node.instancing.size()); ++c) {
-        const Mat4 m = node.instancing.empty() ? world[n] : world[n] * node.instancing[c];
-        std::array<float, 16> key;
-        for (int k = 0; k < 16; ++k) key[static_cast<size_t>(k)] = m[k / 4][k % 4];
-        copies.push_back({{what, key}, n});
-      }
-    }
-    std::sort(copies.begin(), copies.end());
-    size_t most = 0, node = 0;
-    for (size_t i = 0, j = 0; i < copies.size(); i = j) {
-      for (j = i + 1; j < copies.size() && copies[j].first == copies[i].first; ++j) {}
-      if (j - i > most) std::tie(most, node) = std::make_pair(j - i, copies[i].second);
-    }
-    if (most < kStackWarning) return;
-    warning(pointers_[node], std::to_string(most) + " copies of " + (g.nodes[node].shape ? "a shape" : "a mesh") +
-                                 " are placed at exactly the same spot (the same world transform): no BVH can "
-                                 "separate them, so every ray that reaches them tests all " +
-                                 std::to_string(most) + " and the render will be slow (README, \"Limits\")");
   }
 
   // --camera NAME: a glTF camera by its name or its node's, instead of the scene's camera.

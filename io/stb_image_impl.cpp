@@ -25,8 +25,8 @@ std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t s
   image.channels = channels;
   image.sixteen_bit = header.format == ImageFormat::kPng && header.sixteen_bit;
   int in_file = 0;
-  void* data = image.sixteen_bit ? static_cast<void*>(stbi_load_16_from_memory(bytes, static_cast<int>(size), &image.width,
-                                                                               &image.height, &in_file, channels))
+  void* data = image.sixteen_bit ? static_cast<void*>(stbi_load_16_from_memory(
+                                       bytes, static_cast<int>(size), &image.width, &image.height, &in_file, channels))
                                  : static_cast<void*>(stbi_load_from_memory(bytes, static_cast<int>(size), &image.width,
                                                                             &image.height, &in_file, channels));
   image.data = std::unique_ptr<void, void (*)(void*)>(data, [](void* p) { stbi_image_free(p); });

@@ -26,10 +26,10 @@ bool fits(const ImageHeader& h, const std::string& name, const LoadLimits& limit
   const uint64_t left = usage.texels >= limits.scene_texels ? 0 : limits.scene_texels - usage.texels;
   if (needed > left) {
     error.over_budget = true;
-    error.message = name + " (" + to_string(h.width) + " x " + to_string(h.height) + ", " + to_string(needed) +
-                    " texels with its mip levels) does not fit in the scene's texture budget: " +
-                    to_string(usage.texels) + " of its " + to_string(limits.scene_texels) +
-                    " texels are taken by the textures loaded before it";
+    error.message =
+        name + " (" + to_string(h.width) + " x " + to_string(h.height) + ", " + to_string(needed) +
+        " texels with its mip levels) does not fit in the scene's texture budget: " + to_string(usage.texels) +
+        " of its " + to_string(limits.scene_texels) + " texels are taken by the textures loaded before it";
     return false;
   }
   return true;

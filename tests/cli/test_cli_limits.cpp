@@ -31,12 +31,17 @@ Run rtcli_bounded(const std::string& args) { return rtcli(args, RTCLI_SOURCE_DIR
 std::string triangle_model(const std::string& folder, const rt::Json& image) {
   std::string buffer;
   rt::test::append<float>(buffer, {-1, -1, 0, 1, -1, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 1});
-  rt::Json doc = {{"scenes", {{{"nodes", {0}}}}}, {"nodes", {{{"mesh", 0}}}},
-                  {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"material", 0}}}}}}},
-                  {"materials", {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}},
-                  {"textures", {{{"source", 0}}}}, {"images", {image}}, {"bufferViews", {{{"buffer", 0}, {"byteLength", 60}}}},
-                  {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
-                                 {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
+  rt::Json doc = {
+      {"scenes", {{{"nodes", {0}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"material", 0}}}}}}},
+      {"materials", {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}},
+      {"textures", {{{"source", 0}}}},
+      {"images", {image}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 60}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
   fs::create_directories(output_path(folder));
   return rt::test::write_gltf(folder + "/model.gltf", buffer, doc);
 }
@@ -48,9 +53,12 @@ TEST_CASE("cli limits: numbers on the command line say what they expected", "[cl
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--aa-threshold nan", "--aa-threshold: expected a number from 0 to 1, found nan, which is not finite"},
       {"--aa-threshold 0.5x", "--aa-threshold: expected a number from 0 to 1, found \"0.5x\", which is not a number"},
-      {"--seed 18446744073709551616", "--seed: expected a whole number from 0 to 18446744073709551615, found 18446744073709551616"},
+      {"--seed 18446744073709551616",
+       "--seed: expected a whole number from 0 to 18446744073709551615, found 18446744073709551616"},
       {"--seed -1", "--seed: expected a whole number from 0 to 18446744073709551615, found -1"},
-      {"--width 1e3", "--width: expected a whole number from 1 to 16384, found \"1e3\", which is not a whole number in decimal digits"},
+      {"--width 1e3",
+       "--width: expected a whole number from 1 to 16384, found \"1e3\", which is not a whole number in decimal "
+       "digits"},
       {"--width 20000", "--width: expected a whole number from 1 to 16384, found 20000"},
       {"--threads 1.5", "--threads: expected a whole number from 1 to 1024, found \"1.5\""},
   };
@@ -69,7 +77,8 @@ TEST_CASE("cli limits: the temporary file is new, never a link planted under its
   const std::string target = output_path("planted/out.png");
   // Every name this process would try first is a link to the victim.
   for (int n = 0; n < 3; ++n) {
-    const std::string link = output_path("planted/.rtcli-" + std::to_string(::getpid()) + "-" + std::to_string(n) + ".tmp");
+    const std::string link =
+        output_path("planted/.rtcli-" + std::to_string(::getpid()) + "-" + std::to_string(n) + ".tmp");
     fs::remove(link);
     fs::create_symlink(victim, link);
   }
@@ -93,7 +102,8 @@ TEST_CASE("cli limits: a long output name works, one too long is refused before 
   CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 5.0);
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("its name is 256 bytes, more than the 255 the file system allows"));
-  r = rtcli_bounded("render scenes/turntable.json --frames 0-1 -o '" + output_path(std::string(248, 'f') + "_##.png") + "'");
+  r = rtcli_bounded("render scenes/turntable.json --frames 0-1 -o '" + output_path(std::string(248, 'f') + "_##.png") +
+                    "'");
   CHECK(r.code == 0);  // the frame numbers keep to the pattern's width
 }
 
@@ -119,11 +129,13 @@ TEST_CASE("cli limits: many copies in one spot are a warning, in render and vali
       {"nodes", {{{"mesh", 0}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 1}}}}}}}}}},
       {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
-      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
-                     {{"componentType", 5126}, {"count", 1000}, {"type", "VEC3"}}}}};  // 1000 zero translations
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+        {{"componentType", 5126}, {"count", 1000}, {"type", "VEC3"}}}}};  // 1000 zero translations
   const std::string model = rt::test::write_gltf("stacked.gltf", buffer, doc);
-  for (const std::string& command : {"validate '" + model + "'",
-                                     "render '" + model + "' -q --width 16 --height 12 -o '" + output_path("stacked.png") + "'"}) {
+  for (const std::string& command :
+       {"validate '" + model + "'",
+        "render '" + model + "' -q --width 16 --height 12 -o '" + output_path("stacked.png") + "'"}) {
     const Run r = rtcli_bounded(command);
     INFO(command);
     CHECK(r.code == 0);
@@ -137,12 +149,14 @@ TEST_CASE("cli limits: a glTF file's images and buffers stay in its folder unles
   const std::string model = triangle_model("downloaded", {{"uri", "../secret.png"}});
   Run r = rtcli_bounded("validate '" + model + "'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("material 0 baseColorTexture: \"../secret.png\" is outside the model's folder") &&
-                           Catch::Contains("--allow-outside-files reads it"));
+  CHECK_THAT(r.output,
+             Catch::Contains("material 0 baseColorTexture: \"../secret.png\" is outside the model's folder") &&
+                 Catch::Contains("--allow-outside-files reads it"));
   r = rtcli_bounded("validate --allow-outside-files '" + model + "'");
   CHECK(r.code == 0);
   CHECK_THAT(r.output, !Catch::Contains("warning"));
-  r = rtcli_bounded("render --allow-outside-files -q --width 8 --height 8 '" + model + "' -o '" + output_path("outside.png") + "'");
+  r = rtcli_bounded("render --allow-outside-files -q --width 8 --height 8 '" + model + "' -o '" +
+                    output_path("outside.png") + "'");
   CHECK(r.code == 0);
   // An absolute path, and a link inside the folder to a file outside it.
   r = rtcli_bounded("validate '" + triangle_model("absolute", {{"uri", output_path("secret.png")}}) + "'");
@@ -161,8 +175,9 @@ TEST_CASE("cli limits: a glTF image in another format is a warning naming it onc
   write_file("gif-image/image.gif", read_file(rt::test::source_path("tests/data/images/image.gif")));
   const Run r = rtcli_bounded("validate '" + model + "'");
   CHECK(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("material 0 baseColorTexture: expected a PNG or JPEG image, found a GIF image in \"" +
-                                       output_path("gif-image/image.gif") + "\"; ignored"));
+  CHECK_THAT(r.output,
+             Catch::Contains("material 0 baseColorTexture: expected a PNG or JPEG image, found a GIF image in \"" +
+                             output_path("gif-image/image.gif") + "\"; ignored"));
   CHECK_THAT(r.output, !Catch::Contains("\"\""));  // quoted once, not twice
 }
 
@@ -175,7 +190,8 @@ TEST_CASE("cli limits: a glTF file whose only node is singular says it draws not
                         {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
                         {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}}};
   const std::string model = rt::test::write_gltf("flattened.gltf", buffer, doc);
-  const Run r = rtcli_bounded("render '" + model + "' -q --width 8 --height 8 -o '" + output_path("flattened.png") + "'");
+  const Run r =
+      rtcli_bounded("render '" + model + "' -q --width 8 --height 8 -o '" + output_path("flattened.png") + "'");
   CHECK(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("warning: the glTF file has no triangles to render: every node of it that "
                                        "carries a mesh has a singular world transform"));

@@ -84,8 +84,12 @@ nlohmann::json textured_square(nlohmann::json image) {
           {"textures", {{{"source", 0}}}},
           {"images", {std::move(image)}},
           {"accessors",
-           {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-             {"min", {-1, -1, 0}}, {"max", {1, 1, 0}}},
+           {{{"bufferView", 0},
+             {"componentType", 5126},
+             {"count", 3},
+             {"type", "VEC3"},
+             {"min", {-1, -1, 0}},
+             {"max", {1, 1, 0}}},
             {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
 }
 
@@ -149,8 +153,8 @@ std::string gltf_model(const uint8_t* data, size_t size) {
   ImportError error;
   const std::vector<unsigned char> bytes(data, data + size);
   LimitUsage usage;
-  auto model = import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt,
-                                 options.limits, usage, error);
+  auto model = import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt, options.limits,
+                                 usage, error);
   if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
   std::vector<TriangleMesh> meshes;
   size_t triangles = 0;
@@ -257,7 +261,8 @@ std::string gltf_image(const uint8_t* data, size_t size) {
   bin.insert(bin.end(), data, data + size);
   while (bin.size() % 4) bin.push_back(0);
   nlohmann::json doc = textured_square({{"bufferView", 1}, {"mimeType", "image/png"}});
-  doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 60}}, {{"buffer", 0}, {"byteOffset", image_offset}, {"byteLength", size}}};
+  doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 60}},
+                        {{"buffer", 0}, {"byteOffset", image_offset}, {"byteLength", size}}};
   if (size == 0) doc["bufferViews"][1]["byteLength"] = 1;  // glTF needs at least one byte
   doc["buffers"] = {{{"byteLength", bin.size()}}};
   std::string json = doc.dump();

@@ -82,8 +82,9 @@ TEST_CASE("image formats: every other format is refused by name, before decoding
     INFO(name);
     const Loaded l = load(name);
     CHECK_FALSE(l.texture);
-    CHECK_THAT(l.error.message, Catch::Contains(std::string("expected a PNG or JPEG image, found ") + what + " in \"") &&
-                                    Catch::Contains(name));
+    CHECK_THAT(l.error.message,
+               Catch::Contains(std::string("expected a PNG or JPEG image, found ") + what + " in \"") &&
+                   Catch::Contains(name));
     CHECK(l.seconds < 1.0);
   }
 }
@@ -92,20 +93,23 @@ TEST_CASE("image formats: a JPEG's scans are counted and its Huffman tables chec
   const Loaded many = load("eighty-scans.jpg");
   CHECK_FALSE(many.texture);
   CHECK_THAT(many.error.message, Catch::Contains("expected a JPEG of at most 64 scans, found more"));
-  const std::string table = rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/jpeg-huffman-table-of-257-codes"));
+  const std::string table =
+      rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/jpeg-huffman-table-of-257-codes"));
   std::string error;
   CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(table.data()), table.size(), error));
   CHECK_THAT(error, Catch::Contains("Huffman tables of at most 256 codes each"));
   // The walk over a real progressive JPEG: 10 scans (libjpeg's default script for colour).
   const std::string progressive = rt::test::read_file(image_path("progressive.jpg"));
-  const auto header = read_image_header(reinterpret_cast<const unsigned char*>(progressive.data()), progressive.size(), error);
+  const auto header =
+      read_image_header(reinterpret_cast<const unsigned char*>(progressive.data()), progressive.size(), error);
   REQUIRE(header);
   CHECK(header->format == ImageFormat::kJpeg);
   CHECK(header->scans == 10);
   CHECK(header->width == 16);
 }
 
-TEST_CASE("image formats: the scene's texel budget is checked from the header, with what is left", "[texture][io][images]") {
+TEST_CASE("image formats: the scene's texel budget is checked from the header, with what is left",
+          "[texture][io][images]") {
   LoadLimits limits;
   limits.scene_texels = 100;  // an 8 x 8 image takes 64 + 16 + 4 + 1 = 85 with its mip levels
   CHECK(Texture::texels_with_mip_levels(8, 8) == 85);
@@ -123,6 +127,6 @@ TEST_CASE("image formats: the scene's texel budget is checked from the header, w
   error = {};
   CHECK_FALSE(load_texture(image_path("rgb8.png"), TextureEncoding::kSrgb, limits, usage, error));
   CHECK_FALSE(error.over_budget);
-  CHECK_THAT(error.message, Catch::Contains("expected an image of at most 63 texels in") &&
-                                Catch::Contains("found 8 x 8 (64)"));
+  CHECK_THAT(error.message,
+             Catch::Contains("expected an image of at most 63 texels in") && Catch::Contains("found 8 x 8 (64)"));
 }

@@ -35,9 +35,12 @@ std::string textured(const std::string& name, int images, bool one_view) {
     views.push_back({{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", png.size()}});
     buffer += png;
   }
-  Json doc = {{"scenes", {{{"nodes", {0}}}}}, {"nodes", {{{"mesh", 0}}}}, {"bufferViews", views},
-              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
-                             {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
+  Json doc = {{"scenes", {{{"nodes", {0}}}}},
+              {"nodes", {{{"mesh", 0}}}},
+              {"bufferViews", views},
+              {"accessors",
+               {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+                {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
   for (int i = 0; i < images; ++i) {
     doc["images"].push_back({{"bufferView", one_view ? 1 : 1 + i}, {"mimeType", "image/png"}});
     doc["textures"].push_back({{"source", i}});
@@ -77,7 +80,8 @@ TEST_CASE("budgets: a glTF file's images are summed from their headers before an
 
 TEST_CASE("budgets: many primitives sharing one huge accessor stop before reading it", "[io][gltf][limits]") {
   // 12 primitives on one accessor of 2^25 zero vertices (valid glTF: no bufferView means zeros).
-  Json doc = {{"scenes", {{{"nodes", {0}}}}}, {"nodes", {{{"mesh", 0}}}},
+  Json doc = {{"scenes", {{{"nodes", {0}}}}},
+              {"nodes", {{{"mesh", 0}}}},
               {"accessors", {{{"componentType", 5126}, {"count", 1 << 25}, {"type", "VEC3"}}}}};
   for (int i = 0; i < 12; ++i) doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}});
   doc["asset"] = {{"version", "2.0"}};
@@ -88,8 +92,9 @@ TEST_CASE("budgets: many primitives sharing one huge accessor stop before readin
   CHECK_FALSE(import_gltf(path, std::nullopt, LoadLimits{}, usage, error));
   CHECK(seconds_since(start) < 1.0);
   CHECK(error.over_limit);
-  CHECK_THAT(error.message, Catch::Contains("expected at most 33554432 vertices in a scene's meshes, found 402653184 in "
-                                            "this file's (counted from their accessors, before reading them)"));
+  CHECK_THAT(error.message,
+             Catch::Contains("expected at most 33554432 vertices in a scene's meshes, found 402653184 in "
+                             "this file's (counted from their accessors, before reading them)"));
   CHECK(usage.vertices == 0);
   // Meshes the default scene does not place are not counted.
   doc["nodes"][0].erase("mesh");
@@ -99,14 +104,15 @@ TEST_CASE("budgets: many primitives sharing one huge accessor stop before readin
 
 TEST_CASE("budgets: glTF channels share their sampler's keys, counted once", "[io][gltf][limits][animation]") {
   std::string buffer;
-  append<float>(buffer, {0, 1, 2, 3});                         // times
+  append<float>(buffer, {0, 1, 2, 3});                          // times
   append<float>(buffer, {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0});  // translations
-  Json doc = {{"scenes", {{{"nodes", Json::array()}}}},
-              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "SCALAR"},
-                              {"min", {0}}, {"max", {3}}},
-                             {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
-              {"bufferViews", {{{"buffer", 0}, {"byteLength", 16}}, {{"buffer", 0}, {"byteOffset", 16}, {"byteLength", 48}}}},
-              {"animations", {{{"samplers", {{{"input", 0}, {"output", 1}}}}}}}};
+  Json doc = {
+      {"scenes", {{{"nodes", Json::array()}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "SCALAR"}, {"min", {0}}, {"max", {3}}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 16}}, {{"buffer", 0}, {"byteOffset", 16}, {"byteLength", 48}}}},
+      {"animations", {{{"samplers", {{{"input", 0}, {"output", 1}}}}}}}};
   for (int i = 0; i < 300; ++i) {
     doc["nodes"].push_back({{"name", "n" + std::to_string(i)}});
     doc["scenes"][0]["nodes"].push_back(i);
