@@ -1,7 +1,9 @@
-// PNG and JPEG decoding, by Debian's stb_image compiled here with every other format left out
-// (io/stb_image_impl.cpp): no other decoder is reachable, whatever a file holds, and the
-// sanitizers and fuzzers instrument the decoder. The caller has read the header
-// (io/image_header.h) and checked its size against the limits; the decoded image must match it.
+// PNG and JPEG decoding. PNG by Debian's stb_image, compiled here with every other format left
+// out (io/stb_image_impl.cpp); JPEG by Debian's libjpeg-turbo (io/jpeg_decoder.cpp), because
+// stb_image 2.27's JPEG decoder reads out of bounds on broken Huffman data (fuzzing found it;
+// fixed upstream in 2.28, not in Debian 12). No other decoder is reachable, whatever a file
+// holds. The caller has read the header (io/image_header.h) and checked its size against the
+// limits; the decoded image must match it.
 #pragma once
 
 #include <cstddef>
@@ -32,10 +34,16 @@ class DecodedImage {
   std::unique_ptr<void, void (*)(void*)> data{nullptr, nullptr};
 };
 
-// Decodes the image `header` describes into `channels` samples a pixel (alpha 1 where the file
-// has none): 16 bits for a 16-bit PNG, 8 otherwise. nullopt and the decoder's reason in `error`
-// when the data is corrupt.
+// Decodes the image `header` describes into `channels` samples a pixel, 3 (RGB) or 4 (RGBA;
+// alpha 1 where the file has none): 16 bits for a 16-bit PNG, 8 otherwise. nullopt and the
+// decoder's reason in `error` when the data is corrupt.
 std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
                                             int channels, std::string& error);
+
+// The two decoders behind it.
+std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                       int channels, std::string& error);
+std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                        int channels, std::string& error);
 
 }  // namespace rt

@@ -1,13 +1,12 @@
-// stb_image (Debian's libstb-dev header) compiled into rtcli with PNG and JPEG only, its
-// functions static to this file: io/png_jpeg_decoder.h is the one way in. See that header.
-#include "io/png_jpeg_decoder.h"
-
+// stb_image (Debian's libstb-dev header) compiled into rtcli with PNG only, its functions static
+// to this file: io/png_jpeg_decoder.h is the one way in. See that header.
 #include <climits>
+
+#include "io/png_jpeg_decoder.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
 #define STBI_NO_STDIO
 #define STBI_NO_LINEAR
 #define STBI_NO_HDR
@@ -15,20 +14,20 @@
 
 namespace rt {
 
-std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
-                                            int channels, std::string& error) {
+std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                       int channels, std::string& error) {
   if (size > static_cast<size_t>(INT_MAX)) {
     error = "the file is larger than the decoder reads (2 GiB)";
     return std::nullopt;
   }
   DecodedImage image;
   image.channels = channels;
-  image.sixteen_bit = header.format == ImageFormat::kPng && header.sixteen_bit;
+  image.sixteen_bit = header.sixteen_bit;
   int in_file = 0;
-  void* data = image.sixteen_bit ? static_cast<void*>(stbi_load_16_from_memory(
-                                       bytes, static_cast<int>(size), &image.width, &image.height, &in_file, channels))
-                                 : static_cast<void*>(stbi_load_from_memory(bytes, static_cast<int>(size), &image.width,
-                                                                            &image.height, &in_file, channels));
+  const int n = static_cast<int>(size);
+  void* data = image.sixteen_bit
+                   ? static_cast<void*>(stbi_load_16_from_memory(bytes, n, &image.width, &image.height, &in_file, channels))
+                   : static_cast<void*>(stbi_load_from_memory(bytes, n, &image.width, &image.height, &in_file, channels));
   image.data = std::unique_ptr<void, void (*)(void*)>(data, [](void* p) { stbi_image_free(p); });
   if (!data) {
     const char* reason = stbi_failure_reason();
