@@ -51,6 +51,21 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
     return std::nullopt;
   }
   h.sixteen_bit = depth == 16;
+  // The chunks, as the decoder reads them: stb_image 2.27 hands memcpy a null pointer for an
+  // empty IDAT chunk before any image data (undefined behaviour, found by fuzzing). Such a chunk
+  // holds nothing; no encoder writes one.
+  bool data = false;
+  for (size_t pos = 8; size - pos >= 12;) {
+    const uint32_t length = be32(b + pos);
+    const bool idat = std::memcmp(b + pos + 4, "IDAT", 4) == 0;
+    if (idat && length == 0 && !data) {
+      error = "expected a PNG whose first IDAT chunk holds image data, found an empty one";
+      return std::nullopt;
+    }
+    data = data || idat;
+    if (std::memcmp(b + pos + 4, "IEND", 4) == 0 || length > size - pos - 12) break;  // truncated: the decoder says so
+    pos += 12 + length;
+  }
   return h;
 }
 

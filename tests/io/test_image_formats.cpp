@@ -89,7 +89,7 @@ TEST_CASE("image formats: every other format is refused by name, before decoding
   }
 }
 
-TEST_CASE("image formats: a JPEG's scans are counted and its Huffman tables checked first", "[texture][io][images]") {
+TEST_CASE("image formats: JPEG scans and Huffman tables, and PNG chunks, are checked first", "[texture][io][images]") {
   const Loaded many = load("eighty-scans.jpg");
   CHECK_FALSE(many.texture);
   CHECK_THAT(many.error.message, Catch::Contains("expected a JPEG of at most 64 scans, found more"));
@@ -98,6 +98,10 @@ TEST_CASE("image formats: a JPEG's scans are counted and its Huffman tables chec
   std::string error;
   CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(table.data()), table.size(), error));
   CHECK_THAT(error, Catch::Contains("Huffman tables of at most 256 codes each"));
+  // stb_image 2.27 passes memcpy a null pointer for an empty first IDAT chunk (found by fuzzing).
+  const std::string idat = rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/png-empty-first-idat"));
+  CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(idat.data()), idat.size(), error));
+  CHECK_THAT(error, Catch::Contains("expected a PNG whose first IDAT chunk holds image data, found an empty one"));
   // The walk over a real progressive JPEG: 10 scans (libjpeg's default script for colour).
   const std::string progressive = rt::test::read_file(image_path("progressive.jpg"));
   const auto header =
