@@ -4,9 +4,9 @@
 // before setjmp. Warnings about data libjpeg recovers from ("premature end of data segment") are
 // not printed: the image decodes, with grey where the data was missing.
 #include <csetjmp>
-#include <new>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
 
 #include <jpeglib.h>
 
@@ -64,8 +64,7 @@ std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size,
         unsigned char* dst = pixels + y * width * out;
         for (size_t x = 0; x < width; ++x, dst += out) {
           const unsigned char* p = row + x * (cmyk ? 4 : 3);
-          for (size_t c = 0; c < 3; ++c)
-            dst[c] = cmyk ? static_cast<unsigned char>((p[c] * p[3] + 127) / 255) : p[c];
+          for (size_t c = 0; c < 3; ++c) dst[c] = cmyk ? static_cast<unsigned char>((p[c] * p[3] + 127) / 255) : p[c];
           if (out == 4) dst[3] = 255;
         }
       }

@@ -41,8 +41,8 @@ std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t s
                                             int channels, std::string& error);
 
 // The two decoders behind it.
-std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header,
-                                       int channels, std::string& error);
+std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header, int channels,
+                                       std::string& error);
 std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
                                         int channels, std::string& error);
 

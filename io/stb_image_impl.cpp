@@ -14,8 +14,8 @@
 
 namespace rt {
 
-std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header,
-                                       int channels, std::string& error) {
+std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header, int channels,
+                                       std::string& error) {
   if (size > static_cast<size_t>(INT_MAX)) {
     error = "the file is larger than the decoder reads (2 GiB)";
     return std::nullopt;
@@ -25,9 +25,10 @@ std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, 
   image.sixteen_bit = header.sixteen_bit;
   int in_file = 0;
   const int n = static_cast<int>(size);
-  void* data = image.sixteen_bit
-                   ? static_cast<void*>(stbi_load_16_from_memory(bytes, n, &image.width, &image.height, &in_file, channels))
-                   : static_cast<void*>(stbi_load_from_memory(bytes, n, &image.width, &image.height, &in_file, channels));
+  void* data =
+      image.sixteen_bit
+          ? static_cast<void*>(stbi_load_16_from_memory(bytes, n, &image.width, &image.height, &in_file, channels))
+          : static_cast<void*>(stbi_load_from_memory(bytes, n, &image.width, &image.height, &in_file, channels));
   image.data = std::unique_ptr<void, void (*)(void*)>(data, [](void* p) { stbi_image_free(p); });
   if (!data) {
     const char* reason = stbi_failure_reason();

@@ -116,23 +116,9 @@ TEST_CASE("cli: Ctrl-C stops a render within a second and writes nothing", "[cli
   fs::create_directories(output_path("interrupted"));
   const std::string out = output_path("interrupted/long.png");
   fs::remove(out);
-  // The signal must arrive during the render: a Ctrl-C while loading ends the process at once,
-  // with no message. How long loading takes here (a sanitizer build is slower) is measured with
-  // a one-pixel render; the signal comes at three times that, plus 1.5 s.
-  const auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  auto start = std::chrono::steady_clock::now();
-  REQUIRE(rtcli("render scenes/primitives.json -q --width 1 --height 1 -o '" + out + "'").code == 0);
-  const double delay = 1.5 + 3.0 * since(start);
-  fs::remove(out);
-  // About a minute of work on one thread (far more under a sanitizer). --foreground: otherwise
-  // timeout signals the child and then its whole process group, and a child that has already
-  // handled the first SIGINT takes the second as "Ctrl-C twice: stop at once", with no message.
-  start = std::chrono::steady_clock::now();
-  const Run r = rtcli("render scenes/primitives.json --threads 1 --width 4000 --height 3000 -o '" + out + "'",
-                      RTCLI_SOURCE_DIR, "timeout --foreground --preserve-status -s INT " + std::to_string(delay));
-  const double seconds = since(start);
+  // About a minute of work on one thread (far more under a sanitizer).
+  const auto [r, delay, seconds] =
+      rt::test::interrupt_render("scenes/primitives.json", "--threads 1 --width 4000 --height 3000", out, 1.5);
   INFO("signal after " << delay << " s, exit after " << seconds << " s; output:\n" << r.output);
   CHECK(r.code == 130);
   CHECK_THAT(r.output, Catch::Contains("interrupted after") && Catch::Contains("nothing written"));

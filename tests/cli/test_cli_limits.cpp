@@ -110,20 +110,9 @@ TEST_CASE("cli limits: a long output name works, one too long is refused before 
 TEST_CASE("cli limits: Ctrl-C while an 8192 x 8192 film is made stops within a second", "[cli][hostile][limits]") {
   const std::string out = output_path("huge-film.png");
   fs::remove(out);
-  // The signal must come once the scene is loaded (before, it ends the process at once, with no
-  // message): after three times what a one-pixel render takes here, plus 0.3 s, when the
-  // gigabyte film is being made or the render has just begun.
-  const auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  auto start = std::chrono::steady_clock::now();
-  REQUIRE(rtcli("render scenes/default.json -q --width 1 --height 1 -o '" + out + "'").code == 0);
-  const double delay = 0.3 + 3.0 * since(start);
-  fs::remove(out);
-  start = std::chrono::steady_clock::now();
-  const Run r = rtcli("render scenes/default.json --width 8192 --height 8192 -o '" + out + "'", RTCLI_SOURCE_DIR,
-                      "timeout --foreground --preserve-status -s INT " + std::to_string(delay));
-  const double seconds = since(start);
+  // The signal comes when the gigabyte film is being made or the render has just begun.
+  const auto [r, delay, seconds] =
+      rt::test::interrupt_render("scenes/default.json", "--width 8192 --height 8192", out, 0.3);
   INFO("signal after " << delay << " s, exit after " << seconds << " s; output:\n" << r.output);
   CHECK(r.code == 130);
   CHECK_THAT(r.output, Catch::Contains("interrupted after") && Catch::Contains("nothing written"));

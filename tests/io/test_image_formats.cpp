@@ -99,7 +99,8 @@ TEST_CASE("image formats: JPEG scans and Huffman tables, and PNG chunks, are che
   CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(table.data()), table.size(), error));
   CHECK_THAT(error, Catch::Contains("Huffman tables of at most 256 codes each"));
   // stb_image 2.27 passes memcpy a null pointer for an empty first IDAT chunk (found by fuzzing).
-  const std::string idat = rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/png-empty-first-idat"));
+  const std::string idat =
+      rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/png-empty-first-idat"));
   CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(idat.data()), idat.size(), error));
   CHECK_THAT(error, Catch::Contains("expected a PNG whose first IDAT chunk holds image data, found an empty one"));
   // The walk over a real progressive JPEG: 10 scans (libjpeg's default script for colour).

@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -26,6 +27,35 @@ inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_
   const int status = pclose(pipe);
   run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;
+}
+
+// A render sent SIGINT (Ctrl-C) once it has loaded: a Ctrl-C while loading ends the process at
+// once, with no message. How long loading takes here (a sanitizer build is slower) is measured
+// with a one-pixel render of the same scene; the signal comes at three times that, plus `extra`
+// seconds. --foreground: otherwise timeout signals the child and then its whole process group,
+// and a child that has already handled the first SIGINT takes the second as "Ctrl-C twice: stop
+// at once", with no message.
+struct Interrupted {
+  Run run;
+  double delay = 0.0;    // seconds from the start to the signal
+  double seconds = 0.0;  // from the start to the exit
+};
+
+inline Interrupted interrupt_render(const std::string& scene, const std::string& options, const std::string& out,
+                                    double extra) {
+  const auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  auto start = std::chrono::steady_clock::now();
+  REQUIRE(rtcli("render " + scene + " -q --width 1 --height 1 -o '" + out + "'").code == 0);
+  Interrupted result;
+  result.delay = extra + 3.0 * since(start);
+  std::remove(out.c_str());
+  start = std::chrono::steady_clock::now();
+  result.run = rtcli("render " + scene + " " + options + " -o '" + out + "'", RTCLI_SOURCE_DIR,
+                     "timeout --foreground --preserve-status -s INT " + std::to_string(result.delay));
+  result.seconds = since(start);
+  return result;
 }
 
 }  // namespace rt::test
