@@ -51,15 +51,35 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
     return std::nullopt;
   }
   h.sixteen_bit = depth == 16;
-  // The chunks, as the decoder reads them: stb_image 2.27 hands memcpy a null pointer for an
-  // empty IDAT chunk before any image data (undefined behaviour, found by fuzzing). Such a chunk
-  // holds nothing; no encoder writes one.
+  // Filtered scanlines: a filter byte and the row's packed samples, per row of each of the seven
+  // Adam7 passes when interlaced (PNG 1.2, sections 2.6 and 4.1.1).
+  const uint64_t bits_per_pixel = uint64_t{depth} * (colour == 2 ? 3 : colour == 4 ? 2 : colour == 6 ? 4 : 1);
+  const auto scanlines = [&](uint64_t w, uint64_t rows) {
+    return w == 0 ? 0 : rows * (1 + (w * bits_per_pixel + 7) / 8);
+  };
+  if (b[28] == 0) {
+    h.png_data = scanlines(h.width, h.height);
+  } else {
+    static constexpr int kPass[7][4] = {{0, 0, 8, 8}, {4, 0, 8, 8}, {0, 4, 4, 8}, {2, 0, 4, 4},
+                                        {0, 2, 2, 4}, {1, 0, 2, 2}, {0, 1, 1, 2}};  // x0, y0, dx, dy
+    for (const auto& p : kPass)
+      h.png_data += scanlines((h.width + p[2] - 1 - p[0]) / p[2], (h.height + p[3] - 1 - p[1]) / p[3]);
+  }
+  // The chunks, as the decoder reads them. stb_image 2.27 grows its buffer for the image data to
+  // what an IDAT chunk claims before reading it (a 273-byte file asked for 2 GiB), and hands memcpy
+  // a null pointer for an empty IDAT chunk before any image data (undefined behaviour). Both found
+  // by fuzzing; no encoder writes either.
   bool data = false;
   for (size_t pos = 8; size - pos >= 12;) {
     const uint32_t length = be32(b + pos);
     const bool idat = std::memcmp(b + pos + 4, "IDAT", 4) == 0;
     if (idat && length == 0 && !data) {
       error = "expected a PNG whose first IDAT chunk holds image data, found an empty one";
+      return std::nullopt;
+    }
+    if (idat && length > size - pos - 12) {
+      error = "expected a PNG whose IDAT chunks lie inside the file, found one of " + to_string(length) +
+              " bytes with " + to_string(size - pos - 12) + " left: the file is truncated";
       return std::nullopt;
     }
     data = data || idat;

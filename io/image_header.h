@@ -24,6 +24,7 @@ struct ImageHeader {
   ImageFormat format = ImageFormat::kPng;
   uint32_t width = 0, height = 0;
   bool sixteen_bit = false;  // a PNG of 16 bits a sample
+  uint64_t png_data = 0;     // a PNG's image data once inflated: filter bytes and scanlines, every pass
   uint32_t scans = 0;        // a JPEG's start-of-scan markers
 };
 

@@ -2,6 +2,7 @@
 // to this file: io/png_jpeg_decoder.h is the one way in. See that header.
 #include <climits>
 
+#include "io/png_data_check.h"
 #include "io/png_jpeg_decoder.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -20,6 +21,7 @@ std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, 
     error = "the file is larger than the decoder reads (2 GiB)";
     return std::nullopt;
   }
+  if (!png_data_fits(bytes, size, header, error)) return std::nullopt;
   DecodedImage image;
   image.channels = channels;
   image.sixteen_bit = header.sixteen_bit;

@@ -103,6 +103,25 @@ TEST_CASE("image formats: JPEG scans and Huffman tables, and PNG chunks, are che
       rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/png-empty-first-idat"));
   CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(idat.data()), idat.size(), error));
   CHECK_THAT(error, Catch::Contains("expected a PNG whose first IDAT chunk holds image data, found an empty one"));
+  // A PNG's image data is inflated and counted before decoding, against the size its header gives.
+  const Loaded bomb = load("inflates-too-far.png");
+  CHECK_FALSE(bomb.texture);
+  CHECK_THAT(bomb.error.message, Catch::Contains("expected a PNG whose image data inflates to the 4 bytes its 1 x 1 "
+                                                 "pixels need, found more"));
+  const std::string claims =
+      rt::test::read_file(rt::test::source_path("tests/fuzz/regressions/texture/png-idat-claims-2-gib"));
+  CHECK_FALSE(read_image_header(reinterpret_cast<const unsigned char*>(claims.data()), claims.size(), error));
+  CHECK_THAT(error,
+             Catch::Contains("expected a PNG whose IDAT chunks lie inside the file, found one of 1866865153 bytes"));
+  // What the header says the data inflates to is what it does, interlaced or not: one 9 x 7 RGB
+  // image in seven Adam7 passes takes 203 bytes with the filter bytes (counted by hand).
+  for (const auto& [name, expected] : {std::pair{"interlaced.png", 203}, std::pair{"rgb8.png", 8 * (1 + 24)},
+                                       std::pair{"grey16.png", 4 * (1 + 8)}, std::pair{"palette.png", 4 * (1 + 4)}}) {
+    const std::string png = rt::test::read_file(image_path(name));
+    const auto header = read_image_header(reinterpret_cast<const unsigned char*>(png.data()), png.size(), error);
+    REQUIRE(header);
+    CHECK(header->png_data == static_cast<uint64_t>(expected));
+  }
   // The walk over a real progressive JPEG: 10 scans (libjpeg's default script for colour).
   const std::string progressive = rt::test::read_file(image_path("progressive.jpg"));
   const auto header =

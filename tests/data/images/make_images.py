@@ -72,6 +72,11 @@ write("image.psd", b"8BPS\0\1" + bytes(6) + struct.pack(">HIIHH", 3, 2, 2, 8, 3)
 # Softimage PIC: magic, version, 80-byte comment, "PICT", 2 x 2, ratio, fields, pad, one channel packet.
 write("image.pic", b"\x53\x80\xf6\x34" + struct.pack(">f", 3.71) + bytes(80) + b"PICT" +
       struct.pack(">HHfHH", 2, 2, 1.0, 3, 0) + bytes([0, 8, 0, 0xe0]) + bytes(16))
+# A 1 x 1 PNG whose image data inflates to 1 MiB (a zlib bomb in small: stb_image 2.27 would
+# inflate any amount).
+write("inflates-too-far.png", b"\x89PNG\r\n\x1a\n" + png(1, 1)[8:33] +
+      struct.pack(">I", len(zlib.compress(bytes(1 << 20), 9))) + b"IDAT" + zlib.compress(bytes(1 << 20), 9) +
+      b"\0\0\0\0" + png(1, 1)[-12:])
 # A progressive JPEG with 80 scans: its last scan repeated (each a pass over the image).
 jpeg = run(["cjpeg", "-progressive"], ppm(16, 16))
 last = jpeg.rfind(b"\xff\xda")
