@@ -70,21 +70,19 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
   // a null pointer for an empty IDAT chunk before any image data (undefined behaviour). Both found
   // by fuzzing; no encoder writes either.
   bool data = false;
-  for (size_t pos = 8; size - pos >= 12;) {
-    const uint32_t length = be32(b + pos);
-    const bool idat = std::memcmp(b + pos + 4, "IDAT", 4) == 0;
-    if (idat && length == 0 && !data) {
-      error = "expected a PNG whose first IDAT chunk holds image data, found an empty one";
-      return std::nullopt;
-    }
-    if (idat && length > size - pos - 12) {
-      error = "expected a PNG whose IDAT chunks lie inside the file, found one of " + to_string(length) +
-              " bytes with " + to_string(size - pos - 12) + " left: the file is truncated";
-      return std::nullopt;
-    }
-    data = data || idat;
-    if (std::memcmp(b + pos + 4, "IEND", 4) == 0 || length > size - pos - 12) break;  // truncated: the decoder says so
-    pos += 12 + length;
+  std::string problem;
+  for_each_png_chunk(b, size, [&](std::string_view type, const unsigned char* bytes, uint32_t length, size_t left) {
+    if (type != "IDAT") return true;
+    if (length == 0 && !data) problem = "expected a PNG whose first IDAT chunk holds image data, found an empty one";
+    else if (!bytes)
+      problem = "expected a PNG whose IDAT chunks lie inside the file, found one of " + to_string(length) +
+                " bytes with " + to_string(left) + " left: the file is truncated";
+    data = true;
+    return problem.empty();
+  });
+  if (!problem.empty()) {
+    error = problem;
+    return std::nullopt;
   }
   return h;
 }

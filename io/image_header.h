@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace rt {
 
@@ -27,6 +28,22 @@ struct ImageHeader {
   uint64_t png_data = 0;     // a PNG's image data once inflated: filter bytes and scanlines, every pass
   uint32_t scans = 0;        // a JPEG's start-of-scan markers
 };
+
+// Calls visit(type, data, length, available) for each chunk of a PNG, in order, after its
+// signature, up to IEND or the first chunk whose `length` exceeds the `available` bytes the file
+// has left for it (that one comes with data == nullptr); stops early when visit returns false.
+template <class Visit>
+void for_each_png_chunk(const unsigned char* b, size_t size, const Visit& visit) {
+  for (size_t pos = 8; pos <= size && size - pos >= 12;) {
+    const uint32_t length =
+        (uint32_t{b[pos]} << 24) | (uint32_t{b[pos + 1]} << 16) | (uint32_t{b[pos + 2]} << 8) | uint32_t{b[pos + 3]};
+    const std::string_view type(reinterpret_cast<const char*>(b + pos + 4), 4);
+    const size_t available = size - pos - 12;
+    const bool fits = length <= available;
+    if (!visit(type, fits ? b + pos + 8 : nullptr, length, available) || !fits || type == "IEND") return;
+    pos += 12 + length;
+  }
+}
 
 // The name of the format the bytes start like ("PNG", "GIF", "Radiance HDR", ...), or nullptr
 // when they match none rtcli knows.

@@ -3,7 +3,6 @@
 #include <zlib.h>
 
 #include <array>
-#include <cstring>
 
 namespace rt {
 
@@ -16,23 +15,19 @@ bool png_data_fits(const unsigned char* b, size_t size, const ImageHeader& heade
   int status = Z_OK;
   // The IDAT chunks in order, as one stream (image_header.cpp has checked that they lie inside
   // the file). Output comes until inflate leaves room in the buffer: then it has taken the chunk.
-  for (size_t pos = 8; size - pos >= 12 && status == Z_OK && produced <= allowed;) {
-    const auto length = static_cast<size_t>((uint32_t{b[pos]} << 24) | (uint32_t{b[pos + 1]} << 16) |
-                                            (uint32_t{b[pos + 2]} << 8) | b[pos + 3]);
-    if (length > size - pos - 12 || std::memcmp(b + pos + 4, "IEND", 4) == 0) break;
-    if (std::memcmp(b + pos + 4, "IDAT", 4) == 0) {
-      z.next_in = const_cast<unsigned char*>(b + pos + 8);
-      z.avail_in = static_cast<uInt>(length);
-      do {
-        z.next_out = out.data();
-        z.avail_out = static_cast<uInt>(out.size());
-        status = inflate(&z, Z_NO_FLUSH);
-        produced += out.size() - z.avail_out;
-      } while (status == Z_OK && z.avail_out == 0 && produced <= allowed);
-      if (status == Z_BUF_ERROR) status = Z_OK;  // the chunk is used up: on to the next
-    }
-    pos += 12 + length;
-  }
+  for_each_png_chunk(b, size, [&](std::string_view type, const unsigned char* bytes, uint32_t length, size_t) {
+    if (type != "IDAT" || !bytes) return true;
+    z.next_in = const_cast<unsigned char*>(bytes);
+    z.avail_in = length;
+    do {
+      z.next_out = out.data();
+      z.avail_out = static_cast<uInt>(out.size());
+      status = inflate(&z, Z_NO_FLUSH);
+      produced += out.size() - z.avail_out;
+    } while (status == Z_OK && z.avail_out == 0 && produced <= allowed);
+    if (status == Z_BUF_ERROR) status = Z_OK;  // the chunk is used up: on to the next
+    return status == Z_OK && produced <= allowed;
+  });
   inflateEnd(&z);
   if (produced <= allowed) return true;
   error = "expected a PNG whose image data inflates to the " + std::to_string(header.png_data) + " bytes its " +
