@@ -89,31 +89,20 @@ Quat between(const RotationKey& a, const RotationKey& b, float s) {
   return axis_angle_to_quat(a.axis, a.degrees + s * (b.degrees - a.degrees));
 }
 
-// Splits every linear rotation step wider than 90 written degrees into equal steps of at most
-// 90, counting the keys first: the track takes at most `keys_left` keys, else nothing is made.
-bool split_wide_rotations(const JsonReader& r, const std::string& ptr, const std::vector<RotationKey>& rotations,
-                          uint64_t keys_left, uint64_t keys_limit, Track& track) {
-  const std::vector<float>& times = track.keys->times;
+// Steps of at most 90 written degrees per linear rotation step (1 where it is narrower); the
+// track then has 1 + their sum keys. In double: wide steps can need more than any integer holds.
+std::vector<double> rotation_steps(const std::vector<RotationKey>& rotations) {
   std::vector<double> steps(rotations.size(), 1.0);
-  double total = 1.0;
-  for (size_t k = 1; k < rotations.size(); ++k) {
+  for (size_t k = 1; k < rotations.size(); ++k)
     steps[k] = std::max(1.0, std::ceil(static_cast<double>(written_step(rotations[k - 1], rotations[k])) /
                                        static_cast<double>(kMaxWrittenStep)));
-    total += steps[k];
-  }
-  if (total > static_cast<double>(keys_left)) {
-    r.error(
-        ptr + "/keys",
-        "expected at most " + std::to_string(keys_limit) +
-            " animation keys in a scene, counting the steps of at most 90 degrees that wide "
-            "rotations are split into, found " +
-            (total > 1e15 ? std::string("more than 10^15") : std::to_string(static_cast<uint64_t>(total))) +
-            " in this track" +
-            (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it"
-                                    : "") +
-            " (a limit that keeps memory bounded; see README, \"Limits\")");
-    return false;
-  }
+  return steps;
+}
+
+// The track with its wide rotation steps split as `steps` says.
+void split_wide_rotations(const std::vector<RotationKey>& rotations, const std::vector<double>& steps, double total,
+                          Track& track) {
+  const std::vector<float>& times = track.keys->times;
   Keyframes dense;
   dense.times.reserve(static_cast<size_t>(total));
   dense.values.reserve(static_cast<size_t>(total));
@@ -130,7 +119,6 @@ bool split_wide_rotations(const JsonReader& r, const std::string& ptr, const std
     dense.values.push_back(track.keys->values[k]);
   }
   track.keys = std::make_shared<const Keyframes>(std::move(dense));
-  return true;
 }
 
 std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, const std::string& ptr, float fps,
@@ -197,15 +185,25 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
   if (!ok) return std::nullopt;
   t.track.keys = std::make_shared<const Keyframes>(std::move(keyframes));
   // Degrees mean what they say: a wide linear step becomes several steps of at most 90 degrees.
-  if (t.track.part == TrsPart::kRotation && t.track.interpolation == Interpolation::kLinear &&
-      !split_wide_rotations(r, ptr, rotations, keys_left, keys_limit, t.track))
-    return std::nullopt;
-  if (t.track.keys->times.size() > keys_left) {
-    r.error(ptr + "/keys", "expected at most " + std::to_string(keys_limit) + " animation keys in a scene, found " +
-                               std::to_string(keys_limit - keys_left + t.track.keys->times.size()) +
-                               " (a limit that keeps memory bounded; see README, \"Limits\")");
+  // The keys that makes are counted before any is made.
+  const bool split = t.track.part == TrsPart::kRotation && t.track.interpolation == Interpolation::kLinear;
+  const std::vector<double> steps = split ? rotation_steps(rotations) : std::vector<double>{};
+  double total = 1.0;
+  for (size_t k = 1; k < steps.size(); ++k) total += steps[k];
+  if (!split) total = static_cast<double>(t.track.keys->times.size());
+  if (total > static_cast<double>(keys_left)) {
+    r.error(
+        ptr + "/keys",
+        "expected at most " + std::to_string(keys_limit) + " animation keys in a scene" +
+            (split ? ", counting the steps of at most 90 degrees that wide rotations are split into," : "") +
+            " found " + (total > 1e15 ? std::string("more than 10^15") : std::to_string(static_cast<uint64_t>(total))) +
+            " in this track" +
+            (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it"
+                                    : "") +
+            " (a limit that keeps memory bounded; see README, \"Limits\")");
     return std::nullopt;
   }
+  if (split) split_wide_rotations(rotations, steps, total, t.track);
   return t;
 }
 
