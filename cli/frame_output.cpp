@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "io/png_file.h"
+#include "io/image/png_file.h"
 
 namespace rt {
 namespace {

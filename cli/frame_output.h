@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "io/gif_file.h"
-#include "io/rgb8_image.h"
+#include "io/image/gif_file.h"
+#include "io/image/rgb8_image.h"
 
 namespace rt {
 

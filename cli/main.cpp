@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/bench_command.h"
+#include "cli/bench/bench_command.h"
 #include "cli/exit_codes.h"
 #include "cli/number_checks.h"
 #include "cli/render_command.h"

@@ -1,7 +1,7 @@
 #include "cli/render_command.h"
 
-#include <climits>
 #include <unistd.h>
+#include <climits>
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +19,7 @@
 #include "core/render/refinement_images.h"
 #include "core/render/renderer.h"
 #include "core/thread_count.h"
-#include "io/png_file.h"
+#include "io/image/png_file.h"
 #include "io/scene_loader.h"
 
 namespace rt {

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "io/diagnostics.h"
+#include "io/base/diagnostics.h"
 
 namespace rt {
 

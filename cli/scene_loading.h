@@ -3,7 +3,7 @@
 
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
-#include "io/load_options.h"
+#include "io/base/load_options.h"
 
 namespace rt {
 

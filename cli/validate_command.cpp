@@ -5,7 +5,7 @@
 #include "cli/exit_codes.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
-#include "io/json_document.h"
+#include "io/json/document.h"
 #include "io/scene_validator.h"
 
 namespace rt {

@@ -4,7 +4,7 @@
 #include <array>
 
 #include "core/math.h"
-#include "core/texture/texture_mapping.h"
+#include "core/texture/texture_slot.h"
 
 namespace rt {
 
@@ -21,7 +21,7 @@ struct MetallicRoughness {
 
 // glTF's alphaMode MASK: the surface is not there where coverage < cutoff, for every ray
 // (camera, reflection, refraction, shadow). Coverage = factor x texture x the vertex colour's
-// alpha. (BLEND is mapped onto this and onto transmission by io/gltf_materials.cpp.)
+// alpha. (BLEND is mapped onto this and onto transmission by io/gltf/materials.cpp.)
 struct AlphaCutoutParams {
   bool enabled = false;
   float factor = 1.0f;  // baseColorFactor's alpha

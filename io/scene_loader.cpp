@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <new>
 
-#include "io/json_document.h"
-#include "io/scene_builder.h"
-#include "io/scene_parser.h"
+#include "io/build/scene_builder.h"
+#include "io/json/document.h"
+#include "io/scene/scene_parser.h"
 
 namespace rt {
 namespace {

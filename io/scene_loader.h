@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/scene_graph.h"
-#include "io/diagnostics.h"
-#include "io/load_options.h"
-#include "io/scene_description.h"
+#include "io/base/diagnostics.h"
+#include "io/base/load_options.h"
+#include "io/scene/description.h"
 
 namespace rt {
 

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <new>
 
-#include "io/json_locate.h"
-#include "io/json_reader.h"
-#include "io/scene_builder.h"
+#include "io/build/scene_builder.h"
+#include "io/json/locate.h"
+#include "io/json/reader.h"
+#include "io/scene/scene_parser.h"
+#include "io/scene/schema.h"
 #include "io/scene_loader.h"
-#include "io/scene_parser.h"
-#include "io/scene_schema.h"
 
 namespace rt {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "io/diagnostics.h"
-#include "io/load_options.h"
+#include "io/base/diagnostics.h"
+#include "io/base/load_options.h"
 
 namespace rt {
 

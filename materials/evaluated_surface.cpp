@@ -1,8 +1,8 @@
 #include "materials/evaluated_surface.h"
 
+#include "materials/map_point.h"
 #include "materials/pbr_to_phong.h"
 #include "materials/surface_detail.h"
-#include "materials/texture_mapping.h"
 
 namespace rt {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/material.h"
-#include "materials/texture_mapping.h"
+#include "materials/map_point.h"
 
 namespace rt {
 

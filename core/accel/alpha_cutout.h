@@ -8,7 +8,7 @@
 
 #include "core/mesh.h"
 #include "core/texture/texture.h"
-#include "core/texture/texture_mapping.h"
+#include "core/texture/texture_slot.h"
 
 namespace rt {
 

@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/json_document.h"
+#include "io/json/document.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
 

@@ -10,8 +10,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/atomic_file.h"
-#include "io/json_document.h"
+#include "io/image/atomic_file.h"
+#include "io/json/document.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"

@@ -19,11 +19,11 @@
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/renderer.h"
-#include "io/gltf_loader.h"
-#include "io/json_document.h"
-#include "io/scene_builder.h"
-#include "io/scene_parser.h"
-#include "io/texture_file.h"
+#include "io/build/scene_builder.h"
+#include "io/gltf/loader.h"
+#include "io/image/texture_file.h"
+#include "io/json/document.h"
+#include "io/scene/scene_parser.h"
 
 namespace rt::fuzz {
 namespace {

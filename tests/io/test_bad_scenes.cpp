@@ -6,10 +6,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/json_document.h"
-#include "io/json_locate.h"
+#include "io/json/document.h"
+#include "io/json/locate.h"
+#include "io/scene/schema.h"
 #include "io/scene_loader.h"
-#include "io/scene_schema.h"
 #include "io/scene_validator.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"

@@ -7,8 +7,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/gltf_loader.h"
-#include "io/json_document.h"
+#include "io/gltf/loader.h"
+#include "io/json/document.h"
 #include "io/scene_loader.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/loading.h"

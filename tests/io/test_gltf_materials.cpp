@@ -1,4 +1,4 @@
-// glTF materials by the documented rule (io/gltf_materials.h): factors, extensions, texture
+// glTF materials by the documented rule (io/gltf/materials.h): factors, extensions, texture
 // transforms and samplers, vertex colours, metallic-roughness per shading point, alpha masks for
 // camera and shadow rays, BLEND and unlit.
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/loader.h"
 #include "materials/evaluated_surface.h"
 #include "materials/pbr_to_phong.h"
 #include "tests/support/gltf_files.h"

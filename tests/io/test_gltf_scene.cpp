@@ -1,8 +1,8 @@
 // glTF files as whole scenes: node trees, animation channels, cameras and KHR_lights_punctual.
 #include <catch2/catch.hpp>
 
-#include "io/gltf_lights.h"
-#include "io/gltf_loader.h"
+#include "io/gltf/lights.h"
+#include "io/gltf/loader.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/loading.h"
 #include "tests/support/run_rtcli.h"

@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/image_header.h"
-#include "io/texture_file.h"
+#include "io/image/image_header.h"
+#include "io/image/texture_file.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;

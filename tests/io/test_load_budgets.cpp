@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/gltf_loader.h"
+#include "io/gltf/loader.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"

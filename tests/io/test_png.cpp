@@ -8,9 +8,9 @@
 
 #include "core/color.h"
 #include "core/rng.h"
-#include "io/png_encoder.h"
-#include "io/png_file.h"
-#include "io/rgb8_image.h"
+#include "io/image/png_encoder.h"
+#include "io/image/png_file.h"
+#include "io/image/rgb8_image.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;

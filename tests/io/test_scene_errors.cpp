@@ -2,7 +2,7 @@
 // and what was found; loading never throws or crashes.
 #include <catch2/catch.hpp>
 
-#include "io/json_document.h"
+#include "io/json/document.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"

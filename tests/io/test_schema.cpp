@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/json_document.h"
-#include "io/scene_schema.h"
+#include "io/json/document.h"
+#include "io/scene/schema.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;

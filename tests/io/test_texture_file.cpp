@@ -9,10 +9,10 @@
 #include <catch2/catch.hpp>
 
 #include "core/color.h"
-#include "io/png_file.h"
-#include "io/texture_file.h"
-#include "tools/textures/patterns.h"
+#include "io/image/png_file.h"
+#include "io/image/texture_file.h"
 #include "tests/support/test_paths.h"
+#include "tools/textures/patterns.h"
 
 using namespace rt;
 

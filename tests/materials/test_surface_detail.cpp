@@ -5,8 +5,8 @@
 
 #include "core/shapes/analytic_shape.h"
 #include "materials/evaluated_surface.h"
+#include "materials/map_point.h"
 #include "materials/surface_detail.h"
-#include "materials/texture_mapping.h"
 
 using namespace rt;
 

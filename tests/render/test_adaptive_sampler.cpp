@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
-#include "io/rgb8_image.h"
+#include "io/image/rgb8_image.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
@@ -28,12 +28,13 @@ LoadedScene half_plane(const std::string& antialias, bool edge = true) {
   const std::string name =
       "adaptive_half_plane_" + std::to_string(std::hash<std::string>{}(antialias + transform)) + ".json";
   return rt::test::load_scene_text(name, R"({
-      "render": { "width": 20, "height": 20, "antialias": )" + antialias +
-                                                                   R"( },
+      "render": { "width": 20, "height": 20, "antialias": )" +
+                                             antialias +
+                                             R"( },
       "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 90 },
       "ambient": 1, "materials": { "white": { "kd": 1 } },
       "nodes": [ { "shape": "plane", "material": "white", "transform": )" +
-                                                                   transform + " } ] }");
+                                             transform + " } ] }");
 }
 
 struct Rendered {

@@ -4,7 +4,7 @@
 
 #include "core/render/renderer.h"
 #include "core/sampling.h"
-#include "io/json_document.h"
+#include "io/json/document.h"
 #include "io/scene_loader.h"
 #include "tests/support/geometry.h"
 #include "tests/support/loading.h"

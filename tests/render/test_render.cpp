@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
-#include "io/png_file.h"
+#include "io/image/png_file.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
-#include "io/rgb8_image.h"
+#include "io/image/rgb8_image.h"
 #include "io/scene_loader.h"
 #include "materials/evaluated_surface.h"
 #include "materials/optics.h"

@@ -5,7 +5,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "io/json_document.h"
+#include "io/json/document.h"
 #include "tests/support/test_paths.h"
 
 namespace rt::test {

@@ -3,7 +3,7 @@
 
 #include <cstddef>
 
-#include "io/rgb8_image.h"
+#include "io/image/rgb8_image.h"
 
 namespace rt {
 

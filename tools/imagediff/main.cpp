@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/png_file.h"
+#include "io/image/png_file.h"
 #include "tools/imagediff/image_compare.h"
 
 int main(int argc, char** argv) {
@@ -22,8 +22,8 @@ int main(int argc, char** argv) {
   }
   const ImageDifference d = compare_images(*a, *b, 2);
   if (!d.same_size) {
-    std::fprintf(stderr, "imagediff: error: the images differ in size (%dx%d, %dx%d)\n", a->width, a->height,
-                 b->width, b->height);
+    std::fprintf(stderr, "imagediff: error: the images differ in size (%dx%d, %dx%d)\n", a->width, a->height, b->width,
+                 b->height);
     return 2;
   }
   std::printf("rms %.3f mean %.3f max %d levels; %zu pixels differ by more than 2\n", d.rms_channel, d.mean_channel,

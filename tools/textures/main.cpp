@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/png_file.h"
+#include "io/image/png_file.h"
 #include "tools/textures/patterns.h"
 
 int main(int argc, char** argv) {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
-#include "io/rgb8_image.h"
+#include "io/image/rgb8_image.h"
 
 namespace rt::textures {
 

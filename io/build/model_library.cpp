@@ -1,0 +1,113 @@
+#include "io/build/model_library.h"
+
+#include <cstdio>
+#include <limits>
+
+namespace rt {
+namespace {
+
+// Half the float range: the difference of two such coordinates (a triangle's edge) is finite.
+constexpr float kMaxVertexCoordinate = std::numeric_limits<float>::max() / 2;
+
+std::string format_point(Vec3 p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "[%g, %g, %g]", p.x, p.y, p.z);
+  return buf;
+}
+
+}  // namespace
+
+ModelLibrary::ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options, LimitUsage& usage,
+                           const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink)
+    : assets_(assets),
+      textures_(textures),
+      options_(options),
+      usage_(usage),
+      bvh_options_(bvh_options),
+      files_(files),
+      sink_(std::move(sink)) {}
+
+const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
+  const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
+  if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
+  std::optional<LoadedModel>& slot = models_[key];
+  ImportError why;
+  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, usage_, why);
+  if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
+  if (!model && why.over_limit) {
+    sink_.over_limit(ref.pointer + "/file", "\"" + ref.file + "\": " + why.message);
+    return nullptr;
+  }
+  if (!model && why.unknown_mesh) {
+    sink_.error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
+                                           "), found \"" + *ref.mesh_name + "\"");
+    return nullptr;
+  }
+  if (!model) {
+    sink_.error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
+                                           (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") +
+                                           ": " + why.message);
+    return nullptr;
+  }
+  for (const std::string& w : model->warnings) sink_.warning(ref.pointer, "\"" + ref.file + "\": " + w);
+  LoadedModel loaded;
+  const auto first_material = static_cast<uint32_t>(assets_.materials.size());
+  add_materials(*model);
+  loaded.meshes.resize(model->meshes.size());
+  for (size_t m = 0; m < model->meshes.size(); ++m) {
+    for (ImportedPrimitive& p : model->meshes[m]) {
+      if (!add_geometry(std::move(p.mesh), ref)) return nullptr;
+      const uint32_t material =
+          p.material >= 0 ? first_material + static_cast<uint32_t>(p.material) : default_material();
+      loaded.meshes[m].push_back(
+          LoadedPrimitive{static_cast<uint32_t>(assets_.meshes.size() - 1), material, p.material});
+    }
+  }
+  model->meshes.clear();
+  loaded.model = std::move(*model);
+  slot = std::move(loaded);
+  return &*slot;
+}
+
+// The mesh in its object space with its own BVH (counted against the triangle limit once, at
+// import, however often it is placed: instances share it).
+bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
+  for (const Vec3& v : mesh.positions) {
+    if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
+      sink_.error(ref.pointer, "expected \"" + ref.file +
+                                   "\" within +-1.7e38 (half the single-precision range, so that "
+                                   "edges stay finite), found a vertex at " +
+                                   format_point(v));
+      return false;
+    }
+  }
+  MeshGeometry g;
+  g.mesh = std::move(mesh);
+  if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
+  assets_.meshes.push_back(std::move(g));
+  return true;
+}
+
+// The model's materials, their texture slots moved to where its textures land in the scene (the
+// import counted their texels).
+void ModelLibrary::add_materials(ImportedModel& model) {
+  const auto first_texture = static_cast<uint32_t>(assets_.textures.size());
+  for (Texture& t : model.textures) textures_.add(std::move(t));
+  model.textures.clear();
+  for (Material m : model.materials) {
+    for (TextureSlot* slot : m.texture_slots())
+      if (slot->present()) slot->texture += first_texture;
+    assets_.materials.push_back(m);
+  }
+}
+
+// Our Material defaults stand in for glTF's default material (which a Phong model can't match).
+uint32_t ModelLibrary::default_material() {
+  if (!default_material_) {
+    default_material_ = static_cast<uint32_t>(assets_.materials.size());
+    assets_.materials.push_back(Material{});
+  }
+  return *default_material_;
+}
+
+}  // namespace rt

@@ -1,0 +1,64 @@
+// The glTF files a scene places, each read once however often it is placed ("load once"): their
+// primitives become meshes in SceneAssets, in their object space, each with its own BVH
+// (counted against the triangle limit once); their materials and images join the scene's, with
+// texture slots renumbered. The builder then grafts a file's node tree wherever a node names it.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene_assets.h"
+#include "io/base/load_options.h"
+#include "io/build/texture_library.h"
+#include "io/gltf/loader.h"
+#include "io/scene/description.h"
+
+namespace rt {
+
+// Where problems go: at a JSON pointer of the scene file.
+struct ProblemSink {
+  std::function<void(const std::string& pointer, std::string message)> error;
+  std::function<void(const std::string& pointer, std::string message)> warning;
+  std::function<void(const std::string& pointer, std::string message)> over_limit;  // loading stops
+};
+
+struct LoadedPrimitive {
+  uint32_t geometry;  // index into SceneAssets::meshes
+  uint32_t material;  // into SceneAssets::materials
+  int file_material;  // the file's own index (-1: none), for overrides by name
+};
+
+struct LoadedModel {
+  ImportedModel model;                               // its nodes, tracks, cameras, lights (meshes moved out)
+  std::vector<std::vector<LoadedPrimitive>> meshes;  // per glTF mesh
+};
+
+class ModelLibrary {
+ public:
+  ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options, LimitUsage& usage,
+               const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink);
+
+  // The file (or its one named mesh) that `ref` names, loaded the first time; null if it cannot
+  // be (the problem is reported at ref's pointer, once).
+  const LoadedModel* load(const MeshReference& ref);
+
+ private:
+  bool add_geometry(TriangleMesh mesh, const MeshReference& ref);
+  void add_materials(ImportedModel& model);
+  uint32_t default_material();
+
+  SceneAssets& assets_;
+  TextureLibrary& textures_;
+  const LoadOptions& options_;
+  LimitUsage& usage_;  // the scene's, shared with the texture library
+  const BvhBuildOptions& bvh_options_;
+  std::vector<std::string>& files_;  // every file read (LoadedScene::inputs)
+  ProblemSink sink_;
+  std::map<std::string, std::optional<LoadedModel>> models_;  // by path and mesh name; empty: failed
+  std::optional<uint32_t> default_material_;
+};
+
+}  // namespace rt

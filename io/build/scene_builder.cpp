@@ -1,0 +1,346 @@
+#include "io/build/scene_builder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/thread_count.h"
+#include "io/build/model_library.h"
+#include "io/build/placement_warnings.h"
+#include "io/build/texture_library.h"
+#include "io/gltf/loader.h"
+#include "io/json/reader.h"
+
+namespace rt {
+namespace {
+
+class Builder {
+ public:
+  // The scene's own materials come first, so their indices stay those of the description;
+  // glTF files append theirs as they are loaded.
+  Builder(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options, Diagnostics& diags)
+      : desc_(desc),
+        source_(source),
+        options_(options),
+        diags_(diags),
+        bvh_options_{resolve_thread_count(options.threads)} {
+    // The scene file's tracks were counted when they were parsed; glTF files' come on top.
+    if (desc_.animation)
+      for (const TrackDescription& t : desc_.animation->tracks) usage_.animation_keys += t.track.keys->times.size();
+    for (const MaterialDescription& m : desc_.materials) assets_.materials.push_back(with_textures(m));
+  }
+
+  void add_nodes(const std::vector<NodeDescription>& nodes, int32_t parent) {
+    for (const NodeDescription& node : nodes) {
+      if (over_limit_) return;
+      const auto index = static_cast<int32_t>(nodes_.size());
+      SceneNode n;
+      n.name = node.name;
+      n.parent = parent;
+      n.trs = node.transform.trs;
+      n.matrix = node.transform.matrix;
+      if (node.shape) {
+        n.shape = node.shape;
+        n.shape_material = node.material.value_or(0);
+        take_instances(1, node.pointer);
+      }
+      push_node(std::move(n), node.pointer, false);
+      if (node.mesh) add_model(*node.mesh, index, node.material);
+      add_nodes(node.children, index);
+    }
+  }
+
+  void add_animation() {
+    if (!desc_.animation) return;
+    const AnimationDescription& a = *desc_.animation;
+    std::vector<std::string> names;
+    for (const SceneNode& n : nodes_)
+      if (!n.name.empty()) names.push_back(n.name);
+    for (const TrackDescription& t : a.tracks) {
+      // A scene node of that name, else every node of that name inside the glTF files the scene
+      // places (a file placed twice moves in both places).
+      std::vector<size_t> in_scene, in_files;
+      for (size_t i = 0; i < nodes_.size(); ++i)
+        if (nodes_[i].name == t.node) (from_file_[i] ? in_files : in_scene).push_back(i);
+      const std::vector<size_t> found = in_scene.empty() ? in_files : std::vector<size_t>{in_scene.front()};
+      if (found.empty()) {
+        std::string message =
+            "expected the name of a node under /nodes or inside a glTF file they place, found \"" + t.node + "\"";
+        if (const auto near = closest_match(t.node, names)) message += " (did you mean \"" + *near + "\"?)";
+        error(t.pointer + "/node", message);
+        continue;
+      }
+      for (const size_t node : found) {
+        if (nodes_[node].matrix) {
+          error(t.pointer + "/node", "expected a node with translate/rotate/scale to animate, found \"" + t.node +
+                                         "\" placed by a matrix (" +
+                                         (from_file_[node] ? "in the glTF file placed at " : "") + pointers_[node] +
+                                         ")");
+          break;
+        }
+        Track track = t.track;
+        track.node = static_cast<uint32_t>(node);
+        tracks_.push_back(std::move(track));
+      }
+    }
+  }
+
+  std::optional<BuiltScene> finish() {
+    SceneGraph g;
+    g.nodes = std::move(nodes_);
+    g.tracks = std::move(tracks_);
+    g.background = desc_.background;
+    g.ambient = desc_.ambient;
+    set_timeline(g);
+    const CameraDescription& c = desc_.camera;
+    g.camera.camera = Camera::look_at(c.position, c.look_at, c.up, c.fov_degrees);
+    g.camera.camera.aperture = c.aperture;
+    g.camera.camera.focus_distance = c.focus_distance.value_or(glm::length(c.look_at - c.position));
+    for (const Light& l : desc_.lights) g.lights.push_back(LightPlacement{l, -1});
+    g.lights.insert(g.lights.end(), file_lights_.begin(), file_lights_.end());
+    if (!choose_camera(g)) return std::nullopt;
+    // Masks point into the meshes and textures: made once the assets are where they stay.
+    auto assets = std::make_shared<SceneAssets>(std::move(assets_));
+    for (const SceneNode& node : g.nodes)
+      for (const NodeMesh& nm : node.meshes) assets->add_mask(nm.mesh, nm.material);
+    g.assets = std::move(assets);
+
+    // The first frame, placed once: its problems are errors at the nodes concerned (nodes from
+    // glTF files scaled to nothing are parts hidden on purpose, and simply not drawn).
+    const float t0 = g.timeline.seconds(g.timeline.first_frame);
+    std::vector<PlacementIssue> issues;
+    PrimitiveSet placed = g.place(t0, &issues);
+    for (const auto& [pointer, message] : hidden_file_warnings(g, pointers_, from_file_, issues))
+      warning(pointer, message);
+    for (const PlacementIssue& issue : issues) {
+      if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
+      error(pointers_[issue.node],
+            issue.kind == PlacementIssue::kSingular
+                ? "expected an invertible world transform, found a singular one (the transforms above this node "
+                  "multiply to a flattening scale)"
+                : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
+                  "that reaches infinity");
+    }
+    if (auto w = stacked_copies_warning(g, t0, pointers_)) warning(w->first, w->second);
+    if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
+    if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
+    if (diags_.error_count() > errors_before_) return std::nullopt;
+    Scene first = options_.build_bvh ? g.at(t0, placed, bvh_options_) : g.at(t0, PrimitiveSet{}, bvh_options_);
+    return BuiltScene{std::move(g), std::move(first)};
+  }
+
+  std::vector<std::string> take_files() { return std::move(files_); }
+
+ private:
+  void push_node(SceneNode n, const std::string& pointer, bool from_file) {
+    nodes_.push_back(std::move(n));
+    pointers_.push_back(pointer);
+    from_file_.push_back(from_file);
+  }
+
+  void set_timeline(SceneGraph& g) const {
+    const AnimationDescription* a = desc_.animation ? &*desc_.animation : nullptr;
+    g.timeline.fps = a ? a->fps : 30.0f;
+    float end = 0.0f;
+    for (const Track& t : g.tracks) end = std::max(end, t.end());
+    g.animated = !g.tracks.empty() || a;
+    g.timeline.first_frame = a && a->first_frame ? *a->first_frame : 0;
+    // Default: up to the frame of the last key (rounded up, so that no key is cut off).
+    const double last = std::ceil(static_cast<double>(end) * g.timeline.fps - 1e-3);
+    g.timeline.last_frame =
+        a && a->last_frame ? *a->last_frame : std::max(g.timeline.first_frame, static_cast<int>(std::min(last, 1e6)));
+  }
+
+  // --camera NAME: a glTF camera by its name or its node's, instead of the scene's camera.
+  bool choose_camera(SceneGraph& g) {
+    if (!options_.camera) return true;
+    std::vector<std::string> names;
+    for (const CameraPlacement& c : cameras_) {
+      if (c.name == *options_.camera || g.nodes[static_cast<size_t>(c.node)].name == *options_.camera) {
+        g.camera = c;
+        return true;
+      }
+      names.push_back(c.name);
+    }
+    diags_.file_error(desc_.path,
+                      "--camera: expected the name of a camera in the scene's glTF files" +
+                          (names.empty() ? std::string(" (there are none)") : " (" + join_quoted(names) + ")") +
+                          ", found \"" + *options_.camera + "\"");
+    return false;
+  }
+
+  // The camera framing the model's first frame from the front and above, and a point light up
+  // and to the right of it, so that shading shows the form and shadows fall behind.
+  bool frame_model(SceneGraph& g, const PrimitiveSet& placed) {
+    Aabb bounds;
+    for (uint32_t id = 0; id < placed.size(); ++id) bounds.extend(placed.bounds(id));
+    if (bounds.empty()) bounds = Aabb{Vec3(-1.0f), Vec3(1.0f)};  // nothing to see: still a camera and a light
+    const float aspect = static_cast<float>(desc_.render.width) / static_cast<float>(desc_.render.height);
+    const Camera camera = Camera::framing(bounds, 40.0f, aspect);
+    const float reach = glm::length(camera.position - bounds.centre());
+    PointLight light;
+    light.position = camera.position + reach * (0.5f * camera.right + 0.6f * camera.up);
+    if (!is_finite(camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
+      diags_.file_error(desc_.path,
+                        "expected a model small enough to frame in single precision, found one whose "
+                        "extent (from " +
+                            std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
+                            " in x) puts the camera at infinity");
+      return false;
+    }
+    g.camera = CameraPlacement{"", camera, -1};
+    if (g.lights.empty()) g.lights = {LightPlacement{light, -1}};
+    return true;
+  }
+
+  // The material with its slots pointing at loaded textures; a slot whose file failed stays empty
+  // (the error is recorded, so the scene is not built).
+  Material with_textures(const MaterialDescription& m) {
+    Material out = m.material;
+    const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
+      if (!ref || over_limit_) return;
+      TextureError why;
+      slot.texture = textures_.load(*ref, why, files_);
+      if (why.over_budget) limit_error(ref->pointer, why.message);
+      else if (!why.message.empty()) error(ref->pointer, why.message);
+    };
+    fill(m.texture, out.texture);
+    fill(m.specular_texture, out.specular_texture);
+    fill(m.bump, out.bump.height);
+    fill(m.normal_map, out.normal_map.map);
+    return out;
+  }
+
+  // Shapes and placed mesh primitives together; one error when the limit is passed, then stop.
+  bool take_instances(uint64_t count, const std::string& pointer) {
+    instances_ += count;
+    if (instances_ <= options_.limits.instances) return true;
+    limit_error(pointer, "expected at most " + std::to_string(options_.limits.instances) +
+                             " shapes and placed mesh primitives in a scene, found more");
+    return false;
+  }
+
+  // A glTF file's node tree, grafted under scene node `parent` (or its one named mesh, carried by
+  // `parent` itself), with the file's animation tracks moved onto the grafted nodes.
+  void add_model(const MeshReference& ref, int32_t parent, std::optional<uint32_t> material_override) {
+    const LoadedModel* loaded = models_.load(ref);
+    if (!loaded) return;
+    const ImportedModel& model = loaded->model;
+    // The node's "material" replaces them all; "materials" in the mesh object replaces by name.
+    for (const MaterialOverride& o : ref.materials) {
+      const auto& names = model.material_names;
+      if (std::find(names.begin(), names.end(), o.file_material) != names.end()) continue;
+      std::string message = "expected the name of a material in \"" + ref.file + "\"";
+      if (!names.empty() && names.size() <= 12) message += " (" + join_quoted(names) + ")";
+      message += ", found \"" + o.file_material + "\"";
+      if (const auto near = closest_match(o.file_material, names)) message += " (did you mean \"" + *near + "\"?)";
+      error(o.pointer, message);
+    }
+    const auto material_of = [&](const LoadedPrimitive& p) {
+      if (material_override) return *material_override;
+      if (p.file_material >= 0)
+        for (const MaterialOverride& o : ref.materials)
+          if (model.material_names[static_cast<size_t>(p.file_material)] == o.file_material) return o.material;
+      return p.material;
+    };
+    const auto meshes_of = [&](int32_t mesh) {
+      std::vector<NodeMesh> out;
+      if (mesh < 0) return out;
+      for (const LoadedPrimitive& p : loaded->meshes[static_cast<size_t>(mesh)])
+        out.push_back(NodeMesh{p.geometry, material_of(p)});
+      return out;
+    };
+    size_t placed = 0;
+    if (ref.mesh_name) {
+      SceneNode& carrier = nodes_[static_cast<size_t>(parent)];
+      carrier.meshes = meshes_of(model.nodes.front().mesh);
+      placed = carrier.meshes.size();
+      take_instances(placed, ref.pointer);
+    } else {
+      const auto base = static_cast<int32_t>(nodes_.size());
+      for (const ImportedNode& in : model.nodes) {
+        SceneNode n;
+        n.name = in.name;
+        n.parent = in.parent >= 0 ? base + in.parent : parent;
+        n.trs = in.trs;
+        n.matrix = in.matrix;
+        n.meshes = meshes_of(in.mesh);
+        n.instancing = in.instancing;
+        const size_t copies = n.meshes.size() * std::max<size_t>(1, n.instancing.size());
+        placed += copies;
+        if (!take_instances(copies, ref.pointer)) return;
+        push_node(std::move(n), ref.pointer, true);
+      }
+      for (Track t : model.tracks) {
+        t.node += static_cast<uint32_t>(base);
+        tracks_.push_back(std::move(t));
+      }
+      for (CameraPlacement c : model.cameras) {
+        c.node += base;
+        cameras_.push_back(std::move(c));
+      }
+      for (LightPlacement l : model.lights) {
+        l.node += base;
+        file_lights_.push_back(l);
+      }
+    }
+    if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
+  }
+
+  void limit_error(const std::string& pointer, const std::string& message) {
+    over_limit_ = true;
+    error(pointer, message + " (a limit that keeps memory bounded; see README, \"Limits\")");
+  }
+  void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
+  void warning(const std::string& pointer, std::string message) {
+    report(Severity::kWarning, pointer, std::move(message));
+  }
+  void report(Severity severity, const std::string& pointer, std::string message) {
+    if (source_) {
+      const JsonReader r(*source_, diags_);
+      severity == Severity::kError ? r.error(pointer, std::move(message)) : r.warning(pointer, std::move(message));
+    } else {
+      diags_.add(Diagnostic{severity, desc_.path, 0, 0, "", std::move(message), ""});
+    }
+  }
+
+  const SceneDescription& desc_;
+  const JsonDocument* source_;
+  const LoadOptions& options_;
+  Diagnostics& diags_;
+  const BvhBuildOptions bvh_options_;
+  const size_t errors_before_ = diags_.error_count();
+  SceneAssets assets_;
+  LimitUsage usage_;
+  TextureLibrary textures_{assets_.textures, options_.limits, usage_};
+  std::vector<SceneNode> nodes_;
+  std::vector<std::string> pointers_;  // per node: where the scene file describes it
+  std::vector<bool> from_file_;        // per node: grafted from a glTF file
+  std::vector<Track> tracks_;
+  std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
+  std::vector<LightPlacement> file_lights_;
+  std::vector<std::string> files_;
+  ModelLibrary models_{assets_,
+                       textures_,
+                       options_,
+                       usage_,
+                       bvh_options_,
+                       files_,
+                       ProblemSink{[this](const std::string& p, std::string m) { error(p, std::move(m)); },
+                                   [this](const std::string& p, std::string m) { warning(p, std::move(m)); },
+                                   [this](const std::string& p, std::string m) { limit_error(p, m); }}};
+  uint64_t instances_ = 0;
+  bool over_limit_ = false;
+};
+
+}  // namespace
+
+std::optional<BuiltScene> build_scene(const SceneDescription& desc, const JsonDocument* source,
+                                      const LoadOptions& options, Diagnostics& diags, std::vector<std::string>* files) {
+  Builder builder(desc, source, options, diags);
+  builder.add_nodes(desc.nodes, -1);
+  builder.add_animation();
+  if (files) *files = builder.take_files();
+  return builder.finish();
+}
+
+}  // namespace rt

@@ -1,0 +1,25 @@
+#include "io/build/texture_library.h"
+
+namespace rt {
+
+uint32_t TextureLibrary::load(const TextureFileReference& ref, TextureError& error, std::vector<std::string>& files) {
+  const std::string key = ref.resolved_path + "\n" + std::to_string(static_cast<int>(ref.encoding));
+  if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
+  auto texture = load_texture(ref.resolved_path, ref.encoding, limits_, usage_, error);
+  uint32_t index = kNoTexture;
+  if (texture) {
+    files.push_back(ref.resolved_path);
+    index = add(std::move(*texture));
+  } else if (error.message.rfind("expected", 0) != 0 && !error.over_budget) {
+    error.message = "expected a readable PNG or JPEG image; " + error.message;
+  }
+  indices_.emplace(key, index);
+  return index;
+}
+
+uint32_t TextureLibrary::add(Texture texture) {
+  textures_.push_back(std::move(texture));
+  return static_cast<uint32_t>(textures_.size() - 1);
+}
+
+}  // namespace rt

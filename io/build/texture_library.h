@@ -1,0 +1,36 @@
+// The scene's textures as the builder loads them: each file once per encoding (a colour texture
+// is decoded from sRGB, a height map not), every texel counted against the scene's budget
+// (LoadLimits::scene_texels, mip levels included) from the image's header, before it is decoded.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/texture/texture.h"
+#include "io/base/load_options.h"
+#include "io/scene/texture_parser.h"
+
+namespace rt {
+
+class TextureLibrary {
+ public:
+  TextureLibrary(std::vector<Texture>& textures, const LoadLimits& limits, LimitUsage& usage)
+      : textures_(textures), limits_(limits), usage_(usage) {}
+
+  // The index of the file's texture, loading it the first time; kNoTexture when it cannot be
+  // used, with why in `error` the first time (over_budget: loading should stop). `files`
+  // receives the path of a file read.
+  uint32_t load(const TextureFileReference& ref, TextureError& error, std::vector<std::string>& files);
+  // Appends a texture decoded elsewhere, its texels already counted (a glTF file's); returns its index.
+  uint32_t add(Texture texture);
+
+ private:
+  std::vector<Texture>& textures_;
+  const LoadLimits& limits_;
+  LimitUsage& usage_;
+  std::map<std::string, uint32_t> indices_;  // resolved path + encoding -> index (kNoTexture: failed)
+};
+
+}  // namespace rt

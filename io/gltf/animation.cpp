@@ -1,0 +1,149 @@
+#include "io/gltf/animation.h"
+
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include <tiny_gltf.h>
+
+#include "io/gltf/accessor.h"
+
+namespace rt {
+namespace {
+
+using std::to_string;
+
+bool fail(std::string& error, const std::string& message) {
+  error = message;
+  return false;
+}
+
+// A sampler's keys as one kind of channel reads them (3 or 4 components, rotations normalised).
+std::shared_ptr<const Keyframes> read_keys(const tinygltf::Model& model, const tinygltf::AnimationSampler& sampler,
+                                           TrsPart part, Interpolation interpolation, const LoadLimits& limits,
+                                           const std::string& where, std::string& error) {
+  Keyframes keys;
+  std::vector<float> raw;
+  if (!read_float_accessor(model, sampler.input, 1, limits.animation_keys, raw, error)) {
+    fail(error, where + " input: " + error);
+    return nullptr;
+  }
+  if (raw.empty()) {
+    fail(error, where + " input: expected at least one key time, found none");
+    return nullptr;
+  }
+  for (size_t k = 0; k < raw.size(); ++k) {
+    if (!std::isfinite(raw[k])) {
+      fail(error, where + " input: key " + to_string(k) + " is not a finite time");
+      return nullptr;
+    }
+    if (k > 0 && !(raw[k] > raw[k - 1])) {
+      fail(error, where + " input: expected strictly increasing key times, found " + to_string(raw[k]) + " after " +
+                      to_string(raw[k - 1]));
+      return nullptr;
+    }
+  }
+  keys.times = std::move(raw);
+  const int components = part == TrsPart::kRotation ? 4 : 3;
+  const size_t per_key = interpolation == Interpolation::kCubicSpline ? 3 : 1;
+  if (!read_float_accessor(model, sampler.output, components, per_key * limits.animation_keys, raw, error)) {
+    fail(error, where + " output: " + error);
+    return nullptr;
+  }
+  const size_t values = raw.size() / static_cast<size_t>(components);
+  if (values != per_key * keys.times.size()) {
+    fail(error, where + " output: expected " + to_string(per_key * keys.times.size()) + " values (" +
+                    (per_key == 3 ? "in-tangent, value and out-tangent for each of " : "one for each of ") +
+                    to_string(keys.times.size()) + " keys), found " + to_string(values));
+    return nullptr;
+  }
+  keys.values.resize(values);
+  for (size_t i = 0; i < values; ++i) {
+    Vec4 v(0.0f);
+    for (int k = 0; k < components; ++k) v[k] = raw[i * static_cast<size_t>(components) + static_cast<size_t>(k)];
+    if (!is_finite(v)) {
+      fail(error, where + " output: value " + to_string(i) + " is not finite");
+      return nullptr;
+    }
+    keys.values[i] = v;
+  }
+  if (part == TrsPart::kRotation) {
+    // Key values must be unit quaternions (tangents need not be): normalise them.
+    for (size_t k = 0; k < keys.times.size(); ++k) {
+      Vec4& q = keys.values[per_key == 3 ? 3 * k + 1 : k];
+      const float len = glm::length(q);
+      q = len > 0.0f ? q / len : Vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    }
+  }
+  return std::make_shared<const Keyframes>(std::move(keys));
+}
+
+}  // namespace
+
+bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map, const LoadLimits& limits,
+                       LimitUsage& usage, ImportedModel& out, ImportError& import_error) {
+  std::string& error = import_error.message;
+  if (model.animations.empty()) return true;
+  if (model.animations.size() > 1)
+    out.warnings.push_back("the file has " + to_string(model.animations.size()) + " animations; the first (\"" +
+                           model.animations[0].name + "\") plays");
+  const tinygltf::Animation& animation = model.animations[0];
+  // Per sampler and channel kind (a sampler may serve translation and scale alike): its keys.
+  std::map<std::pair<int, TrsPart>, std::shared_ptr<const Keyframes>> shared;
+  for (size_t c = 0; c < animation.channels.size(); ++c) {
+    const tinygltf::AnimationChannel& channel = animation.channels[c];
+    const std::string where = "animation 0 channel " + to_string(c);
+    Track track;
+    if (channel.target_path == "translation") track.part = TrsPart::kTranslation;
+    else if (channel.target_path == "rotation") track.part = TrsPart::kRotation;
+    else if (channel.target_path == "scale") track.part = TrsPart::kScale;
+    else {
+      out.warnings.push_back(where + ": \"" + channel.target_path + "\" channels are not played; skipped");
+      continue;
+    }
+    if (channel.target_node < 0 || static_cast<size_t>(channel.target_node) >= node_map.size())
+      return fail(error, where + ": target node " + to_string(channel.target_node) + " does not exist");
+    const int32_t node = node_map[static_cast<size_t>(channel.target_node)];
+    if (node < 0) {
+      out.warnings.push_back(where + ": node " + to_string(channel.target_node) +
+                             " is not in the default scene; skipped");
+      continue;
+    }
+    if (out.nodes[static_cast<size_t>(node)].matrix)
+      return fail(error,
+                  where + ": node " + to_string(channel.target_node) +
+                      " has a \"matrix\"; glTF allows animating only nodes with translation, rotation and scale");
+    track.node = static_cast<uint32_t>(node);
+    if (channel.sampler < 0 || static_cast<size_t>(channel.sampler) >= animation.samplers.size())
+      return fail(error, where + ": sampler " + to_string(channel.sampler) + " does not exist");
+    const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<size_t>(channel.sampler)];
+    if (sampler.interpolation == "STEP") track.interpolation = Interpolation::kStep;
+    else if (sampler.interpolation == "CUBICSPLINE") track.interpolation = Interpolation::kCubicSpline;
+    else if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty())
+      track.interpolation = Interpolation::kLinear;
+    else
+      return fail(error, where + ": expected interpolation LINEAR, STEP or CUBICSPLINE, found \"" +
+                             sampler.interpolation + "\"");
+
+    std::shared_ptr<const Keyframes>& keys = shared[{channel.sampler, track.part}];
+    if (!keys) {
+      const uint64_t count = accessor_count(model, sampler.input);
+      if (count > limits.animation_keys || usage.animation_keys > limits.animation_keys - count) {
+        import_error.over_limit = true;
+        return fail(error, where + ": expected at most " + to_string(limits.animation_keys) +
+                               " animation keys in a scene, found " + to_string(count) + " in this sampler" +
+                               (usage.animation_keys ? " after " + to_string(usage.animation_keys) + " before it"
+                                                     : std::string()));
+      }
+      keys = read_keys(model, sampler, track.part, track.interpolation, limits, where, error);
+      if (!keys) return false;
+      usage.animation_keys += count;
+    }
+    track.keys = keys;
+    out.animation_end = std::max(out.animation_end, track.end());
+    out.tracks.push_back(std::move(track));
+  }
+  return true;
+}
+
+}  // namespace rt

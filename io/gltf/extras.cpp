@@ -1,0 +1,66 @@
+#include "io/gltf/extras.h"
+
+#include <cmath>
+
+#include <tiny_gltf.h>
+
+#include "io/gltf/images.h"
+#include "io/gltf/values.h"
+
+namespace rt {
+namespace {
+
+// Blender writes booleans of custom properties as 0 or 1.
+bool flag(const tinygltf::Value& object, const char* key) {
+  if (!object.Has(key)) return false;
+  const tinygltf::Value& v = object.Get(key);
+  return v.IsBool() ? v.Get<bool>() : (v.IsNumber() && v.GetNumberAsDouble() != 0.0);
+}
+
+}  // namespace
+
+std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, const std::string& where,
+                                                std::vector<std::string>& warnings) {
+  if (!extras.IsObject() || !extras.Has("rtcli_area_light")) return std::nullopt;
+  const tinygltf::Value& a = extras.Get("rtcli_area_light");
+  const auto size = gltf_numbers(a, "size", 2);
+  const auto power = gltf_number(a, "power");
+  const auto colour = gltf_numbers(a, "color", 3);
+  if (!size || !power || !((*size)[0] > 0.0f) || !((*size)[1] > 0.0f) || *power < 0.0f) {
+    warnings.push_back(where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
+    return std::nullopt;
+  }
+  if (a.Has("shape") && a.Get("shape").IsString()) {
+    const std::string shape = a.Get("shape").Get<std::string>();
+    if (shape == "DISK" || shape == "ELLIPSE")
+      warnings.push_back(where + ": a " + shape + " area light is drawn as the rectangle of the same size");
+  }
+  const float sx = (*size)[0], sy = (*size)[1];
+  RectLight light;
+  // Centred on the node; edge1 x edge2 = -Z, the way Blender's area lights face.
+  light.corner = Vec3(-0.5f * sx, 0.5f * sy, 0.0f);
+  light.edge1 = Vec3(sx, 0.0f, 0.0f);
+  light.edge2 = Vec3(0.0f, -sy, 0.0f);
+  const Vec3 c = colour ? glm::max(Vec3((*colour)[0], (*colour)[1], (*colour)[2]), Vec3(0.0f)) : Vec3(1.0f);
+  light.colour = c * (*power / (kPi * kPi));
+  light.attenuation = Attenuation{0.0f, 0.0f, 1.0f};
+  light.two_sided = flag(a, "two_sided");
+  return light;
+}
+
+void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, const std::string& where,
+                           Material& material, std::vector<std::string>& warnings) {
+  if (!extras.IsObject() || !extras.Has("rtcli_bump")) return;
+  const tinygltf::Value& b = extras.Get("rtcli_bump");
+  if (!b.IsObject() || !b.Has("image") || !b.Get("image").IsString()) {
+    warnings.push_back(where + ": rtcli_bump needs an \"image\" file name; ignored");
+    return;
+  }
+  material.bump.height = images.file_slot(b.Get("image").Get<std::string>(), where + " rtcli_bump");
+  material.bump.strength = gltf_number(b, "strength").value_or(1.0f);
+  material.bump.epsilon = std::max(0.0f, gltf_number(b, "epsilon").value_or(0.0f));
+  // Blender's exporter wrote the Bump node's height image as a normal map: not one.
+  if (material.bump.height.present()) material.normal_map = NormalMap{};
+}
+
+}  // namespace rt

@@ -1,0 +1,176 @@
+#include "io/gltf/file.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <tiny_gltf.h>
+
+#include "io/base/input_file.h"
+#include "io/gltf/accessor.h"
+#include "io/gltf/supported_extensions.h"
+#include "io/json/document.h"
+
+namespace rt {
+namespace {
+
+// What the file-system callbacks share: the model's folder, the budget left for external
+// buffers, and the files read.
+struct FileAccess {
+  std::string base_dir;
+  bool outside_files = false;  // LoadLimits::outside_files
+  uint64_t budget = 0;
+  std::vector<std::string> files;
+};
+
+// tinygltf looks for a buffer in the model's folder, then in the current one. Every path in the
+// model's folder "exists", so that read_file() says what is wrong with it (missing, a FIFO, a
+// link loop, outside the folder) instead of tinygltf's "file not found"; the current folder is
+// never searched.
+bool file_exists(const std::string& path, void* user) {
+  const std::string& base = static_cast<FileAccess*>(user)->base_dir;
+  return path.size() > base.size() && path.compare(0, base.size(), base) == 0;
+}
+
+std::string expand_path(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  auto* access = static_cast<FileAccess*>(user);
+  std::string error;
+  if (!access->outside_files && !is_inside_folder(path, access->base_dir)) {
+    if (err)
+      *err = outside_folder_message(path.substr(std::min(path.size(), access->base_dir.size() + 1)), access->base_dir);
+    return false;
+  }
+  auto bytes = read_input_bytes(path, access->budget, error);
+  if (!bytes) {
+    if (err) *err = error;
+    return false;
+  }
+  access->budget -= bytes->size();
+  access->files.push_back(path);
+  *out = std::move(*bytes);
+  return true;
+}
+
+bool write_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err = "rtcli never writes glTF files";
+  return false;
+}
+
+// Images are not decoded here: one from a data URI keeps its encoded bytes in image->image, and
+// the importer decodes only those a material it maps actually uses. One in a buffer view is read
+// later from the view, once check_buffer_views has seen it inside its buffer: tinygltf hands
+// this callback the view's bytes without that check.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+  return true;
+}
+
+// tinygltf's messages end lines with "\n" and may repeat a prefix; one line per message, joined.
+std::string clean(const std::string& text) {
+  std::string out, line;
+  for (const char c : text + "\n") {
+    if (c != '\n') {
+      line.push_back(c);
+      continue;
+    }
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (!line.empty()) out += (out.empty() ? "" : "; ") + clean_parser_message(line);
+    line.clear();
+  }
+  return out;
+}
+
+uint32_t read_u32(const unsigned char* p) {
+  uint32_t v;
+  std::memcpy(&v, p, 4);  // GLB is little-endian, as is every machine rtcli builds on
+  return v;
+}
+
+}  // namespace
+
+std::string outside_folder_message(const std::string& uri, const std::string& base_dir) {
+  return "\"" + uri + "\" is outside the model's folder \"" + base_dir +
+         "\": a glTF file's images and buffers are read from its own folder and below, so that a downloaded "
+         "model cannot show other files (--allow-outside-files reads it)";
+}
+
+GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& base_dir, const LoadLimits& limits,
+                    std::string& error) {
+  GltfFile result;
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  // The JSON part: its size and nesting are checked before tinygltf builds a tree of it (which
+  // it walks recursively).
+  std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (binary) {
+    if (bytes.size() < 20) {
+      error = "a .glb file of " + std::to_string(bytes.size()) + " bytes is shorter than its 20-byte header";
+      return result;
+    }
+    const uint32_t json_length = read_u32(bytes.data() + 12);
+    if (json_length > bytes.size() - 20) {
+      error = "the .glb header announces " + std::to_string(json_length) + " bytes of JSON, but the file has only " +
+              std::to_string(bytes.size() - 20) + " after the header: the file is truncated";
+      return result;
+    }
+    json = json.substr(20, json_length);
+  }
+  if (json.size() > limits.gltf_json_bytes) {
+    error = "its JSON is " + format_bytes(json.size()) + ", more than the " + format_bytes(limits.gltf_json_bytes) +
+            " a glTF file's JSON may have (store large buffers in .bin files or a .glb)";
+    return result;
+  }
+  if (!json_nesting_within(json, kMaxJsonNesting)) {
+    error = "expected JSON nested at most " + std::to_string(kMaxJsonNesting) + " levels deep, found deeper nesting";
+    return result;
+  }
+
+  FileAccess access{base_dir,
+                    limits.outside_files,
+                    limits.gltf_total_bytes - std::min<uint64_t>(limits.gltf_total_bytes, bytes.size()),
+                    {}};
+  auto model = std::make_shared<tinygltf::Model>();
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});
+  loader.SetImageLoader(&keep_encoded_image, nullptr);
+  std::string err, warn;
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(model.get(), &err, &warn, bytes.data(),
+                                              static_cast<unsigned int>(bytes.size()), base_dir)
+                : loader.LoadASCIIFromString(model.get(), &err, &warn, json.data(),
+                                             static_cast<unsigned int>(json.size()), base_dir);
+  } catch (const std::bad_alloc&) {
+    throw;  // the caller reports memory exhaustion
+  } catch (const std::exception& e) {
+    ok = false;
+    err = e.what();
+  }
+  result.files = std::move(access.files);
+  if (!warn.empty()) result.warnings.push_back(clean(warn));
+  if (!ok) {
+    error = err.empty() ? "not a readable glTF file" : clean(err);
+    return result;
+  }
+  for (const std::string& name : model->extensionsRequired) {
+    const auto& supported = supported_gltf_extensions();
+    if (std::find(supported.begin(), supported.end(), name) == supported.end()) {
+      error = "it requires the extension \"" + name + "\", which rtcli does not implement (extensionsRequired)";
+      return result;
+    }
+  }
+  // An optional extension we do not implement leaves the file renderable: say what is ignored.
+  for (const std::string& name : model->extensionsUsed) {
+    const auto& supported = supported_gltf_extensions();
+    const bool required = std::find(model->extensionsRequired.begin(), model->extensionsRequired.end(), name) !=
+                          model->extensionsRequired.end();
+    if (!required && std::find(supported.begin(), supported.end(), name) == supported.end())
+      result.warnings.push_back("it uses the extension \"" + name + "\", which rtcli ignores (extensionsUsed)");
+  }
+  if (!check_buffer_views(*model, error)) return result;
+  result.model = std::move(model);
+  return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,209 @@
+#include "io/gltf/images.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <set>
+
+#include <tiny_gltf.h>
+
+#include "io/base/input_file.h"
+#include "io/gltf/file.h"
+#include "io/gltf/values.h"
+#include "io/image/image_header.h"
+
+namespace rt {
+
+using std::to_string;
+
+std::string percent_decoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const auto hex = [&](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) && hex(uri[i + 2])) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+ImageDecoder::ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits,
+                           LimitUsage& usage, ImportedModel& out)
+    : model_(model), base_dir_(base_dir), limits_(limits), usage_(usage), out_(out) {}
+
+TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where) {
+  TextureSlot slot;
+  int texcoord = ref.texcoord;
+  if (ref.transform) {
+    read_transform(*ref.transform, slot.mapping, where);
+    if (ref.transform->Has("texCoord") && ref.transform->Get("texCoord").IsInt())
+      texcoord = ref.transform->Get("texCoord").GetNumberAsInt();  // overrides the textureInfo's
+  }
+  slot.mapping.uv_set = texcoord == 1 ? 1u : 0u;
+  if (texcoord < 0 || texcoord > 1)
+    out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
+  if (ref.index < 0 || static_cast<size_t>(ref.index) >= model_.textures.size()) {
+    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " does not exist; ignored");
+    return slot;
+  }
+  const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(ref.index)];
+  read_sampler(texture.sampler, slot.mapping);
+  if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
+    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " has no image; ignored");
+    return slot;
+  }
+  slot.texture = decode(source_of(static_cast<size_t>(texture.source)), encoding, where);
+  return slot;
+}
+
+// glTF samplers (README, "glTF materials"): wrapS decides the wrap mode (ours is one for both
+// axes). Without mipmaps in minFilter, magFilter picks nearest or bilinear; with them (or no
+// sampler), trilinear, unless magFilter is NEAREST (pixel art).
+void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {
+  if (index < 0 || static_cast<size_t>(index) >= model_.samplers.size()) return;
+  const tinygltf::Sampler& sampler = model_.samplers[static_cast<size_t>(index)];
+  mapping.wrap = sampler.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
+                 : sampler.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
+                                                                          : TextureWrap::kRepeat;
+  const bool nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+  const bool mipmapped =
+      sampler.minFilter != TINYGLTF_TEXTURE_FILTER_NEAREST && sampler.minFilter != TINYGLTF_TEXTURE_FILTER_LINEAR;
+  mapping.filter = nearest ? TextureFilter::kNearest : mipmapped ? TextureFilter::kTrilinear : TextureFilter::kBilinear;
+}
+
+void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapping, const std::string& where) {
+  const auto pair = [&](const char* key, Vec2& out) {
+    if (!t.Has(key)) return;
+    const auto v = gltf_numbers(t, key, 2);
+    if (v) out = Vec2((*v)[0], (*v)[1]);
+    else out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
+  };
+  pair("offset", mapping.offset);
+  pair("scale", mapping.scale);
+  if (const auto radians = gltf_number(t, "rotation")) mapping.rotation_degrees = *radians * (180.0f / kPi);
+}
+
+std::span<const unsigned char> ImageDecoder::view_bytes(int index) const {
+  // check_buffer_views has put every view inside its buffer; checked again in a form that cannot overflow.
+  if (index < 0 || static_cast<size_t>(index) >= model_.bufferViews.size()) return {};
+  const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(index)];
+  if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size()) return {};
+  const std::vector<unsigned char>& data = model_.buffers[static_cast<size_t>(view.buffer)].data;
+  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) return {};
+  return std::span<const unsigned char>(data).subspan(view.byteOffset, view.byteLength);
+}
+
+ImageDecoder::Source ImageDecoder::source_of(size_t image_index) const {
+  const tinygltf::Image& image = model_.images[image_index];
+  const std::string name = "image " + to_string(image_index);
+  if (image.bufferView >= 0)
+    return {"view " + to_string(image.bufferView), name + " (buffer view " + to_string(image.bufferView) + ")",
+            view_bytes(image.bufferView), "", ""};
+  if (!image.image.empty()) return {name, name, image.image, "", ""};
+  if (!image.uri.empty()) return file_source(image.uri);
+  return {"", name, {}, "", ""};
+}
+
+ImageDecoder::Source ImageDecoder::file_source(const std::string& uri) const {
+  const std::string path = resolve_path(base_dir_, percent_decoded(uri));
+  return {"file " + path, "\"" + path + "\"", {}, path, uri};
+}
+
+bool ImageDecoder::fit_in_budget() {
+  std::set<std::string> seen;
+  uint64_t needed = 0;
+  size_t counted = 0;
+  for (const tinygltf::Texture& texture : model_.textures) {
+    if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) continue;
+    const Source source = source_of(static_cast<size_t>(texture.source));
+    if (source.key.empty() || !seen.insert(source.key).second) continue;
+    std::optional<std::vector<unsigned char>> file;
+    std::span<const unsigned char> bytes = source.bytes;
+    if (!source.path.empty()) {
+      // A file outside the folder or unreadable is reported when its texture is decoded.
+      std::string ignored;
+      if (limits_.outside_files || is_inside_folder(source.path, base_dir_))
+        file = read_input_bytes(source.path, kMaxTextureFileBytes, ignored);
+      if (file) bytes = *file;
+    }
+    std::string ignored;  // so is a broken image
+    const auto header = read_image_header(bytes.data(), bytes.size(), ignored);
+    if (!header || uint64_t{header->width} * header->height > limits_.texture_texels) continue;
+    needed += Texture::texels_with_mip_levels(header->width, header->height);
+    ++counted;
+  }
+  const uint64_t left = usage_.texels >= limits_.scene_texels ? 0 : limits_.scene_texels - usage_.texels;
+  if (needed <= left) return true;
+  failure_ = "its textures' " + to_string(counted) + " images need " + to_string(needed) +
+             " texels with their mip levels (read from their headers), more than the " + to_string(left) +
+             " left of the scene's texture budget of " + to_string(limits_.scene_texels) + " texels";
+  over_limit_ = true;
+  return false;
+}
+
+uint32_t ImageDecoder::decode(const Source& source, TextureEncoding encoding, const std::string& where) {
+  if (!failure_.empty()) return kNoTexture;
+  if (source.key.empty()) {
+    out_.warnings.push_back(where + ": " + source.name + " has no data; ignored");
+    return kNoTexture;
+  }
+  const auto key = std::make_pair(source.key, encoding);
+  if (const auto it = decoded_.find(key); it != decoded_.end()) return it->second;
+  uint32_t texture = kNoTexture;
+  if (source.path.empty() && source.bytes.empty()) {
+    out_.warnings.push_back(where + ": " + source.name + " holds no image; ignored");
+  } else if (source.path.empty()) {
+    texture = decode_bytes(source.bytes, source.name, encoding, where);
+  } else if (const auto file = read_file(source, where)) {
+    texture = decode_bytes(*file, source.name, encoding, where);
+  }
+  if (failure_.empty()) decoded_.emplace(key, texture);
+  return texture;
+}
+
+TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where) {
+  TextureSlot slot;
+  slot.texture = decode(file_source(uri), TextureEncoding::kLinear, where);
+  return slot;
+}
+
+// In the model's folder or below (links resolved) unless the caller allows more: a downloaded
+// model must not show the user's other files in its render.
+std::optional<std::vector<unsigned char>> ImageDecoder::read_file(const Source& source, const std::string& where) {
+  if (!limits_.outside_files && !is_inside_folder(source.path, base_dir_)) {
+    failure_ = where + ": " + outside_folder_message(source.uri, base_dir_);
+    return std::nullopt;
+  }
+  std::string error;
+  auto file = read_input_bytes(source.path, kMaxTextureFileBytes, error);
+  if (!file) {
+    out_.warnings.push_back(where + ": cannot read " + source.name + " (" + error + "); ignored");
+    return std::nullopt;
+  }
+  if (std::find(out_.files.begin(), out_.files.end(), source.path) == out_.files.end())
+    out_.files.push_back(source.path);
+  return file;
+}
+
+uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const std::string& name,
+                                    TextureEncoding encoding, const std::string& where) {
+  TextureError error;
+  auto texture = decode_texture(bytes, name, encoding, limits_, usage_, error);
+  if (!texture) {
+    if (error.over_budget) {
+      failure_ = where + ": " + error.message;
+      over_limit_ = true;
+    } else {
+      out_.warnings.push_back(where + ": " + error.message + "; ignored");
+    }
+    return kNoTexture;
+  }
+  out_.textures.push_back(std::move(*texture));
+  return static_cast<uint32_t>(out_.textures.size() - 1);
+}
+
+}  // namespace rt

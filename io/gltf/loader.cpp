@@ -1,0 +1,383 @@
+#include "io/gltf/loader.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <tiny_gltf.h>
+
+#include "io/base/input_file.h"
+#include "io/gltf/accessor.h"
+#include "io/gltf/animation.h"
+#include "io/gltf/extras.h"
+#include "io/gltf/file.h"
+#include "io/gltf/images.h"
+#include "io/gltf/materials.h"
+#include "io/gltf/mesh_budget.h"
+#include "io/gltf/node_parts.h"
+
+namespace rt {
+namespace {
+
+using std::to_string;
+
+// Triangle list from a primitive's index stream in triangle, strip or fan mode, in the vertex
+// order the glTF 2.0 specification gives (3.7.2.1): strip triangle k is (v_k, v_{k+1+k%2},
+// v_{k+2-k%2}), which keeps one winding; fan triangle k is (v_{k+1}, v_{k+2}, v_0).
+std::vector<uint32_t> to_triangle_list(std::vector<uint32_t> v, int mode) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    v.resize(v.size() / 3 * 3);
+    return v;
+  }
+  std::vector<uint32_t> out;
+  out.reserve(v.size() >= 2 ? 3 * (v.size() - 2) : 0);
+  for (size_t k = 0; k + 2 < v.size(); ++k) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) out.insert(out.end(), {v[k], v[k + 1 + k % 2], v[k + 2 - k % 2]});
+    else out.insert(out.end(), {v[k + 1], v[k + 2], v[0]});
+  }
+  return out;
+}
+
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, const LoadLimits& limits, LimitUsage& usage, ImportedModel& out,
+           ImportError& error)
+      : model_(model),
+        limits_(limits),
+        usage_(usage),
+        out_(out),
+        import_error_(error),
+        error_(error.message),
+        imported_(model.meshes.size(), false) {
+    out_.meshes.resize(model.meshes.size());
+  }
+
+  // Imports mesh `index` once (the first time a node uses it).
+  bool import_mesh(size_t index) {
+    if (!imported_[index]) {
+      imported_[index] = true;
+      const tinygltf::Mesh& mesh = model_.meshes[index];
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const std::string where = "mesh " + to_string(index) + (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") +
+                                  " primitive " + to_string(p);
+        if (!import_primitive(mesh.primitives[p], where, out_.meshes[index])) return false;
+      }
+    }
+    return true;
+  }
+
+  // A node of its own carrying mesh `index` (no node tree: a mesh asked for by name, or a file
+  // without scenes).
+  bool add_mesh_node(size_t index) {
+    if (!import_mesh(index)) return false;
+    ImportedNode node;
+    node.name = model_.meshes[index].name;
+    node.mesh = static_cast<int32_t>(index);
+    out_.nodes.push_back(std::move(node));
+    return true;
+  }
+
+ private:
+  bool fail(const std::string& message) {
+    error_ = message;
+    return false;
+  }
+
+  // The primitive's vertices and triangles, from its accessors' counts, against what the scene
+  // has left: checked before anything is read, so that many primitives sharing one huge
+  // accessor stop at the first that does not fit.
+  bool reserve(MeshCost cost, const std::string& where) {
+    const uint64_t vertices = cost.vertices, triangles = cost.triangles;
+    const auto over = [&](const char* what, uint64_t limit, uint64_t used, uint64_t wanted) {
+      import_error_.over_limit = true;
+      return fail(where + ": expected at most " + to_string(limit) + " " + what + " in a scene's meshes, found " +
+                  to_string(wanted) + " here" +
+                  (used ? " after " + to_string(used) + " in the meshes before it" : std::string()));
+    };
+    if (vertices > limits_.vertices || usage_.vertices > limits_.vertices - vertices)
+      return over("vertices", limits_.vertices, usage_.vertices, vertices);
+    if (triangles > limits_.triangles || usage_.triangles > limits_.triangles - triangles)
+      return over("triangles", limits_.triangles, usage_.triangles, triangles);
+    usage_.vertices += vertices;
+    usage_.triangles += triangles;
+    return true;
+  }
+
+  bool import_primitive(const tinygltf::Primitive& prim, const std::string& where,
+                        std::vector<ImportedPrimitive>& out) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      out_.warnings.push_back(where + ": points and lines are not rendered; primitive skipped");
+      return true;
+    }
+    const auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) {
+      out_.warnings.push_back(where + ": no POSITION attribute; primitive skipped");
+      return true;
+    }
+    ImportedPrimitive ip;
+    ip.material = prim.material;
+    if (prim.material >= static_cast<int>(model_.materials.size()))
+      return fail(where + ": material " + to_string(prim.material) + " does not exist");
+    if (!reserve(primitive_cost(model_, prim), where)) return false;
+    std::vector<float> raw;
+    if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, error_))
+      return fail(where + " POSITION: " + error_);
+    const size_t n = raw.size() / 3;
+    ip.mesh.positions.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      ip.mesh.positions[i] = Vec3(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
+      if (!is_finite(ip.mesh.positions[i]))
+        return fail(where + " POSITION: vertex " + to_string(i) + " is not a finite point in single precision");
+    }
+    if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+      if (!read_float_accessor(model_, it->second, 3, limits_.vertices, raw, error_))
+        return fail(where + " NORMAL: " + error_);
+      if (raw.size() / 3 != n) return fail(where + ": NORMAL and POSITION counts differ");
+      ip.mesh.normals.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3 v(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
+        const float len = glm::length(v);
+        ip.mesh.normals[i] = (len > 0.0f && std::isfinite(len)) ? v / len : Vec3(0.0f);  // zero: use the face normal
+      }
+    }
+    for (const auto& [name, uvs] : {std::pair{"TEXCOORD_0", &ip.mesh.uvs}, std::pair{"TEXCOORD_1", &ip.mesh.uvs1}}) {
+      const auto it = prim.attributes.find(name);
+      if (it == prim.attributes.end()) continue;
+      if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, error_))
+        return fail(where + " " + name + ": " + error_);
+      if (raw.size() / 2 != n) return fail(where + ": " + name + " and POSITION counts differ");
+      uvs->resize(n);
+      for (size_t i = 0; i < n; ++i) (*uvs)[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
+    }
+    if (const auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
+      // VEC3 or VEC4, float or normalised integers: linear colours (alpha 1 with VEC3).
+      const int components = it->second >= 0 && static_cast<size_t>(it->second) < model_.accessors.size() &&
+                                     model_.accessors[static_cast<size_t>(it->second)].type == TINYGLTF_TYPE_VEC3
+                                 ? 3
+                                 : 4;
+      if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, error_))
+        return fail(where + " COLOR_0: " + error_);
+      if (raw.size() / static_cast<size_t>(components) != n)
+        return fail(where + ": COLOR_0 and POSITION counts differ");
+      ip.mesh.colours.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const float* c = &raw[static_cast<size_t>(components) * i];
+        const Vec4 v(c[0], c[1], c[2], components == 4 ? c[3] : 1.0f);
+        ip.mesh.colours[i] = std::isfinite(v.x + v.y + v.z + v.w) ? glm::clamp(v, Vec4(0.0f), Vec4(1.0f)) : Vec4(1.0f);
+      }
+    }
+    if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+      if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, error_))
+        return fail(where + " TANGENT: " + error_);
+      if (raw.size() / 4 != n) return fail(where + ": TANGENT and POSITION counts differ");
+      ip.mesh.tangents.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3 t(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
+        const float len = glm::length(t);
+        // A zero or broken tangent falls back to the frame from the UVs (w = 0 means none).
+        ip.mesh.tangents[i] = len > 0.0f && std::isfinite(len) && std::isfinite(raw[4 * i + 3])
+                                  ? Vec4(t / len, raw[4 * i + 3] < 0.0f ? -1.0f : 1.0f)
+                                  : Vec4(0.0f);
+      }
+    }
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+      // A strip or fan of k indices makes k - 2 triangles; a list, k / 3.
+      const uint64_t max_indices = mode == TINYGLTF_MODE_TRIANGLES ? 3 * limits_.triangles : limits_.triangles + 2;
+      if (!read_index_accessor(model_, prim.indices, max_indices, n, indices, error_))
+        return fail(where + " indices: " + error_);
+    } else {
+      indices.resize(n);
+      for (size_t i = 0; i < n; ++i) indices[i] = static_cast<uint32_t>(i);
+    }
+    ip.mesh.indices = to_triangle_list(std::move(indices), mode);
+    if (ip.mesh.indices.empty()) {
+      out_.warnings.push_back(where + ": no complete triangle; primitive skipped");
+      return true;
+    }
+    out.push_back(std::move(ip));
+    return true;
+  }
+
+  const tinygltf::Model& model_;
+  const LoadLimits& limits_;
+  LimitUsage& usage_;
+  ImportedModel& out_;
+  ImportError& import_error_;
+  std::string& error_;
+  std::vector<bool> imported_;
+};
+
+// The default scene's node forest, walked without recursion. glTF requires the nodes to form
+// disjoint trees: no node with two parents, no cycles, roots that are nobody's child. Checking
+// that first bounds the walk by the number of nodes (a node listed twice as a child would
+// otherwise double the work at every level).
+// node_map receives, per file node, its index in out.nodes (-1: not in the scene).
+bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
+                 Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map, std::string& error) {
+  const size_t count = model.nodes.size();
+  if (count > limits.nodes) {
+    error = "it has " + to_string(count) + " nodes, more than the " + to_string(limits.nodes) + " rtcli accepts";
+    return false;
+  }
+  std::vector<int> parent(count, -1);
+  for (size_t i = 0; i < count; ++i) {
+    for (const int child : model.nodes[i].children) {
+      if (child < 0 || static_cast<size_t>(child) >= count) {
+        error = "node " + to_string(i) + " lists child " + to_string(child) + ", which does not exist";
+        return false;
+      }
+      if (static_cast<size_t>(child) == i || parent[static_cast<size_t>(child)] >= 0) {
+        error = "node " + to_string(child) + " is a child of node " + to_string(i) +
+                (static_cast<size_t>(child) == i ? " itself"
+                                                 : " and of node " + to_string(parent[static_cast<size_t>(child)])) +
+                "; glTF requires every node to have at most one parent";
+        return false;
+      }
+      parent[static_cast<size_t>(child)] = static_cast<int>(i);
+    }
+  }
+  std::vector<bool> is_root(count, false);
+  for (const int root : scene.nodes) {
+    if (root < 0 || static_cast<size_t>(root) >= count) {
+      error = "the scene lists node " + to_string(root) + ", which does not exist";
+      return false;
+    }
+    if (parent[static_cast<size_t>(root)] >= 0 || is_root[static_cast<size_t>(root)]) {
+      error = "the scene lists node " + to_string(root) +
+              (is_root[static_cast<size_t>(root)]
+                   ? " twice"
+                   : ", which is a child of node " + to_string(parent[static_cast<size_t>(root)])) +
+              "; glTF requires the scene's nodes to be distinct roots";
+      return false;
+    }
+    is_root[static_cast<size_t>(root)] = true;
+  }
+  // Every node is reached at most once: from its only parent, or as a root without one. Nodes in
+  // a cycle have their parents inside the cycle, so no root reaches them.
+  struct Item {
+    int node;
+    int32_t parent;  // in ImportedModel::nodes
+  };
+  std::vector<Item> stack;
+  for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) stack.push_back(Item{*it, -1});
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    const tinygltf::Node& node = model.nodes[static_cast<size_t>(item.node)];
+    if (node.mesh >= static_cast<int>(model.meshes.size())) {
+      error = "node " + to_string(item.node) + " uses mesh " + to_string(node.mesh) + ", which does not exist";
+      return false;
+    }
+    if (node.mesh >= 0 && !importer.import_mesh(static_cast<size_t>(node.mesh))) return false;
+    ImportedNode imported;
+    imported.name = node.name;
+    imported.parent = item.parent;
+    imported.mesh = node.mesh;
+    imported.gltf_index = item.node;
+    read_node_transform(node, imported);
+    if (node.mesh >= 0 && !import_instancing(model, node, limits, imported, error)) return false;
+    const auto index = static_cast<int32_t>(out.nodes.size());
+    if (!import_camera(model, node, index, out, error) || !import_light(model, node, index, out, error)) return false;
+    if (auto area = area_light_from_extras(node.extras, "node \"" + node.name + "\"", out.warnings))
+      out.lights.push_back(LightPlacement{*area, index});
+    node_map[static_cast<size_t>(item.node)] = index;
+    out.nodes.push_back(std::move(imported));
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(Item{*it, index});
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
+                                               const std::optional<std::string>& mesh_name, const LoadLimits& limits,
+                                               LimitUsage& usage, ImportError& import_error) {
+  std::string& error = import_error.message;
+  GltfFile file = parse_gltf(bytes, base_dir, limits, error);
+  ImportedModel out;
+  out.files = std::move(file.files);
+  out.warnings = std::move(file.warnings);
+  if (!file.model) return std::nullopt;
+  const tinygltf::Model& model = *file.model;
+  ImageDecoder images(model, base_dir, limits, usage, out);
+  if (!images.fit_in_budget()) {
+    import_error.over_limit = true;
+    error = images.failure();
+    return std::nullopt;
+  }
+  for (size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& m = model.materials[i];
+    const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
+    out.materials.push_back(import_material(m, images, where, out.warnings));
+    apply_material_extras(m.extras, images, where, out.materials.back(), out.warnings);
+    out.material_names.push_back(m.name);
+    if (!images.failure().empty()) {
+      import_error.over_limit = images.failure_is_over_limit();
+      error = images.failure();
+      return std::nullopt;
+    }
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+  if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, error)) {
+    import_error.over_limit = true;
+    return std::nullopt;
+  }
+  Importer importer(model, limits, usage, out, import_error);
+
+  if (mesh_name) {
+    std::string names;
+    for (size_t i = 0; i < model.meshes.size(); ++i) {
+      if (model.meshes[i].name == *mesh_name) {
+        if (!importer.add_mesh_node(i)) return std::nullopt;
+        return out;
+      }
+      if (i < 20) names += (names.empty() ? "\"" : ", \"") + model.meshes[i].name + "\"";
+    }
+    if (model.meshes.size() > 20) names += ", ...";
+    import_error.unknown_mesh = true;
+    error = "its meshes are " + (names.empty() ? std::string("none") : names);
+    return std::nullopt;
+  }
+
+  if (scene >= static_cast<int>(model.scenes.size())) {
+    error = "its default scene " + to_string(scene) + " does not exist";
+    return std::nullopt;
+  }
+  if (scene < 0) {
+    for (size_t i = 0; i < model.meshes.size(); ++i)
+      if (!importer.add_mesh_node(i)) return std::nullopt;
+    return out;
+  }
+  std::vector<int32_t> node_map(model.nodes.size(), -1);
+  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, out, node_map, error))
+    return std::nullopt;
+  if (!import_animations(model, node_map, limits, usage, out, import_error)) return std::nullopt;
+  return out;
+}
+
+std::vector<ModelPlacement> placements(const ImportedModel& model) {
+  std::vector<Mat4> world(model.nodes.size());
+  std::vector<ModelPlacement> out;
+  for (size_t i = 0; i < model.nodes.size(); ++i) {
+    const ImportedNode& n = model.nodes[i];
+    const Mat4 local = n.matrix ? *n.matrix : n.trs.matrix();
+    world[i] = n.parent >= 0 ? world[static_cast<size_t>(n.parent)] * local : local;
+    if (n.mesh < 0) continue;
+    if (n.instancing.empty()) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i]});
+    for (const Mat4& copy : n.instancing) out.push_back(ModelPlacement{static_cast<size_t>(n.mesh), world[i] * copy});
+  }
+  return out;
+}
+
+std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
+                                         const LoadLimits& limits, LimitUsage& usage, ImportError& error) {
+  auto bytes = read_input_bytes(path, limits.gltf_total_bytes, error.message);
+  if (!bytes) return std::nullopt;
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, usage, error);
+  if (model) model->files.insert(model->files.begin(), path);
+  return model;
+}
+
+}  // namespace rt

@@ -1,0 +1,107 @@
+// Typed reading of a JSON document with error collection. Every read names the JSON pointer of
+// the value; a wrong value records "expected X, found Y" at its line:column and reading goes on,
+// so one run reports every problem in a file. Unknown keys are errors, with a suggestion.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/math.h"
+#include "io/base/diagnostics.h"
+#include "io/json/document.h"
+
+namespace rt {
+
+// Where in the source an error about a pointer is shown.
+enum class Anchor { kValue, kKey, kParent };
+
+class JsonReader {
+ public:
+  JsonReader(const JsonDocument& doc, Diagnostics& diags) : doc_(doc), diags_(diags) {}
+
+  void error(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;
+  void warning(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;
+  // "expected <what>, found <description of value>"
+  void expected(const std::string& pointer, std::string_view what, const Json& found) const;
+
+  const JsonDocument& document() const { return doc_; }
+  Diagnostics& diagnostics() const { return diags_; }
+
+ private:
+  void add(Severity severity, const std::string& pointer, std::string message, Anchor anchor) const;
+
+  const JsonDocument& doc_;
+  Diagnostics& diags_;
+};
+
+// A short description of a value for "found ..." messages: the string "red", the number -3, ...
+std::string describe(const Json& value);
+
+// The closest of `candidates` to `word` by edit distance, if close enough to be a likely typo.
+std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
+
+// Allowed range of a number; describe() says it in words for error messages.
+struct NumberRule {
+  double min = -HUGE_VAL;
+  double max = HUGE_VAL;
+  bool min_exclusive = false;
+  bool max_exclusive = false;
+  bool integer = false;
+
+  std::string describe() const;
+  bool accepts(double v) const;
+};
+
+inline constexpr NumberRule kAnyNumber{};
+inline constexpr NumberRule kPositive{0.0, HUGE_VAL, true, false, false};
+inline constexpr NumberRule kNonNegative{0.0, HUGE_VAL, false, false, false};
+
+std::optional<double> read_number(const JsonReader& r, const Json& v, const std::string& ptr, const NumberRule& rule);
+std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::string& ptr);
+// A colour: [r, g, b] or one number for grey; components finite and >= 0 (linear RGB).
+std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::string& ptr);
+// A weight: [r, g, b] or one number, components in [0, 1].
+std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr);
+std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr);
+// "a", "b", "c": names as error messages list them.
+std::string join_quoted(const std::vector<std::string>& items);
+// Index of v in `choices`; otherwise an error listing them all.
+std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std::string& ptr,
+                                  const std::vector<std::string>& choices);
+
+inline constexpr std::string_view kVec3Expected = "an array of 3 numbers [x, y, z]";
+inline constexpr std::string_view kColourExpected = "a colour: [r, g, b] with components >= 0, or one number for grey";
+inline constexpr std::string_view kWeightExpected = "a weight: [r, g, b] with components in [0, 1], or one number";
+
+// One JSON object. get() marks keys as known; finish() reports every key that was never asked for.
+class ObjectReader {
+ public:
+  ObjectReader(const JsonReader& r, const Json& value, std::string pointer);
+
+  bool valid() const { return object_ != nullptr; }
+  const std::string& pointer() const { return pointer_; }
+  std::string child(std::string_view key) const;
+  bool has(std::string_view key) const;
+
+  // The member, or nullptr when absent (recording a "missing" error if `required`).
+  const Json* get(std::string_view key, bool required = false, std::string_view expected = {});
+
+  std::optional<double> number(std::string_view key, const NumberRule& rule = kAnyNumber, bool required = false);
+  std::optional<Vec3> vec3(std::string_view key, bool required = false);
+  std::optional<Vec3> colour(std::string_view key, bool required = false);
+  std::optional<Vec3> weight(std::string_view key, bool required = false);
+  std::optional<std::string> string(std::string_view key, bool required = false);
+
+  // Records an error for every key not asked about through get() and friends.
+  void finish();
+
+ private:
+  const JsonReader& r_;
+  const Json* object_ = nullptr;
+  std::string pointer_;
+  std::vector<std::string> known_;
+};
+
+}  // namespace rt

@@ -1,0 +1,30 @@
+// The "nodes" tree of a scene file: names, transforms, shapes, mesh references, materials.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/json/reader.h"
+#include "io/scene/description.h"
+
+namespace rt {
+
+struct NodeParseContext {
+  const JsonReader& reader;
+  std::string scene_folder;  // mesh files resolve against it
+  const std::vector<MaterialDescription>& materials;
+  std::map<std::string, std::string> names;  // node name -> pointer of its first use
+  uint64_t max_nodes = 0;                    // LoadLimits::nodes
+  uint64_t nodes = 0;                        // parsed so far
+};
+
+// depth: how many node levels enclose this array (0 for the top-level "nodes").
+std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& value, const std::string& pointer,
+                                         int depth = 0);
+
+// A "transform" object: translate / rotate (degrees) / scale, or a 4x4 "matrix" (rows).
+// Rotations are kept as quaternions (R = Rz * Ry * Rx of the Euler angles).
+std::optional<NodeTransform> parse_transform(const JsonReader& r, const Json& value, const std::string& pointer);
+
+}  // namespace rt

@@ -1,0 +1,315 @@
+#include "io/scene/scene_parser.h"
+
+#include <filesystem>
+
+#include "io/json/locate.h"
+#include "io/scene/animation_parser.h"
+#include "io/scene/node_parser.h"
+
+namespace rt {
+namespace {
+
+constexpr NumberRule kImageSize{1, kMaxImageSide, false, false, true};
+constexpr NumberRule kMaxDepth{0, kMaxRecursionDepth, false, false, true};
+constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53: exact in a double
+constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
+constexpr NumberRule kFieldOfView{0, 180, true, true, false};
+constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
+constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
+constexpr NumberRule kThreshold{0, 1, false, false, false};  // a difference of displayed values
+constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
+
+// render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
+// the scene's parameters.
+void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr, const std::vector<std::string>& modes,
+                     AntialiasSettings& aa) {
+  ObjectReader a(r, v, ptr);
+  if (const Json* mode = a.get("mode", true, join_quoted(modes))) {
+    if (const auto k = read_choice(r, *mode, a.child("mode"), modes)) aa.mode = modes[*k];
+  }
+  if (const auto n = a.number("samples", kSamplesPerAxis)) aa.samples = static_cast<int>(*n);
+  if (const Json* j = a.get("jitter")) {
+    if (j->is_boolean()) aa.jitter = j->get<bool>();
+    else r.expected(a.child("jitter"), "true or false", *j);
+  }
+  if (const auto t = a.number("threshold", kThreshold)) aa.threshold = static_cast<float>(*t);
+  if (const auto d = a.number("max_depth", kAdaptiveDepth)) aa.max_depth = static_cast<int>(*d);
+  if (const Json* p = a.get("positions")) {
+    if (const auto k = read_choice(r, *p, a.child("positions"), {"corners", "centres"}))
+      aa.positions = *k == 0 ? SamplePositions::kCorners : SamplePositions::kCentres;
+  }
+  a.finish();
+}
+
+void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options, RenderSettings& s) {
+  ObjectReader o(r, v, "/render");
+  if (const auto w = o.number("width", kImageSize)) s.width = static_cast<int>(*w);
+  if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
+  if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
+  if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
+  if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
+  if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
+  if (const Json* i = o.get("integrator")) {
+    if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))
+      s.integrator = options.integrators[*k];
+  }
+  if (const Json* aa = o.get("antialias"))
+    parse_antialias(r, *aa, o.child("antialias"), options.pixel_samplers, s.antialias);
+  o.finish();
+  if (pixel_count(s) > kMaxPixels) {
+    r.error("/render",
+            "expected at most " + std::to_string(kMaxPixels) + " pixels (width x height), found " +
+                std::to_string(s.width) + " x " + std::to_string(s.height) + " = " + std::to_string(pixel_count(s)) +
+                " (README, \"Limits\")",
+            Anchor::kKey);
+  } else if (max_camera_rays_per_frame(s) > kCameraRaysWarning) {
+    r.warning("/render",
+              "this render can trace up to " + std::to_string(max_camera_rays_per_frame(s)) +
+                  " camera rays per frame (pixels x the most rays per pixel); expect it to take a long time",
+              Anchor::kKey);
+  }
+}
+
+void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
+  ObjectReader o(r, v, "/camera");
+  const auto position = o.vec3("position", true);
+  const auto look_at = o.vec3("look_at", true);
+  const auto up = o.vec3("up");
+  const auto fov = o.number("fov", kFieldOfView);
+  const auto aperture = o.number("aperture", kNonNegative);
+  const auto focus = o.number("focus_distance", kPositive);
+  o.finish();
+  if (aperture) c.aperture = static_cast<float>(*aperture);
+  if (focus) c.focus_distance = static_cast<float>(*focus);
+  if (position) c.position = *position;
+  if (look_at) c.look_at = *look_at;
+  if (up) c.up = *up;
+  if (fov) c.fov_degrees = static_cast<float>(*fov);
+  if (!position || !look_at) return;
+  const Vec3 forward = c.look_at - c.position;
+  if (glm::length(forward) < 1e-6f * std::max(1.0f, max_abs_component(c.position))) {
+    r.error(o.child("look_at"), "expected a point away from the camera position, found the position itself");
+  } else if (!(glm::length(c.up) > 0.0f) ||
+             glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
+    r.error(up ? o.child("up") : o.child("look_at"),
+            "expected an up direction not parallel to the viewing direction, found one parallel to it");
+  }
+}
+
+// The texture keys of one material. A texture replaces kd (or ks) and kd multiplies it, so that
+// kd can tint it; without an explicit kd that is white.
+void parse_texture_slots(const JsonReader& r, ObjectReader& o, const std::string& folder, MaterialDescription& m) {
+  Material& mat = m.material;
+  if (const Json* t = o.get("texture")) {
+    m.texture = parse_texture_slot(r, *t, o.child("texture"), folder, TextureEncoding::kSrgb, mat.texture.mapping);
+    if (!o.has("kd")) mat.kd = Vec3(1.0f);
+  }
+  if (const Json* t = o.get("specular_texture")) {
+    m.specular_texture = parse_texture_slot(r, *t, o.child("specular_texture"), folder, TextureEncoding::kSrgb,
+                                            mat.specular_texture.mapping);
+    if (!o.has("ks")) mat.ks = Vec3(1.0f);
+  }
+  if (const Json* t = o.get("bump")) {
+    m.bump = parse_texture_slot(r, *t, o.child("bump"), folder, TextureEncoding::kLinear, mat.bump.height.mapping,
+                                [&](ObjectReader& b) {
+                                  if (const auto s = b.number("strength")) mat.bump.strength = static_cast<float>(*s);
+                                  if (const auto e = b.number("epsilon", NumberRule{0, 1, true, false, false}))
+                                    mat.bump.epsilon = static_cast<float>(*e);
+                                });
+  }
+  if (const Json* t = o.get("normal_map")) {
+    m.normal_map = parse_texture_slot(r, *t, o.child("normal_map"), folder, TextureEncoding::kLinear,
+                                      mat.normal_map.map.mapping, [&](ObjectReader& n) {
+                                        if (const auto s = n.number("strength"))
+                                          mat.normal_map.scale = static_cast<float>(*s);
+                                      });
+  }
+}
+
+std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json& v, const std::string& folder) {
+  std::vector<MaterialDescription> out;
+  if (!v.is_object()) {
+    r.expected("/materials", "an object mapping material names to materials", v);
+    return out;
+  }
+  for (const auto& item : v.items()) {
+    MaterialDescription m;
+    m.name = item.key();
+    ObjectReader o(r, item.value(), pointer_child("/materials", item.key()));
+    Material& mat = m.material;
+    if (const auto kd = o.colour("kd")) mat.kd = *kd;
+    if (const auto ks = o.colour("ks")) mat.ks = *ks;
+    if (const auto n = o.number("shininess", kPositive)) mat.shininess = static_cast<float>(*n);
+    // The proposal's own rules, spelt "ks": reflection weighted by ks, glossy width 1 / (1 + ks).
+    // A string value may only be "ks"; anything else is reported once, by read_choice.
+    const auto spelt = [&](std::string_view key, bool& is_ks) {
+      const Json* value = o.get(key);
+      if (!value || !value->is_string()) return false;
+      is_ks = read_choice(r, *value, o.child(key), {"ks"}).has_value();
+      return true;
+    };
+    bool is_ks = false;
+    if (spelt("reflectivity", is_ks)) {
+      if (is_ks) mat.reflectivity = glm::min(mat.ks, Vec3(1.0f));
+    } else if (const auto w = o.weight("reflectivity")) {
+      mat.reflectivity = *w;
+    }
+    if (const auto w = o.weight("transmission")) mat.transmission = *w;
+    if (const auto n = o.number("ior", kPositive)) mat.ior = static_cast<float>(*n);
+    if (const auto a = o.colour("absorption")) mat.absorption = *a;
+    if (const auto e = o.colour("emission")) mat.emission = *e;
+    if (spelt("glossy", is_ks)) {
+      if (is_ks) mat.glossy = 1.0f / (1.0f + (mat.ks.x + mat.ks.y + mat.ks.z) / 3.0f);
+    } else if (const auto g = o.number("glossy", kNonNegative)) {
+      mat.glossy = static_cast<float>(*g);
+    }
+    parse_texture_slots(r, o, folder, m);
+    o.finish();
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::optional<Attenuation> parse_attenuation(const JsonReader& r, ObjectReader& o) {
+  const Json* a = o.get("attenuation");
+  if (!a) return Attenuation{};
+  const std::string ptr = o.child("attenuation");
+  const auto c = read_vec3(r, *a, ptr);
+  if (!c) return std::nullopt;
+  if (c->x < 0 || c->y < 0 || c->z < 0 || c->x + c->y + c->z <= 0) {
+    r.expected(ptr, "[c0, c1, c2] >= 0, not all zero (radiance / (c0 + c1 d + c2 d^2))", *a);
+    return std::nullopt;
+  }
+  return Attenuation{c->x, c->y, c->z};
+}
+
+// A rectangle needs two edges that span an area: not zero, not parallel.
+bool check_rect_edges(const JsonReader& r, const ObjectReader& o, Vec3 e1, Vec3 e2) {
+  const float scale = std::max(glm::length(e1), glm::length(e2));
+  if (!(glm::length(glm::cross(e1, e2)) > 1e-6f * scale * scale)) {
+    r.error(o.child("edge2"),
+            "expected two edge vectors that span a rectangle (not zero, not parallel), found " +
+                std::string(glm::length(e1) == 0.0f || glm::length(e2) == 0.0f ? "a zero edge" : "parallel edges"));
+    return false;
+  }
+  return true;
+}
+
+// A spot light: a point light whose emission fades (glTF's t^2) from the inner cone to the outer.
+std::optional<SpotLight> parse_spot_light(const JsonReader& r, ObjectReader& o, Vec3 emitted,
+                                          const std::optional<Attenuation>& attenuation) {
+  const auto position = o.vec3("position", true);
+  const auto direction = o.vec3("direction", true);
+  const auto inner = o.number("inner_angle", NumberRule{0.0, 90.0});
+  const auto outer = o.number("outer_angle", NumberRule{0.0, 90.0});
+  o.finish();
+  if (!position || !direction || !attenuation) return std::nullopt;
+  if (!(glm::length(*direction) > 0.0f)) {
+    r.error(o.child("direction"), "expected a direction that is not zero, found [0, 0, 0]");
+    return std::nullopt;
+  }
+  const double in = inner.value_or(0.0), out = outer.value_or(30.0);
+  if (!(in < out)) {
+    r.expected(o.child(outer ? "outer_angle" : "inner_angle"),
+               "outer_angle > inner_angle (" + Json(in).dump() + " degrees)", Json(out));
+    return std::nullopt;
+  }
+  SpotLight light;
+  light.position = *position;
+  light.direction = glm::normalize(*direction);
+  light.colour = emitted;
+  light.attenuation = *attenuation;
+  light.cos_inner = static_cast<float>(std::cos(in * 3.14159265358979323846 / 180.0));
+  light.cos_outer = static_cast<float>(std::cos(out * 3.14159265358979323846 / 180.0));
+  return light;
+}
+
+std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
+  std::vector<Light> out;
+  if (!v.is_array()) {
+    r.expected("/lights", "an array of lights", v);
+    return out;
+  }
+  for (size_t i = 0; i < v.size(); ++i) {
+    ObjectReader o(r, v[i], pointer_child("/lights", i));
+    std::optional<size_t> type;
+    if (const Json* t = o.get("type", true, "\"point\", \"rect\", \"spot\" or \"directional\""))
+      type = read_choice(r, *t, o.child("type"), {"point", "rect", "spot", "directional"});
+    const Vec3 colour = o.colour("color").value_or(Vec3(1.0f));
+    const auto intensity = o.number("intensity", kNonNegative);
+    const Vec3 emitted = colour * static_cast<float>(intensity.value_or(1.0));
+    const auto attenuation = parse_attenuation(r, o);
+    if (type == 1u) {
+      RectLight light;
+      const auto corner = o.vec3("corner", true);
+      const auto e1 = o.vec3("edge1", true);
+      const auto e2 = o.vec3("edge2", true);
+      const Json* two_sided = o.get("two_sided");
+      if (two_sided && !two_sided->is_boolean()) r.expected(o.child("two_sided"), "true or false", *two_sided);
+      o.finish();
+      if (!corner || !e1 || !e2 || !attenuation || !check_rect_edges(r, o, *e1, *e2)) continue;
+      light.corner = *corner;
+      light.edge1 = *e1;
+      light.edge2 = *e2;
+      light.colour = emitted;
+      light.attenuation = *attenuation;
+      light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
+      out.emplace_back(light);
+    } else if (type == 2u) {
+      if (auto light = parse_spot_light(r, o, emitted, attenuation)) out.emplace_back(*light);
+    } else if (type == 3u) {
+      const auto direction = o.vec3("direction", true);
+      o.finish();
+      if (!direction) continue;
+      if (!(glm::length(*direction) > 0.0f)) {
+        r.error(o.child("direction"), "expected a direction that is not zero, found [0, 0, 0]");
+        continue;
+      }
+      out.emplace_back(DirectionalLight{glm::normalize(*direction), emitted});
+    } else {
+      PointLight light;
+      const auto position = o.vec3("position", type == 0u);
+      o.finish();
+      if (position) light.position = *position;
+      light.colour = emitted;
+      if (attenuation) light.attenuation = *attenuation;
+      out.emplace_back(light);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
+  const size_t errors_before = diags.error_count();
+  SceneDescription scene = parse_scene_partial(doc, options, diags);
+  if (diags.error_count() > errors_before) return std::nullopt;
+  return scene;
+}
+
+SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
+  const JsonReader r(doc, diags);
+  SceneDescription scene;
+  scene.path = doc.path;
+  ObjectReader top(r, doc.root, "");
+  top.get("$schema");  // editors use it to find the schema; we don't need it
+  if (const Json* v = top.get("render")) parse_render(r, *v, options, scene.render);
+  if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
+    parse_camera(r, *v, scene.camera);
+  if (const auto bg = top.colour("background")) scene.background = *bg;
+  if (const auto ambient = top.colour("ambient")) scene.ambient = *ambient;
+  const std::string folder = std::filesystem::path(doc.path).parent_path().string();
+  if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v, folder);
+  if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
+  if (const Json* v = top.get("nodes", true, "an array of nodes")) {
+    NodeParseContext ctx{r, folder, scene.materials, {}, options.limits.nodes, 0};
+    scene.nodes = parse_nodes(ctx, *v, "/nodes");
+  }
+  if (const Json* v = top.get("animation"))
+    scene.animation = parse_animation(r, *v, "/animation", options.limits.animation_keys);
+  top.finish();
+  return scene;
+}
+
+}  // namespace rt

@@ -1,0 +1,95 @@
+// The source tree's layers (README, "Code map"), held by reading every #include: a file may include
+// only its own layer and those below it. CMake's link order would catch an upward call, but not an
+// upward include of a header-only record; this catches both, and names the file and the line.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "tests/support/test_paths.h"
+
+namespace {
+
+// The layer a source file belongs to: the longest folder prefix in this table.
+const std::map<std::string, std::set<std::string>>& allowed_includes() {
+  static const std::map<std::string, std::set<std::string>> table{
+      {"core/", {"core/"}},
+      {"materials/", {"core/", "materials/"}},
+      {"core/render/", {"core/", "materials/", "core/render/"}},
+      {"io/base/", {"core/", "io/base/"}},
+      {"io/json/", {"core/", "io/base/", "io/json/"}},
+      {"io/image/", {"core/", "io/base/", "io/image/"}},
+      {"io/gltf/", {"core/", "io/base/", "io/json/", "io/image/", "io/gltf/"}},
+      {"io/scene/", {"core/", "io/base/", "io/json/", "io/image/", "io/scene/"}},
+      {"io/build/", {"core/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/build/"}},
+      {"io/", {"core/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/build/", "io/"}},
+  };
+  return table;
+}
+
+// The table's entry for `file`, or null where the file is above every layer (cli/, tools/, tests/).
+const std::pair<const std::string, std::set<std::string>>* layer_of(const std::string& file) {
+  const std::pair<const std::string, std::set<std::string>>* best = nullptr;
+  for (const auto& entry : allowed_includes())
+    if (file.rfind(entry.first, 0) == 0 && (!best || entry.first.size() > best->first.size())) best = &entry;
+  return best;
+}
+
+// The longest layer prefix of an included path: "core/render/film.h" is in core/render/, not core/.
+std::string layer_of_include(const std::string& included) {
+  std::string best;
+  for (const auto& entry : allowed_includes())
+    if (included.rfind(entry.first, 0) == 0 && entry.first.size() > best.size()) best = entry.first;
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("Every source file includes only its own layer and the layers below it", "[layering]") {
+  namespace fs = std::filesystem;
+  const std::regex include_line(R"(^\s*#\s*include\s*"([^"]+)\")");
+  std::vector<std::string> upward;
+  size_t files = 0;
+  for (const char* top : {"core", "materials", "io"}) {
+    for (const auto& entry : fs::recursive_directory_iterator(rt::test::source_path(top))) {
+      const std::string ext = entry.path().extension().string();
+      if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+      const std::string file = fs::relative(entry.path(), rt::test::source_path("")).generic_string();
+      const auto* layer = layer_of(file);
+      REQUIRE(layer);
+      ++files;
+      std::ifstream in(entry.path());
+      std::string line;
+      for (int number = 1; std::getline(in, line); ++number) {
+        std::smatch m;
+        if (!std::regex_search(line, m, include_line)) continue;
+        const std::string included = m[1];
+        const std::string target = layer_of_include(included);
+        if (target.empty()) continue;  // not one of ours (a generated file, a test helper)
+        if (!layer->second.count(target))
+          upward.push_back(file + ":" + std::to_string(number) + " (" + layer->first + ") includes " + included);
+      }
+    }
+  }
+  INFO("files read: " << files);
+  CHECK(files > 150);
+  for (const std::string& u : upward) UNSCOPED_INFO(u);
+  CHECK(upward.empty());
+}
+
+TEST_CASE("The layering check sees an upward include", "[layering]") {
+  // The table itself, so that the check above cannot pass by classifying nothing.
+  CHECK(layer_of("io/gltf/loader.cpp")->first == "io/gltf/");
+  CHECK(layer_of("core/render/renderer.cpp")->first == "core/render/");
+  CHECK(layer_of("io/scene_loader.cpp")->first == "io/");
+  CHECK(layer_of("cli/main.cpp") == nullptr);
+  CHECK(layer_of_include("core/render/film.h") == "core/render/");
+  CHECK_FALSE(layer_of("io/image/png_file.cpp")->second.count(layer_of_include("io/json/document.h")));
+  CHECK_FALSE(layer_of("core/scene.cpp")->second.count(layer_of_include("materials/phong.h")));
+  CHECK_FALSE(layer_of("materials/phong.h")->second.count(layer_of_include("core/render/film.h")));
+}
