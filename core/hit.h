@@ -43,7 +43,7 @@ struct SurfaceInteraction {
   // of [0] when it has none).
   UvFrame texcoord[2];
   Vec4 tangent{0.0f};  // a mesh's interpolated TANGENT attribute (xyz, handedness w); w = 0: none
-  Vec4 colour{1.0f};   // a mesh's interpolated COLOR_0 (linear RGB, alpha); 1 without one
+  Vec4 color{1.0f};    // a mesh's interpolated COLOR_0 (linear RGB, alpha); 1 without one
   // The hit in the shape's (or mesh instance's) object space, for the explicit projections.
   Vec3 object_position{0.0f};
   Mat3 object_from_world{1.0f};  // linear part of the world-to-object transform

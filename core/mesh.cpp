@@ -56,7 +56,7 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
   si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, object_normal);
   si.texcoord[1] =
       mesh.uvs1.empty() ? si.texcoord[0] : interpolate_uv_frame(mesh.uvs1, i0, i1, i2, hit, e1, e2, object_normal);
-  if (!mesh.colours.empty()) si.colour = b0 * mesh.colours[i0] + hit.b1 * mesh.colours[i1] + hit.b2 * mesh.colours[i2];
+  if (!mesh.colors.empty()) si.color = b0 * mesh.colors[i0] + hit.b1 * mesh.colors[i1] + hit.b2 * mesh.colors[i2];
   if (!mesh.tangents.empty())
     si.tangent = b0 * mesh.tangents[i0] + hit.b1 * mesh.tangents[i1] + hit.b2 * mesh.tangents[i2];
 

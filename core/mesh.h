@@ -20,7 +20,7 @@ struct TriangleMesh {
   std::vector<Vec2> uvs;          // per vertex (TEXCOORD_0, origin top-left); empty = none
   std::vector<Vec2> uvs1;         // per vertex (TEXCOORD_1); empty = none
   std::vector<Vec4> tangents;     // per vertex (TANGENT: unit xyz, handedness w = +-1); empty = none
-  std::vector<Vec4> colours;      // per vertex (COLOR_0: linear RGB and alpha); empty = none
+  std::vector<Vec4> colors;       // per vertex (COLOR_0: linear RGB and alpha); empty = none
   std::vector<uint32_t> indices;  // three per triangle, each < positions.size()
 
   size_t triangle_count() const { return indices.size() / 3; }

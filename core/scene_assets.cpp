@@ -6,7 +6,7 @@ void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
   const Material& m = materials[material];
   if (!m.cutout.enabled || mask(mesh, material)) return;
   // Coverage that cannot vary and reaches the cutoff everywhere needs no test: drawn solid.
-  const bool varies = m.cutout.texture.present() || !meshes[mesh].mesh.colours.empty();
+  const bool varies = m.cutout.texture.present() || !meshes[mesh].mesh.colors.empty();
   if (!varies && m.cutout.factor >= m.cutout.cutoff) return;
   MaskedPlacement p;
   p.mesh = mesh;

@@ -24,13 +24,13 @@ struct PhongTerms {
   float glossy = 0.0f;
 };
 
-inline PhongTerms pbr_to_phong(Vec3 base_colour, float metallic, float roughness) {
+inline PhongTerms pbr_to_phong(Vec3 base_color, float metallic, float roughness) {
   metallic = std::clamp(metallic, 0.0f, 1.0f);
   roughness = std::clamp(roughness, 0.0f, 1.0f);
   const float smooth = 1.0f - roughness;
-  const Vec3 f0 = glm::mix(Vec3(0.04f), base_colour, metallic);
+  const Vec3 f0 = glm::mix(Vec3(0.04f), base_color, metallic);
   PhongTerms p;
-  p.kd = base_colour * (1.0f - metallic * smooth);
+  p.kd = base_color * (1.0f - metallic * smooth);
   p.ks = f0 * smooth;
   const float r2 = roughness * roughness, r4 = r2 * r2;
   p.shininess = r4 > 0.0f ? std::clamp(2.0f / r4 - 2.0f, 1.0f, 4096.0f) : 4096.0f;

@@ -7,8 +7,7 @@ bool AlphaCutout::covers(uint32_t triangle, float b1, float b2) const {
                  i2 = mesh->indices[3 * triangle + 2];
   const float b0 = 1.0f - b1 - b2;
   float coverage = factor;
-  if (!mesh->colours.empty())
-    coverage *= b0 * mesh->colours[i0].w + b1 * mesh->colours[i1].w + b2 * mesh->colours[i2].w;
+  if (!mesh->colors.empty()) coverage *= b0 * mesh->colors[i0].w + b1 * mesh->colors[i1].w + b2 * mesh->colors[i2].w;
   if (texture) {
     const std::vector<Vec2>& uvs = mapping.uv_set == 1 && !mesh->uvs1.empty() ? mesh->uvs1 : mesh->uvs;
     // Without UVs a triangle reads (0, 0), (1, 0), (1, 1), as mesh_surface gives shading.

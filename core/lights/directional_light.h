@@ -8,7 +8,7 @@ namespace rt {
 
 struct DirectionalLight {
   Vec3 direction{0.0f, -1.0f, 0.0f};  // unit: the way the light travels (glTF: the node's -Z)
-  Vec3 colour{1.0f};                  // arriving on a surface facing it
+  Vec3 color{1.0f};                   // arriving on a surface facing it
 };
 
 }  // namespace rt

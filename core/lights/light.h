@@ -32,13 +32,13 @@ inline LightSample light_sample_towards(Vec3 from, Vec3 to, Vec3 radiance_at_uni
 
 // u in [0, 1)^2 picks the point on an area light; a point light ignores it.
 inline LightSample sample_light(const PointLight& light, Vec3 point, Vec2 /*u*/) {
-  LightSample s = light_sample_towards(point, light.position, light.colour);
+  LightSample s = light_sample_towards(point, light.position, light.color);
   s.radiance *= light.attenuation(s.distance);
   return s;
 }
 
 inline LightSample sample_light(const SpotLight& light, Vec3 point, Vec2 /*u*/) {
-  LightSample s = light_sample_towards(point, light.position, light.colour);
+  LightSample s = light_sample_towards(point, light.position, light.color);
   s.radiance *= light.attenuation(s.distance) * light.cone(-s.direction);
   return s;
 }
@@ -47,12 +47,12 @@ inline LightSample sample_light(const DirectionalLight& light, Vec3 /*point*/, V
   LightSample s;
   s.direction = -light.direction;
   s.distance = kInfinity;
-  s.radiance = light.colour;
+  s.radiance = light.color;
   return s;
 }
 
 inline LightSample sample_light(const RectLight& light, Vec3 point, Vec2 u) {
-  LightSample s = light_sample_towards(point, light.point(u), light.colour);
+  LightSample s = light_sample_towards(point, light.point(u), light.color);
   const float cos_light = -glm::dot(s.direction, light.normal());
   const float emitted = light.two_sided ? std::fabs(cos_light) : std::max(0.0f, cos_light);
   s.radiance *= light.attenuation(s.distance) * emitted;

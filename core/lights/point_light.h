@@ -8,7 +8,7 @@ namespace rt {
 
 struct PointLight {
   Vec3 position{0.0f};
-  Vec3 colour{1.0f};  // linear RGB, already multiplied by the scene's "intensity"
+  Vec3 color{1.0f};  // linear RGB, already multiplied by the scene's "intensity"
   Attenuation attenuation;
 };
 

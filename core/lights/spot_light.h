@@ -13,7 +13,7 @@ namespace rt {
 struct SpotLight {
   Vec3 position{0.0f};
   Vec3 direction{0.0f, 0.0f, -1.0f};  // unit: where the cone points (glTF: the node's -Z)
-  Vec3 colour{1.0f};
+  Vec3 color{1.0f};
   Attenuation attenuation{0.0f, 0.0f, 1.0f};  // inverse square
   float cos_inner = 1.0f;                     // cos of the inner cone's half-angle
   float cos_outer = 0.70710678f;              // cos of the outer cone's half-angle (< cos_inner)

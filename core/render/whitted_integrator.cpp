@@ -33,7 +33,7 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
     float t;
     if (rect && rect->intersect(ray, t)) {
       ray.tmax = t;
-      radiance = rect->colour;
+      radiance = rect->color;
       found = false;
     }
   }

@@ -25,7 +25,7 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   const tinygltf::Value& a = extras.Get("rtcli_area_light");
   const auto size = gltf_numbers(a, "size", 2);
   const auto power = gltf_number(a, "power");
-  const auto colour = gltf_numbers(a, "color", 3);
+  const auto color = gltf_numbers(a, "color", 3);
   if (!size || !power || !((*size)[0] > 0.0f) || !((*size)[1] > 0.0f) || *power < 0.0f) {
     warnings.push_back(where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
     return std::nullopt;
@@ -41,8 +41,8 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   light.corner = Vec3(-0.5f * sx, 0.5f * sy, 0.0f);
   light.edge1 = Vec3(sx, 0.0f, 0.0f);
   light.edge2 = Vec3(0.0f, -sy, 0.0f);
-  const Vec3 c = colour ? glm::max(Vec3((*colour)[0], (*colour)[1], (*colour)[2]), Vec3(0.0f)) : Vec3(1.0f);
-  light.colour = c * (*power / (kPi * kPi));
+  const Vec3 c = color ? glm::max(Vec3((*color)[0], (*color)[1], (*color)[2]), Vec3(0.0f)) : Vec3(1.0f);
+  light.color = c * (*power / (kPi * kPi));
   light.attenuation = Attenuation{0.0f, 0.0f, 1.0f};
   light.two_sided = flag(a, "two_sided");
   return light;

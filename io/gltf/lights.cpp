@@ -14,15 +14,15 @@ std::optional<Light> light_from_gltf(const std::string& type, const std::vector<
     why = "expected a colour and an intensity that are finite and >= 0";
     return std::nullopt;
   }
-  const Vec3 colour = rgb * static_cast<float>(intensity / (kLumensPerWatt * M_PI));
-  if (type == "point") return PointLight{Vec3(0.0f), colour, Attenuation{0.0f, 0.0f, 1.0f}};
-  if (type == "directional") return DirectionalLight{Vec3(0.0f, 0.0f, -1.0f), colour};
+  const Vec3 scaled = rgb * static_cast<float>(intensity / (kLumensPerWatt * M_PI));
+  if (type == "point") return PointLight{Vec3(0.0f), scaled, Attenuation{0.0f, 0.0f, 1.0f}};
+  if (type == "directional") return DirectionalLight{Vec3(0.0f, 0.0f, -1.0f), scaled};
   if (type == "spot") {
     // glTF: 0 <= inner < outer <= pi / 2 (defaults 0 and pi / 4).
     const double outer = std::clamp(std::isfinite(outer_cone) ? outer_cone : M_PI / 4, 1e-4, M_PI / 2);
     const double inner = std::clamp(std::isfinite(inner_cone) ? inner_cone : 0.0, 0.0, outer);
     SpotLight s;
-    s.colour = colour;
+    s.color = scaled;
     s.cos_inner = static_cast<float>(std::cos(inner));
     s.cos_outer = static_cast<float>(std::cos(outer));
     return s;

@@ -159,11 +159,11 @@ class Importer {
         return fail(where + " COLOR_0: " + error_);
       if (raw.size() / static_cast<size_t>(components) != n)
         return fail(where + ": COLOR_0 and POSITION counts differ");
-      ip.mesh.colours.resize(n);
+      ip.mesh.colors.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const float* c = &raw[static_cast<size_t>(components) * i];
         const Vec4 v(c[0], c[1], c[2], components == 4 ? c[3] : 1.0f);
-        ip.mesh.colours[i] = std::isfinite(v.x + v.y + v.z + v.w) ? glm::clamp(v, Vec4(0.0f), Vec4(1.0f)) : Vec4(1.0f);
+        ip.mesh.colors[i] = std::isfinite(v.x + v.y + v.z + v.w) ? glm::clamp(v, Vec4(0.0f), Vec4(1.0f)) : Vec4(1.0f);
       }
     }
     if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {

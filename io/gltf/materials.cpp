@@ -81,8 +81,8 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
     const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);
     const auto given = gltf_numbers(*v, "attenuationColor", 3);
-    const Vec3 colour = given ? Vec3((*given)[0], (*given)[1], (*given)[2]) : Vec3(1.0f);
-    const Vec3 c = glm::clamp(colour, Vec3(1e-6f), Vec3(1.0f));
+    const Vec3 color = given ? Vec3((*given)[0], (*given)[1], (*given)[2]) : Vec3(1.0f);
+    const Vec3 c = glm::clamp(color, Vec3(1e-6f), Vec3(1.0f));
     if (distance > 0.0f && std::isfinite(distance)) out.absorption = -glm::log(c) / distance;
   }
 

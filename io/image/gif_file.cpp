@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "io/image/atomic_file.h"
-#include "io/image/colour_quantiser.h"
+#include "io/image/color_quantiser.h"
 
 namespace rt {
 

@@ -1,4 +1,4 @@
-// Animated GIF output with giflib: each frame gets its own palette (io/image/colour_quantiser.h),
+// Animated GIF output with giflib: each frame gets its own palette (io/image/color_quantiser.h),
 // frames loop for ever (the NETSCAPE2.0 extension every browser honours), and the file is
 // written like PNGs: to a temporary name, then renamed into place (io/image/atomic_file.h).
 #pragma once

@@ -36,24 +36,24 @@ std::optional<ImageHeader> png_header(const unsigned char* b, size_t size, std::
   h.format = ImageFormat::kPng;
   h.width = be32(b + 16);
   h.height = be32(b + 20);
-  const unsigned depth = b[24], colour = b[25];
+  const unsigned depth = b[24], color = b[25];
   if (h.width == 0 || h.height == 0 || h.width > 0x7fffffffu || h.height > 0x7fffffffu) {
     error = "expected a PNG of 1 to 2^31 - 1 pixels a side, found " + to_string(h.width) + " x " + to_string(h.height);
     return std::nullopt;
   }
-  const bool valid = (colour == 0 && (depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16)) ||
-                     (colour == 3 && (depth == 1 || depth == 2 || depth == 4 || depth == 8)) ||
-                     ((colour == 2 || colour == 4 || colour == 6) && (depth == 8 || depth == 16));
+  const bool valid = (color == 0 && (depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16)) ||
+                     (color == 3 && (depth == 1 || depth == 2 || depth == 4 || depth == 8)) ||
+                     ((color == 2 || color == 4 || color == 6) && (depth == 8 || depth == 16));
   if (!valid || b[26] != 0 || b[27] != 0 || b[28] > 1) {
     error = "expected a PNG header PNG defines, found bit depth " + to_string(depth) + " with colour type " +
-            to_string(colour) + " (compression " + to_string(b[26]) + ", filter " + to_string(b[27]) + ", interlace " +
+            to_string(color) + " (compression " + to_string(b[26]) + ", filter " + to_string(b[27]) + ", interlace " +
             to_string(b[28]) + ")";
     return std::nullopt;
   }
   h.sixteen_bit = depth == 16;
   // Filtered scanlines: a filter byte and the row's packed samples, per row of each of the seven
   // Adam7 passes when interlaced (PNG 1.2, sections 2.6 and 4.1.1).
-  const uint64_t bits_per_pixel = uint64_t{depth} * (colour == 2 ? 3 : colour == 4 ? 2 : colour == 6 ? 4 : 1);
+  const uint64_t bits_per_pixel = uint64_t{depth} * (color == 2 ? 3 : color == 4 ? 2 : color == 6 ? 4 : 1);
   const auto scanlines = [&](uint64_t w, uint64_t rows) {
     return w == 0 ? 0 : rows * (1 + (w * bits_per_pixel + 7) / 8);
   };

@@ -182,12 +182,12 @@ std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::str
   return read_number3(r, v, ptr, kVec3Expected, kAnyNumber);
 }
 
-std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::string& ptr) {
+std::optional<Vec3> read_color(const JsonReader& r, const Json& v, const std::string& ptr) {
   if (v.is_number()) {
     const auto grey = read_number(r, v, ptr, kNonNegative);
     return grey ? std::optional<Vec3>(Vec3(static_cast<float>(*grey))) : std::nullopt;
   }
-  return read_number3(r, v, ptr, kColourExpected, kNonNegative);
+  return read_number3(r, v, ptr, kColorExpected, kNonNegative);
 }
 
 std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr) {
@@ -260,9 +260,9 @@ std::optional<Vec3> ObjectReader::vec3(std::string_view key, bool required) {
   return v ? read_vec3(r_, *v, child(key)) : std::nullopt;
 }
 
-std::optional<Vec3> ObjectReader::colour(std::string_view key, bool required) {
-  const Json* v = get(key, required, kColourExpected);
-  return v ? read_colour(r_, *v, child(key)) : std::nullopt;
+std::optional<Vec3> ObjectReader::color(std::string_view key, bool required) {
+  const Json* v = get(key, required, kColorExpected);
+  return v ? read_color(r_, *v, child(key)) : std::nullopt;
 }
 
 std::optional<Vec3> ObjectReader::weight(std::string_view key, bool required) {

@@ -61,7 +61,7 @@ inline constexpr NumberRule kNonNegative{0.0, HUGE_VAL, false, false, false};
 std::optional<double> read_number(const JsonReader& r, const Json& v, const std::string& ptr, const NumberRule& rule);
 std::optional<Vec3> read_vec3(const JsonReader& r, const Json& v, const std::string& ptr);
 // A colour: [r, g, b] or one number for grey; components finite and >= 0 (linear RGB).
-std::optional<Vec3> read_colour(const JsonReader& r, const Json& v, const std::string& ptr);
+std::optional<Vec3> read_color(const JsonReader& r, const Json& v, const std::string& ptr);
 // A weight: [r, g, b] or one number, components in [0, 1].
 std::optional<Vec3> read_weight(const JsonReader& r, const Json& v, const std::string& ptr);
 std::optional<std::string> read_string(const JsonReader& r, const Json& v, const std::string& ptr);
@@ -72,7 +72,7 @@ std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std:
                                   const std::vector<std::string>& choices);
 
 inline constexpr std::string_view kVec3Expected = "an array of 3 numbers [x, y, z]";
-inline constexpr std::string_view kColourExpected = "a colour: [r, g, b] with components >= 0, or one number for grey";
+inline constexpr std::string_view kColorExpected = "a colour: [r, g, b] with components >= 0, or one number for grey";
 inline constexpr std::string_view kWeightExpected = "a weight: [r, g, b] with components in [0, 1], or one number";
 
 // One JSON object. get() marks keys as known; finish() reports every key that was never asked for.
@@ -90,7 +90,7 @@ class ObjectReader {
 
   std::optional<double> number(std::string_view key, const NumberRule& rule = kAnyNumber, bool required = false);
   std::optional<Vec3> vec3(std::string_view key, bool required = false);
-  std::optional<Vec3> colour(std::string_view key, bool required = false);
+  std::optional<Vec3> color(std::string_view key, bool required = false);
   std::optional<Vec3> weight(std::string_view key, bool required = false);
   std::optional<std::string> string(std::string_view key, bool required = false);
 

@@ -137,8 +137,8 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     m.name = item.key();
     ObjectReader o(r, item.value(), pointer_child("/materials", item.key()));
     Material& mat = m.material;
-    if (const auto kd = o.colour("kd")) mat.kd = *kd;
-    if (const auto ks = o.colour("ks")) mat.ks = *ks;
+    if (const auto kd = o.color("kd")) mat.kd = *kd;
+    if (const auto ks = o.color("ks")) mat.ks = *ks;
     if (const auto n = o.number("shininess", kPositive)) mat.shininess = static_cast<float>(*n);
     // The proposal's own rules, spelt "ks": reflection weighted by ks, glossy width 1 / (1 + ks).
     // A string value may only be "ks"; anything else is reported once, by read_choice.
@@ -156,8 +156,8 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     }
     if (const auto w = o.weight("transmission")) mat.transmission = *w;
     if (const auto n = o.number("ior", kPositive)) mat.ior = static_cast<float>(*n);
-    if (const auto a = o.colour("absorption")) mat.absorption = *a;
-    if (const auto e = o.colour("emission")) mat.emission = *e;
+    if (const auto a = o.color("absorption")) mat.absorption = *a;
+    if (const auto e = o.color("emission")) mat.emission = *e;
     if (spelt("glossy", is_ks)) {
       if (is_ks) mat.glossy = 1.0f / (1.0f + (mat.ks.x + mat.ks.y + mat.ks.z) / 3.0f);
     } else if (const auto g = o.number("glossy", kNonNegative)) {
@@ -217,7 +217,7 @@ std::optional<SpotLight> parse_spot_light(const JsonReader& r, ObjectReader& o, 
   SpotLight light;
   light.position = *position;
   light.direction = glm::normalize(*direction);
-  light.colour = emitted;
+  light.color = emitted;
   light.attenuation = *attenuation;
   light.cos_inner = static_cast<float>(std::cos(in * 3.14159265358979323846 / 180.0));
   light.cos_outer = static_cast<float>(std::cos(out * 3.14159265358979323846 / 180.0));
@@ -235,9 +235,9 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
     std::optional<size_t> type;
     if (const Json* t = o.get("type", true, "\"point\", \"rect\", \"spot\" or \"directional\""))
       type = read_choice(r, *t, o.child("type"), {"point", "rect", "spot", "directional"});
-    const Vec3 colour = o.colour("color").value_or(Vec3(1.0f));
+    const Vec3 color = o.color("color").value_or(Vec3(1.0f));
     const auto intensity = o.number("intensity", kNonNegative);
-    const Vec3 emitted = colour * static_cast<float>(intensity.value_or(1.0));
+    const Vec3 emitted = color * static_cast<float>(intensity.value_or(1.0));
     const auto attenuation = parse_attenuation(r, o);
     if (type == 1u) {
       RectLight light;
@@ -251,7 +251,7 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       light.corner = *corner;
       light.edge1 = *e1;
       light.edge2 = *e2;
-      light.colour = emitted;
+      light.color = emitted;
       light.attenuation = *attenuation;
       light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
       out.emplace_back(light);
@@ -271,7 +271,7 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       const auto position = o.vec3("position", type == 0u);
       o.finish();
       if (position) light.position = *position;
-      light.colour = emitted;
+      light.color = emitted;
       if (attenuation) light.attenuation = *attenuation;
       out.emplace_back(light);
     }
@@ -297,8 +297,8 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
   if (const Json* v = top.get("render")) parse_render(r, *v, options, scene.render);
   if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
     parse_camera(r, *v, scene.camera);
-  if (const auto bg = top.colour("background")) scene.background = *bg;
-  if (const auto ambient = top.colour("ambient")) scene.ambient = *ambient;
+  if (const auto bg = top.color("background")) scene.background = *bg;
+  if (const auto ambient = top.color("ambient")) scene.ambient = *ambient;
   const std::string folder = std::filesystem::path(doc.path).parent_path().string();
   if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v, folder);
   if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);

@@ -53,20 +53,20 @@ TEST_CASE("Blender fixture: camera, lights and area-light extras in our units", 
   CHECK(centre.y == Approx(4.0f));
   CHECK(centre.z == Approx(0.0f).margin(1e-5));
   CHECK(softbox.normal().y == Approx(-1.0f));
-  CHECK(softbox.colour.x == Approx(150.0f / (kPi * kPi)));  // P / pi^2 = 15.198
-  CHECK(softbox.colour.y == Approx(0.95f * 150.0f / (kPi * kPi)));
+  CHECK(softbox.color.x == Approx(150.0f / (kPi * kPi)));  // P / pi^2 = 15.198
+  CHECK(softbox.color.y == Approx(0.95f * 150.0f / (kPi * kPi)));
   CHECK(softbox.attenuation.c2 == 1.0f);
   CHECK_FALSE(softbox.two_sided);
 
   // "Lamp": 200 W point light, exported as 200 x 683 / 4 pi cd: colour P / (4 pi^2) = 5.066.
   const auto points = lights_of<PointLight>(scene.lights);
   REQUIRE(points.size() == 1);
-  CHECK(points[0].colour.x == Approx(200.0f / (4.0f * kPi * kPi)).epsilon(1e-4));
+  CHECK(points[0].color.x == Approx(200.0f / (4.0f * kPi * kPi)).epsilon(1e-4));
   CHECK(points[0].position.y == Approx(3.0f));  // Blender z = 3
   // "Sun": 3 W/m^2, exported as 2049 lux: colour 2049 / (683 pi) = 0.955.
   const auto suns = lights_of<DirectionalLight>(scene.lights);
   REQUIRE(suns.size() == 1);
-  CHECK(suns[0].colour.x == Approx(2049.0f / (683.0f * kPi)).epsilon(1e-4));
+  CHECK(suns[0].color.x == Approx(2049.0f / (683.0f * kPi)).epsilon(1e-4));
   CHECK(suns[0].direction.y < 0.0f);  // shining down
 }
 

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "cli/frame_output.h"
-#include "io/image/colour_quantiser.h"
+#include "io/image/color_quantiser.h"
 #include "io/image/gif_file.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"

@@ -26,7 +26,7 @@ const char* kMetalRoughPng =
 
 // The unit square in z = 0 with u = x, v = 1 - y, one material, the two images above as textures
 // 0 (nearest sampler) and 1 (no sampler); with `colours`, COLOR_0 as normalised bytes.
-std::string quad_file(const std::string& name, const Json& material, const std::vector<uint8_t>& colours = {}) {
+std::string quad_file(const std::string& name, const Json& material, const std::vector<uint8_t>& colors = {}) {
   std::string buffer = rt::test::square_positions();  // view 0: 48 bytes
   append<float>(buffer, {0, 1, 1, 1, 1, 0, 0, 0});    // view 1: 32 bytes
   append<uint16_t>(buffer, {0, 1, 2, 0, 2, 3});       // view 2: 12 bytes
@@ -37,10 +37,10 @@ std::string quad_file(const std::string& name, const Json& material, const std::
   Json accessors = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
                     {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
                     {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
-  if (!colours.empty()) {
+  if (!colors.empty()) {
     buffer += std::string(4, '\0');  // align the bytes to 4 (the views above end at 92)
-    for (uint8_t c : colours) buffer.push_back(static_cast<char>(c));
-    views.push_back({{"buffer", 0}, {"byteOffset", 96}, {"byteLength", colours.size()}});
+    for (uint8_t c : colors) buffer.push_back(static_cast<char>(c));
+    views.push_back({{"buffer", 0}, {"byteOffset", 96}, {"byteLength", colors.size()}});
     accessors.push_back(
         {{"bufferView", 3}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}});
     attributes["COLOR_0"] = 3;
@@ -217,8 +217,8 @@ TEST_CASE("glTF materials: alpha MASK cuts the surface out for camera and shadow
 TEST_CASE("glTF materials: alpha MASK reads COLOR_0's alpha and the factor's", "[gltf][materials][alpha]") {
   const Json mask = {{"alphaMode", "MASK"}, {"alphaCutoff", 0.5}};
   // Vertex alpha 0 at x = 0 and 255 at x = 1: alpha = x, cut where x < 0.5.
-  const std::vector<uint8_t> colours = {255, 255, 255, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0};
-  const LoadedScene loaded = quad_scene("vertex-alpha.json", quad_file("vertex-alpha.gltf", mask, colours));
+  const std::vector<uint8_t> colors = {255, 255, 255, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0};
+  const LoadedScene loaded = quad_scene("vertex-alpha.json", quad_file("vertex-alpha.gltf", mask, colors));
   Hit hit;
   Ray left = down_z(0.2f, 0.5f), right = down_z(0.8f, 0.5f);
   REQUIRE(loaded.scene.intersect(left, hit));

@@ -81,7 +81,7 @@ TEST_CASE("glTF scene: a file's own camera and lights are used, on their nodes",
   const auto* spot = std::get_if<SpotLight>(&s.lights[0]);
   REQUIRE(spot);
   CHECK(spot->position.z == Approx(2.0f));
-  CHECK(spot->colour.y == Approx(0.5f));
+  CHECK(spot->color.y == Approx(0.5f));
 
   auto r = rt::test::rtcli("render '" + path + "' --camera nope -o '" + rt::test::output_path("nope.png") + "'");
   CHECK(r.code == 2);

@@ -22,7 +22,7 @@ TEST_CASE("JSON scenes: spot and directional lights as the schema describes them
   REQUIRE(spot);
   CHECK(spot->position == Vec3(0, 4, 0));
   CHECK(spot->direction == Vec3(0, -1, 0));  // normalised
-  CHECK(spot->colour == Vec3(2, 1, 0.5f));
+  CHECK(spot->color == Vec3(2, 1, 0.5f));
   CHECK(spot->cos_inner == Approx(std::cos(radians(10.0f))));
   CHECK(spot->cos_outer == Approx(std::cos(radians(25.0f))));
   CHECK(spot->attenuation.c0 == 1.0f);  // no falloff unless asked, as a JSON point light
@@ -41,5 +41,5 @@ TEST_CASE("JSON scenes: spot and directional lights as the schema describes them
   REQUIRE(sun);
   CHECK(sun->direction.x == Approx(std::sqrt(0.5f)));
   CHECK(sun->direction.y == Approx(-std::sqrt(0.5f)));
-  CHECK(sun->colour == Vec3(0.5f));
+  CHECK(sun->color == Vec3(0.5f));
 }

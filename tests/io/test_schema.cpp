@@ -1,9 +1,12 @@
 // schemas/scene.schema.json and the loader must agree: every scene we ship validates, and the
 // mistakes the loader rejects for their shape are rejected by the schema too.
+#include <algorithm>
 #include <filesystem>
 
 #include <catch2/catch.hpp>
 
+#include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
 #include "io/json/document.h"
 #include "io/scene/schema.h"
 #include "tests/support/test_paths.h"
@@ -101,4 +104,22 @@ TEST_CASE("schema: rejects what the loader rejects for its shape", "[schema]") {
 
 TEST_CASE("schema: the copy compiled into the binary is schemas/scene.schema.json", "[schema]") {
   CHECK(scene_schema_text() == rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
+}
+
+TEST_CASE("schema: the integrator and pixel sampler enums are the renderer's name tables", "[schema]") {
+  // The schema is written by hand; the names come from the code (core/render). A new integrator
+  // or sampler must be added to both, or `validate` would refuse a scene that renders.
+  const Json schema = Json::parse(rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
+  const auto names_at = [&](const char* pointer) {
+    std::vector<std::string> names = schema.at(Json::json_pointer(pointer)).get<std::vector<std::string>>();
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  auto integrators = integrator_names();
+  auto samplers = pixel_sampler_names();
+  std::sort(integrators.begin(), integrators.end());
+  std::sort(samplers.begin(), samplers.end());
+  CHECK(integrators.size() == 5);
+  CHECK(names_at("/definitions/render/properties/integrator/enum") == integrators);
+  CHECK(names_at("/definitions/render/properties/antialias/properties/mode/enum") == samplers);
 }

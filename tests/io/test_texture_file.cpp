@@ -33,12 +33,12 @@ void chunk(std::vector<uint8_t>& out, const char* type, const std::vector<uint8_
 // A PNG of w x h pixels, `channels` samples each (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA) of
 // `depth` bits, sample k of the image being samples[k] (big-endian for 16 bits).
 std::string png(int w, int h, int channels, int depth, const std::vector<uint16_t>& samples) {
-  static constexpr uint8_t kColourType[] = {0, 0, 4, 2, 6};
+  static constexpr uint8_t kColorType[] = {0, 0, 4, 2, 6};
   std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   std::vector<uint8_t> ihdr;
   put32(ihdr, static_cast<uint32_t>(w));
   put32(ihdr, static_cast<uint32_t>(h));
-  ihdr.insert(ihdr.end(), {static_cast<uint8_t>(depth), kColourType[channels], 0, 0, 0});
+  ihdr.insert(ihdr.end(), {static_cast<uint8_t>(depth), kColorType[channels], 0, 0, 0});
   chunk(out, "IHDR", ihdr);
   std::vector<uint8_t> raw;
   size_t k = 0;

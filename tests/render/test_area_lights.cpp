@@ -48,7 +48,7 @@ TEST_CASE("rect light: emits towards edge1 x edge2, like a point light of its co
   down.corner = Vec3(-0.01f, 4.0f, -0.01f);
   down.edge1 = Vec3(0.02f, 0, 0);
   down.edge2 = Vec3(0, 0, 0.02f);
-  down.colour = Vec3(2.0f);
+  down.color = Vec3(2.0f);
   CHECK(down.normal().y == Approx(-1.0f));
   // Straight below, a small light sends its colour, like a point light there.
   const LightSample below = sample_light(Light(down), Vec3(0.0f), Vec2(0.5f));

@@ -48,7 +48,8 @@ Vec3 wood(float x, float y) {
   const float plank = std::floor(y * 4.0f);
   const float py = y * 4.0f - plank;
   const float shift = hash(static_cast<int>(plank), 7) * 3.0f;
-  const float wobble = 0.35f * value_noise(x * 6.0f + shift, py * 2.0f, 6) + 0.08f * value_noise(x * 40.0f, py * 9.0f, 40);
+  const float wobble =
+      0.35f * value_noise(x * 6.0f + shift, py * 2.0f, 6) + 0.08f * value_noise(x * 40.0f, py * 9.0f, 40);
   const float rings = 7.0f * std::sqrt((py - 1.8f) * (py - 1.8f) + 0.04f * (x + shift) * (x + shift)) + wobble * 2.0f;
   const float ring = rings - std::floor(rings);
   const float dark = smooth(0.55f, 0.95f, ring) * 0.8f + 0.2f * value_noise(x * 90.0f, py * 30.0f, 90);
@@ -112,7 +113,7 @@ Vec3 bricks_normal(float x, float y) {
 }
 
 // Bricks in colour, for the normal-mapped wall.
-Vec3 brick_colour(float x, float y) {
+Vec3 brick_color(float x, float y) {
   const float h = brick_height(x, y);
   const float tone = value_noise(x * 4.0f, y * 8.0f, 4);
   return glm::mix(Vec3(0.72f, 0.70f, 0.66f), glm::mix(Vec3(0.62f, 0.27f, 0.18f), Vec3(0.70f, 0.36f, 0.22f), tone),
@@ -130,7 +131,7 @@ const std::vector<Pattern>& patterns() {
       {"pips.png", 256, 256, pips, "height map: a die's five pips as dimples"},
       {"bricks.png", 256, 256, bricks, "height map: bricks with mortar joints"},
       {"bricks_normal.png", 256, 256, bricks_normal, "the same bricks as a tangent-space normal map"},
-      {"bricks_colour.png", 256, 256, brick_colour, "the bricks in colour"},
+      {"bricks_colour.png", 256, 256, brick_color, "the bricks in colour"},
   };
   return all;
 }

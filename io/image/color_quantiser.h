@@ -19,9 +19,9 @@ struct IndexedImage {
   std::vector<uint8_t> indices;                 // row-major, one palette index per pixel
 };
 
-IndexedImage quantise(const Rgb8Image& image, bool dither, int max_colours = 256);
+IndexedImage quantise(const Rgb8Image& image, bool dither, int max_colors = 256);
 
 // The palette as the median cut chooses it (what quantise() uses), for tests.
-std::vector<std::array<uint8_t, 3>> median_cut_palette(const Rgb8Image& image, int max_colours);
+std::vector<std::array<uint8_t, 3>> median_cut_palette(const Rgb8Image& image, int max_colors);
 
 }  // namespace rt

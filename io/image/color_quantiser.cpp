@@ -1,4 +1,4 @@
-#include "io/image/colour_quantiser.h"
+#include "io/image/color_quantiser.h"
 
 #include <algorithm>
 #include <unordered_map>
@@ -6,7 +6,7 @@
 namespace rt {
 namespace {
 
-struct Colour {
+struct Color {
   std::array<uint8_t, 3> rgb;
   uint32_t count;  // pixels of this colour
 };
@@ -14,17 +14,17 @@ struct Colour {
 uint32_t key(const uint8_t* p) { return (uint32_t{p[0]} << 16) | (uint32_t{p[1]} << 8) | p[2]; }
 
 // The distinct colours of the image with their pixel counts, in a fixed order.
-std::vector<Colour> histogram(const Rgb8Image& image) {
+std::vector<Color> histogram(const Rgb8Image& image) {
   std::vector<uint32_t> keys(image.rgb.size() / 3);
   for (size_t i = 0; i < keys.size(); ++i) keys[i] = key(&image.rgb[3 * i]);
   std::sort(keys.begin(), keys.end());
-  std::vector<Colour> out;
+  std::vector<Color> out;
   for (size_t i = 0; i < keys.size();) {
     size_t j = i;
     while (j < keys.size() && keys[j] == keys[i]) ++j;
     const uint32_t k = keys[i];
-    out.push_back(Colour{{static_cast<uint8_t>(k >> 16), static_cast<uint8_t>(k >> 8), static_cast<uint8_t>(k)},
-                         static_cast<uint32_t>(j - i)});
+    out.push_back(Color{{static_cast<uint8_t>(k >> 16), static_cast<uint8_t>(k >> 8), static_cast<uint8_t>(k)},
+                        static_cast<uint32_t>(j - i)});
     i = j;
   }
   return out;
@@ -36,15 +36,15 @@ struct Box {
   int axis = 0;   // the channel with the widest range
   int range = 0;  // of that channel
 
-  void measure(const std::vector<Colour>& colours) {
+  void measure(const std::vector<Color>& colors) {
     int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
     pixels = 0;
     for (size_t i = begin; i < end; ++i) {
       for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min<int>(lo[c], colours[i].rgb[c]);
-        hi[c] = std::max<int>(hi[c], colours[i].rgb[c]);
+        lo[c] = std::min<int>(lo[c], colors[i].rgb[c]);
+        hi[c] = std::max<int>(hi[c], colors[i].rgb[c]);
       }
-      pixels += colours[i].count;
+      pixels += colors[i].count;
     }
     axis = 0;
     for (int c = 1; c < 3; ++c)
@@ -57,41 +57,41 @@ struct Box {
 
 }  // namespace
 
-std::vector<std::array<uint8_t, 3>> median_cut_palette(const Rgb8Image& image, int max_colours) {
-  std::vector<Colour> colours = histogram(image);
+std::vector<std::array<uint8_t, 3>> median_cut_palette(const Rgb8Image& image, int max_colors) {
+  std::vector<Color> colors = histogram(image);
   std::vector<Box> boxes;
-  if (colours.empty()) return {{0, 0, 0}};
-  boxes.push_back(Box{0, colours.size()});
-  boxes.back().measure(colours);
-  while (static_cast<int>(boxes.size()) < max_colours) {
+  if (colors.empty()) return {{0, 0, 0}};
+  boxes.push_back(Box{0, colors.size()});
+  boxes.back().measure(colors);
+  while (static_cast<int>(boxes.size()) < max_colors) {
     const auto widest = std::max_element(boxes.begin(), boxes.end(),
                                          [](const Box& a, const Box& b) { return a.priority() < b.priority(); });
     if (widest->priority() == 0) break;  // every box is one colour (or zero-range): nothing to split
     Box& box = *widest;
     const int axis = box.axis;
-    std::sort(colours.begin() + static_cast<ptrdiff_t>(box.begin), colours.begin() + static_cast<ptrdiff_t>(box.end),
-              [axis](const Colour& a, const Colour& b) {
+    std::sort(colors.begin() + static_cast<ptrdiff_t>(box.begin), colors.begin() + static_cast<ptrdiff_t>(box.end),
+              [axis](const Color& a, const Color& b) {
                 return a.rgb[axis] != b.rgb[axis] ? a.rgb[axis] < b.rgb[axis] : key(a.rgb.data()) < key(b.rgb.data());
               });
     // Split at the pixel-weighted median, keeping at least one colour on each side.
     uint64_t seen = 0;
     size_t split = box.begin + 1;
     for (size_t i = box.begin; i + 1 < box.end; ++i) {
-      seen += colours[i].count;
+      seen += colors[i].count;
       split = i + 1;
       if (2 * seen >= box.pixels) break;
     }
     Box upper{split, box.end};
     box.end = split;
-    box.measure(colours);
-    upper.measure(colours);
+    box.measure(colors);
+    upper.measure(colors);
     boxes.push_back(upper);
   }
   std::vector<std::array<uint8_t, 3>> palette;
   for (const Box& b : boxes) {
     uint64_t sum[3] = {0, 0, 0};
     for (size_t i = b.begin; i < b.end; ++i)
-      for (int c = 0; c < 3; ++c) sum[c] += uint64_t{colours[i].rgb[c]} * colours[i].count;
+      for (int c = 0; c < 3; ++c) sum[c] += uint64_t{colors[i].rgb[c]} * colors[i].count;
     std::array<uint8_t, 3> mean{};
     for (int c = 0; c < 3; ++c) mean[c] = static_cast<uint8_t>((sum[c] + b.pixels / 2) / b.pixels);
     palette.push_back(mean);
@@ -99,11 +99,11 @@ std::vector<std::array<uint8_t, 3>> median_cut_palette(const Rgb8Image& image, i
   return palette;
 }
 
-IndexedImage quantise(const Rgb8Image& image, bool dither, int max_colours) {
+IndexedImage quantise(const Rgb8Image& image, bool dither, int max_colors) {
   IndexedImage out;
   out.width = image.width;
   out.height = image.height;
-  out.palette = median_cut_palette(image, std::clamp(max_colours, 1, 256));
+  out.palette = median_cut_palette(image, std::clamp(max_colors, 1, 256));
   out.indices.resize(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
   std::unordered_map<uint32_t, uint8_t> nearest_of;  // colour -> palette index, found once per colour
   nearest_of.reserve(4096);
