@@ -231,7 +231,7 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
-                   "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders (README, \"Limits\")\n",
+                   "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders (docs/errors-and-limits.md, \"Limits\")\n",
                    settings.width, settings.height, static_cast<unsigned long long>(pixel_count(settings)),
                    static_cast<unsigned long long>(kMaxPixels));
       return kExitBadInput;

@@ -40,7 +40,7 @@ struct Material {
   float ior = 1.5f;         // index of refraction of the inside, > 0; used where transmission > 0
   Vec3 absorption{0.0f};    // Beer-Lambert coefficient per unit distance inside, >= 0
   float glossy = 0.0f;      // blur-square width of reflections (0 = perfect mirror), >= 0
-  // Surface detail (README, "Textures"). A colour texture replaces kd and a specular texture ks:
+  // Surface detail (docs/rendering.md, "Textures"). A colour texture replaces kd and a specular texture ks:
   // kd and ks then multiply them, and default to 1 when the scene does not give them.
   TextureSlot texture;
   TextureSlot specular_texture;

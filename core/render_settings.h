@@ -9,7 +9,7 @@
 
 namespace rt {
 
-// Where the adaptive sampler places the rays of a cell (README, "Anti-aliasing").
+// Where the adaptive sampler places the rays of a cell (docs/rendering.md, "Anti-aliasing").
 enum class SamplePositions { kCorners, kCentres };
 
 // render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
@@ -45,7 +45,7 @@ struct RenderSettings {
   SurfaceDetailSwitches detail;
 };
 
-// Limits on what settings may ask for (README.md, "Limits"). The film holds 12 bytes a pixel
+// Limits on what settings may ask for (docs/errors-and-limits.md, "Limits"). The film holds 12 bytes a pixel
 // (linear RGB floats), so the pixel count bounds memory: 2^26 pixels (8192 x 8192) is 768 MiB.
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr uint64_t kMaxPixels = uint64_t{1} << 26;

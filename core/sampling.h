@@ -2,7 +2,7 @@
 // it is for: the sample's key (seed, frame, pixel or lattice point, sample), its purpose (lens,
 // light, glossy, ...), the path through the ray tree that asks (bounce by bounce) and an index.
 // Nothing is drawn from a sequential stream, so adding shadow samples does not reshuffle glossy
-// noise, and the image never depends on which thread traced what (README, "Random numbers").
+// noise, and the image never depends on which thread traced what (docs/rendering.md, "Random numbers").
 #pragma once
 
 #include <algorithm>

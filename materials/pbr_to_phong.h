@@ -1,4 +1,4 @@
-// How glTF's metallic-roughness parameters become our Phong terms (README, "glTF materials"),
+// How glTF's metallic-roughness parameters become our Phong terms (docs/scene-format.md, "glTF materials"),
 // per shading point, so that metallicRoughness textures vary them across a surface:
 //   kd           = base * (1 - metallic * (1 - roughness))    rough metal still scatters its colour
 //   F0           = mix(0.04, base, metallic)                   dielectrics reflect ~4 % head-on

@@ -1,4 +1,4 @@
-// Bump and normal maps: how a texture tilts the shading normal (README, "Bump and normal maps").
+// Bump and normal maps: how a texture tilts the shading normal (docs/rendering.md, "Bump and normal maps").
 // The tilted normal then drives all lighting and secondary rays; the integrator keeps checking the
 // geometric normal, so a tilt can never send a ray through the surface.
 #pragma once

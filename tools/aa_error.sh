@@ -1,5 +1,5 @@
 #!/bin/sh
-# Anti-aliasing error against a reference (README, "Anti-aliasing"): renders SCENE (default
+# Anti-aliasing error against a reference (docs/rendering.md, "Anti-aliasing"): renders SCENE (default
 # scenes/antialias.json) with uniform 16 x 16 samples as the reference, then with each sampler
 # setting below, and prints the render time, camera rays per pixel and RMS error (levels of 255)
 # of each.

@@ -8,7 +8,7 @@
 # Settings: Y up (glTF's), cameras, punctual lights in physical units ("SPEC": W -> cd with
 # 683 lm/W), extras, animation, modifiers applied.
 #
-# Usage (README, "From Blender"):
+# Usage (docs/scene-format.md, "From Blender"):
 #   blender scene.blend --background --python tools/blender_export.py -- out.glb
 # or from Blender's Scripting workspace: run this file with OUTPUT set below, or call
 # export_for_rtcli("/path/out.glb") from the Python console after importing it.

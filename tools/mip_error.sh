@@ -1,5 +1,5 @@
 #!/bin/sh
-# Texture filtering error against a reference (README, "Textures"): renders scenes/receding_plane.json
+# Texture filtering error against a reference (docs/rendering.md, "Textures"): renders scenes/receding_plane.json
 # (a checkered table top receding to the horizon) with 16 x 16 samples per pixel and bilinear
 # filtering as the reference, then at one sample per pixel with each filter, and prints the RMS
 # error (levels of 255) and time of each. Usage: tools/mip_error.sh [SCENE]   (after tools/build.sh)

@@ -1,5 +1,5 @@
 // The transmissive objects a ray is inside, innermost last: how refraction handles nested and
-// touching glass (README, "Refraction"). A camera ray starts in air (empty stack). Entering a
+// touching glass (docs/rendering.md, "Refraction"). A camera ray starts in air (empty stack). Entering a
 // transmissive surface pushes its material; the index on the far side of the surface is the
 // material's and on the near side the innermost medium's (1 for air). Leaving removes the
 // innermost entry of that material; the index outside is then the new innermost medium's. So a

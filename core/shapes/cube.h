@@ -2,7 +2,7 @@
 // part = 2 * axis + (1 if the face is on the negative side): 0 = +X, 1 = -X, ... 5 = -Z.
 // UV: each face holds the whole image, upright and unmirrored seen from outside, as on a die
 // standing on -Y with its +Z face towards the viewer (side faces: v runs down -Y; top: v runs
-// towards +Z; bottom: towards -Z). README, "Natural texture coordinates".
+// towards +Z; bottom: towards -Z). docs/scene-format.md, "Natural texture coordinates".
 #pragma once
 
 #include "core/hit.h"

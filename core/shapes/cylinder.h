@@ -2,7 +2,7 @@
 // part 0 = side, 1 = base cap (z = 0, normal -Z), 2 = top cap (z = 1, normal +Z).
 // UV on the side: u = angle around +Z from +X / 2 pi, v = 1 - z (upright when +Z is up). On
 // the caps: planar, v = (1 - y) / 2 and u = (x + 1) / 2 on top, (1 - x) / 2 on the base, so
-// that every part reads unmirrored from outside (README, "Natural texture coordinates").
+// that every part reads unmirrored from outside (docs/scene-format.md, "Natural texture coordinates").
 #pragma once
 
 #include "core/hit.h"

@@ -2,7 +2,7 @@
 // mode and a filter. Owned by the Scene and shared read-only by every thread: sampling neither
 // allocates nor locks.
 //
-// Conventions (README, "Textures"): u runs left to right across the image and v top to bottom
+// Conventions (docs/rendering.md, "Textures"): u runs left to right across the image and v top to bottom
 // (row 0 at v = 0, as in glTF); texel (i, j) covers [i, i + 1) / width x [j, j + 1) / height and
 // its centre, where bilinear filtering returns it exactly, is ((i + 0.5) / width, (j + 0.5) / height).
 #pragma once

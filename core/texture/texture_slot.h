@@ -10,7 +10,7 @@
 namespace rt {
 
 // Where (u, v) comes from. kUv: the shape's own coordinates (or a mesh's TEXCOORD_n). The others
-// are the proposal's projections of the object-space hit point (README, "Textures"):
+// are the proposal's projections of the object-space hit point (docs/rendering.md, "Textures"):
 //   planar       drops z: u = (x + 1) / 2, v = (1 - y) / 2 (the square [-1, 1]^2 seen from +z, upright)
 //   spherical    longitude and latitude about the object's y axis, as the sphere's own coordinates
 //   cylindrical  longitude about the y axis, v = (1 - y) / 2 as planar

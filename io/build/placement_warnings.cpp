@@ -61,7 +61,7 @@ std::optional<PlacementWarning> stacked_copies_warning(const SceneGraph& g, floa
                           std::to_string(most) + " copies of " + (g.nodes[node].shape ? "a shape" : "a mesh") +
                               " are placed at exactly the same spot (the same world transform): no "
                               "BVH can separate them, so every ray that reaches them tests all " +
-                              std::to_string(most) + " and the render will be slow (README, \"Limits\")"};
+                              std::to_string(most) + " and the render will be slow (docs/errors-and-limits.md, \"Limits\")"};
 }
 
 }  // namespace rt

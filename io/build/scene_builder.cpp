@@ -288,7 +288,7 @@ class Builder {
 
   void limit_error(const std::string& pointer, const std::string& message) {
     over_limit_ = true;
-    error(pointer, message + " (a limit that keeps memory bounded; see README, \"Limits\")");
+    error(pointer, message + " (a limit that keeps memory bounded; see docs/errors-and-limits.md, \"Limits\")");
   }
   void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
   void warning(const std::string& pointer, std::string message) {

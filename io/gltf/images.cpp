@@ -60,7 +60,7 @@ TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encodi
   return slot;
 }
 
-// glTF samplers (README, "glTF materials"): wrapS decides the wrap mode (ours is one for both
+// glTF samplers (docs/scene-format.md, "glTF materials"): wrapS decides the wrap mode (ours is one for both
 // axes). Without mipmaps in minFilter, magFilter picks nearest or bilinear; with them (or no
 // sampler), trilinear, unless magFilter is NEAREST (pixel art).
 void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {

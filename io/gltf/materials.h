@@ -1,4 +1,4 @@
-// glTF materials onto ours (README, "glTF materials"): the metallic-roughness model is kept and
+// glTF materials onto ours (docs/scene-format.md, "glTF materials"): the metallic-roughness model is kept and
 // converted per shading point (materials/pbr_to_phong.h); the rest maps as follows.
 //   baseColorFactor, baseColorTexture (sRGB), COLOR_0  -> kd (their product; pbr.enabled)
 //   metallicRoughnessTexture (G roughness, B metallic)   -> pbr.texture

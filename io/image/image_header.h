@@ -1,5 +1,5 @@
 // What an image file is, from its first bytes, and how big, from its header, before any decoder
-// runs. rtcli decodes PNG and JPEG only (README, "Textures"): every other format is refused by
+// runs. rtcli decodes PNG and JPEG only (docs/rendering.md, "Textures"): every other format is refused by
 // name here, so a decoder never sees a file it was not meant for (Debian 12's stb_image 2.27
 // over-reads 16-bit PNM files and loops forever on a truncated RLE Radiance .hdr). A JPEG's
 // markers are walked to count its scans: a progressive JPEG's decoding costs a pass over the

@@ -200,7 +200,7 @@ std::optional<TrackDescription> parse_track(const JsonReader& r, const Json& v, 
             " in this track" +
             (keys_left < keys_limit ? " after " + std::to_string(keys_limit - keys_left) + " in the tracks before it"
                                     : "") +
-            " (a limit that keeps memory bounded; see README, \"Limits\")");
+            " (a limit that keeps memory bounded; see docs/errors-and-limits.md, \"Limits\")");
     return std::nullopt;
   }
   if (split) split_wide_rotations(rotations, steps, total, t.track);

@@ -1,5 +1,5 @@
 // The scene file's "animation": frame rate, frame range and keyframed tracks on named nodes
-// (schemas/scene.schema.json, README "Animation"). Key values are written as the node's own
+// (schemas/scene.schema.json, docs/scene-format.md, "Animation"). Key values are written as the node's own
 // transform keys are: translate [x, y, z]; scale one number or [x, y, z]; rotate Euler degrees
 // [x, y, z], {"axis": [x, y, z], "degrees": d} or {"quaternion": [x, y, z, w]}. Rotations
 // interpolate by slerp; degrees mean what they say, so a linear track from 0 to 360 degrees turns

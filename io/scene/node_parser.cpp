@@ -194,7 +194,7 @@ std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& valu
   for (size_t i = 0; i < value.size() && ctx.nodes <= ctx.max_nodes; ++i) {
     if (++ctx.nodes > ctx.max_nodes) {
       ctx.reader.error(pointer_child(pointer, i), "expected at most " + std::to_string(ctx.max_nodes) +
-                                                      " nodes in a scene, found more (README, \"Limits\")");
+                                                      " nodes in a scene, found more (docs/errors-and-limits.md, \"Limits\")");
       break;
     }
     nodes.push_back(parse_node(ctx, value[i], pointer_child(pointer, i), depth));

@@ -60,7 +60,7 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
     r.error("/render",
             "expected at most " + std::to_string(kMaxPixels) + " pixels (width x height), found " +
                 std::to_string(s.width) + " x " + std::to_string(s.height) + " = " + std::to_string(pixel_count(s)) +
-                " (README, \"Limits\")",
+                " (docs/errors-and-limits.md, \"Limits\")",
             Anchor::kKey);
   } else if (max_camera_rays_per_frame(s) > kCameraRaysWarning) {
     r.warning("/render",

@@ -1,5 +1,5 @@
 // The texture keys of a material -- "texture", "specular_texture", "bump", "normal_map" -- each a
-// file name or an object with "file" and the mapping keys (README, "Textures"). The files are only
+// file name or an object with "file" and the mapping keys (docs/rendering.md, "Textures"). The files are only
 // named here; the scene builder loads each one once.
 #pragma once
 

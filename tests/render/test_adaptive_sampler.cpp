@@ -104,7 +104,7 @@ TEST_CASE("adaptive: centre positions take four rays per cell, shared with nothi
   // Centres of pixel 10's quarters: 10.25 is covered, 10.75 not: split. Of the left quarter's:
   // 10.125 in, 10.375 out: split. Then both centres of [10.25, 10.5] (10.3125, 10.4375) miss the
   // edge at 10.3, so refinement stops at depth 2 with a quarter covered: centres can step over
-  // an edge that corners bracket (README, "Anti-aliasing").
+  // an edge that corners bracket (docs/rendering.md, "Anti-aliasing").
   CHECK(edge.film.depth[edge.film.index(10, 3)] == 2);
   CHECK(edge.film.depth[edge.film.index(9, 3)] == 0);
   CHECK(edge.film.color.at(10, 3).x == Approx(0.25f));
