@@ -11,13 +11,20 @@
 namespace rt {
 namespace {
 
+Json place_json(const std::string& file, size_t line, size_t column, const std::string& pointer) {
+  return Json{{"file", file},
+              {"line", line ? Json(line) : Json(nullptr)},
+              {"column", column ? Json(column) : Json(nullptr)},
+              {"pointer", pointer}};
+}
+
 Json to_json(const Diagnostic& d) {
-  return Json{{"file", d.file},
-              {"line", d.line ? Json(d.line) : Json(nullptr)},
-              {"column", d.column ? Json(d.column) : Json(nullptr)},
-              {"pointer", d.pointer},
-              {"severity", d.severity == Severity::kError ? "error" : "warning"},
-              {"message", d.message}};
+  Json out = place_json(d.file, d.line, d.column, d.pointer);
+  out["severity"] = d.severity == Severity::kError ? "error" : "warning";
+  out["message"] = d.message;
+  // A problem inside a referenced file (a glTF file's accessor): where in that file.
+  if (d.inside) out["inside"] = place_json(d.inside->file, d.inside->line, d.inside->column, d.inside->pointer);
+  return out;
 }
 
 }  // namespace

@@ -13,6 +13,13 @@ std::string format_diagnostic(const Diagnostic& d) {
   return out;
 }
 
+std::string format_place(const Place& p) {
+  std::string out = "  in " + p.file;
+  if (p.line > 0) out += ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  if (!p.pointer.empty()) out += ": " + p.pointer;
+  return out;
+}
+
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -42,6 +49,11 @@ void Diagnostics::add(Diagnostic d) {
   d.message = printable(d.message);
   d.excerpt = printable(d.excerpt);
   d.file = printable(d.file);
+  if (d.inside) {
+    d.inside->file = printable(d.inside->file);
+    d.inside->pointer = printable(d.inside->pointer);
+    d.inside->excerpt = printable(d.inside->excerpt);
+  }
   items_.push_back(std::move(d));
 }
 

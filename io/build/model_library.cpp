@@ -18,38 +18,40 @@ std::string format_point(Vec3 p) {
 }  // namespace
 
 ModelLibrary::ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options, LimitUsage& usage,
-                           const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink)
+                           const BvhBuildOptions& bvh_options, std::vector<std::string>& files, Reporter& report)
     : assets_(assets),
       textures_(textures),
       options_(options),
       usage_(usage),
       bvh_options_(bvh_options),
       files_(files),
-      sink_(std::move(sink)) {}
+      report_(report) {}
 
 const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
   if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
   std::optional<LoadedModel>& slot = models_[key];
+  Diagnostics found;
+  Reporter in_file(found, ref.resolved_path);
   ImportError why;
-  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, usage_, why);
+  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, usage_, in_file, why);
   if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
-  if (!model && why.over_limit) {
-    sink_.over_limit(ref.pointer + "/file", "\"" + ref.file + "\": " + why.message);
-    return nullptr;
+  const std::string quoted = "\"" + ref.file + "\"";
+  const std::string unreadable = "expected a readable glTF 2.0 file, found " + quoted +
+                                 (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") + ": ";
+  for (const Diagnostic& d : found.all()) {
+    if (d.severity == Severity::kWarning) report_.add_inside(d, ref.pointer, quoted + ": ");
+    else if (in_file.stopped_by_limit()) report_.add_inside(d, ref.pointer + "/file", quoted + ": ");
+    else report_.add_inside(d, ref.pointer + "/file", unreadable);
   }
+  if (in_file.stopped_by_limit()) report_.stop_for_limit();
   if (!model && why.unknown_mesh) {
-    sink_.error(ref.pointer + "/name", "expected the name of a mesh in \"" + ref.file + "\" (" + why.message +
-                                           "), found \"" + *ref.mesh_name + "\"");
+    report_.error(ref.pointer + "/name", "expected the name of a mesh in " + quoted + " (" + why.message +
+                                             "), found \"" + *ref.mesh_name + "\"");
     return nullptr;
   }
-  if (!model) {
-    sink_.error(ref.pointer + "/file", "expected a readable glTF 2.0 file, found \"" + ref.file + "\"" +
-                                           (ref.resolved_path == ref.file ? "" : " (" + ref.resolved_path + ")") +
-                                           ": " + why.message);
-    return nullptr;
-  }
-  for (const std::string& w : model->warnings) sink_.warning(ref.pointer, "\"" + ref.file + "\": " + w);
+  if (!model && in_file.errors() == 0) report_.error(ref.pointer + "/file", unreadable + "not a readable glTF file");
+  if (!model) return nullptr;
   LoadedModel loaded;
   const auto first_material = static_cast<uint32_t>(assets_.materials.size());
   add_materials(*model);
@@ -74,10 +76,10 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
 bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
   for (const Vec3& v : mesh.positions) {
     if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
-      sink_.error(ref.pointer, "expected \"" + ref.file +
-                                   "\" within +-1.7e38 (half the single-precision range, so that "
-                                   "edges stay finite), found a vertex at " +
-                                   format_point(v));
+      report_.error(ref.pointer, "expected \"" + ref.file +
+                                     "\" within +-1.7e38 (half the single-precision range, so that "
+                                     "edges stay finite), found a vertex at " +
+                                     format_point(v));
       return false;
     }
   }

@@ -4,7 +4,6 @@
 // texture slots renumbered. The builder then grafts a file's node tree wherever a node names it.
 #pragma once
 
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -12,18 +11,12 @@
 
 #include "core/scene_assets.h"
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 #include "io/build/texture_library.h"
 #include "io/gltf/loader.h"
 #include "io/scene/description.h"
 
 namespace rt {
-
-// Where problems go: at a JSON pointer of the scene file.
-struct ProblemSink {
-  std::function<void(const std::string& pointer, std::string message)> error;
-  std::function<void(const std::string& pointer, std::string message)> warning;
-  std::function<void(const std::string& pointer, std::string message)> over_limit;  // loading stops
-};
 
 struct LoadedPrimitive {
   uint32_t geometry;  // index into SceneAssets::meshes
@@ -39,10 +32,11 @@ struct LoadedModel {
 class ModelLibrary {
  public:
   ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const LoadOptions& options, LimitUsage& usage,
-               const BvhBuildOptions& bvh_options, std::vector<std::string>& files, ProblemSink sink);
+               const BvhBuildOptions& bvh_options, std::vector<std::string>& files, Reporter& report);
 
   // The file (or its one named mesh) that `ref` names, loaded the first time; null if it cannot
-  // be (the problem is reported at ref's pointer, once).
+  // be. Problems are reported at ref's pointer in the scene file, once, each with its place in
+  // the glTF file; a limit stops `report`.
   const LoadedModel* load(const MeshReference& ref);
 
  private:
@@ -55,8 +49,8 @@ class ModelLibrary {
   const LoadOptions& options_;
   LimitUsage& usage_;  // the scene's, shared with the texture library
   const BvhBuildOptions& bvh_options_;
-  std::vector<std::string>& files_;  // every file read (LoadedScene::inputs)
-  ProblemSink sink_;
+  std::vector<std::string>& files_;                           // every file read (LoadedScene::inputs)
+  Reporter& report_;                                          // on the scene file
   std::map<std::string, std::optional<LoadedModel>> models_;  // by path and mesh name; empty: failed
   std::optional<uint32_t> default_material_;
 };

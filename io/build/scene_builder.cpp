@@ -31,7 +31,7 @@ class Builder {
 
   void add_nodes(const std::vector<NodeDescription>& nodes, int32_t parent) {
     for (const NodeDescription& node : nodes) {
-      if (over_limit_) return;
+      if (over_limit()) return;
       const auto index = static_cast<int32_t>(nodes_.size());
       SceneNode n;
       n.name = node.name;
@@ -197,7 +197,7 @@ class Builder {
   Material with_textures(const MaterialDescription& m) {
     Material out = m.material;
     const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
-      if (!ref || over_limit_) return;
+      if (!ref || over_limit()) return;
       TextureError why;
       slot.texture = textures_.load(*ref, why, files_);
       if (why.over_budget) limit_error(ref->pointer, why.message);
@@ -286,21 +286,16 @@ class Builder {
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
   }
 
-  void limit_error(const std::string& pointer, const std::string& message) {
-    over_limit_ = true;
-    error(pointer, message + " (a limit that keeps memory bounded; see docs/errors-and-limits.md, \"Limits\")");
-  }
-  void error(const std::string& pointer, std::string message) { report(Severity::kError, pointer, std::move(message)); }
-  void warning(const std::string& pointer, std::string message) {
-    report(Severity::kWarning, pointer, std::move(message));
-  }
-  void report(Severity severity, const std::string& pointer, std::string message) {
-    if (source_) {
-      const JsonReader r(*source_, diags_);
-      severity == Severity::kError ? r.error(pointer, std::move(message)) : r.warning(pointer, std::move(message));
-    } else {
-      diags_.add(Diagnostic{severity, desc_.path, 0, 0, "", std::move(message), ""});
-    }
+  void limit_error(const std::string& pointer, const std::string& message) { report_.over_limit(pointer, message); }
+  void error(const std::string& pointer, std::string message) { report_.error(pointer, std::move(message)); }
+  void warning(const std::string& pointer, std::string message) { report_.warning(pointer, std::move(message)); }
+  bool over_limit() const { return report_.stopped_by_limit(); }
+
+  // Reports on the scene file: at its pointers, with line:column. A model rendered on its own
+  // has no scene file: its description's pointers are not the user's, so none is shown.
+  static Reporter scene_reporter(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags) {
+    if (source) return Reporter(diags, desc.path, json_places(*source));
+    return Reporter(diags, desc.path, [](const std::string&, Anchor, Place& place) { place.pointer.clear(); });
   }
 
   const SceneDescription& desc_;
@@ -309,6 +304,7 @@ class Builder {
   Diagnostics& diags_;
   const BvhBuildOptions bvh_options_;
   const size_t errors_before_ = diags_.error_count();
+  Reporter report_ = scene_reporter(desc_, source_, diags_);
   SceneAssets assets_;
   LimitUsage usage_;
   TextureLibrary textures_{assets_.textures, options_.limits, usage_};
@@ -319,17 +315,8 @@ class Builder {
   std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
   std::vector<LightPlacement> file_lights_;
   std::vector<std::string> files_;
-  ModelLibrary models_{assets_,
-                       textures_,
-                       options_,
-                       usage_,
-                       bvh_options_,
-                       files_,
-                       ProblemSink{[this](const std::string& p, std::string m) { error(p, std::move(m)); },
-                                   [this](const std::string& p, std::string m) { warning(p, std::move(m)); },
-                                   [this](const std::string& p, std::string m) { limit_error(p, m); }}};
+  ModelLibrary models_{assets_, textures_, options_, usage_, bvh_options_, files_, report_};
   uint64_t instances_ = 0;
-  bool over_limit_ = false;
 };
 
 }  // namespace

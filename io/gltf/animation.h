@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 #include "io/gltf/imported_model.h"
 
 namespace tinygltf {
@@ -19,9 +20,9 @@ class Model;
 namespace rt {
 
 // node_map: per file node, its index in out.nodes (-1 if the scene does not use it). Appends to
-// out.tracks and out.warnings and sets out.animation_end; false with `error` for a broken channel
-// or one past the key limit (error.over_limit).
+// out.tracks and sets out.animation_end; false for a broken channel or one past the key limit
+// (report.over_limit), each reported at its pointer.
 bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map, const LoadLimits& limits,
-                       LimitUsage& usage, ImportedModel& out, ImportError& error);
+                       LimitUsage& usage, ImportedModel& out, Reporter& report);
 
 }  // namespace rt

@@ -20,20 +20,22 @@ bool flag(const tinygltf::Value& object, const char* key) {
 }  // namespace
 
 std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, const std::string& where,
-                                                std::vector<std::string>& warnings) {
+                                                const std::string& at, Reporter& report) {
   if (!extras.IsObject() || !extras.Has("rtcli_area_light")) return std::nullopt;
   const tinygltf::Value& a = extras.Get("rtcli_area_light");
   const auto size = gltf_numbers(a, "size", 2);
   const auto power = gltf_number(a, "power");
   const auto color = gltf_numbers(a, "color", 3);
   if (!size || !power || !((*size)[0] > 0.0f) || !((*size)[1] > 0.0f) || *power < 0.0f) {
-    warnings.push_back(where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
+    report.warning(at + "/extras/rtcli_area_light",
+                   where + ": rtcli_area_light needs size [x, y] > 0 and power >= 0 (watts); ignored");
     return std::nullopt;
   }
   if (a.Has("shape") && a.Get("shape").IsString()) {
     const std::string shape = a.Get("shape").Get<std::string>();
     if (shape == "DISK" || shape == "ELLIPSE")
-      warnings.push_back(where + ": a " + shape + " area light is drawn as the rectangle of the same size");
+      report.warning(at + "/extras/rtcli_area_light/shape",
+                     where + ": a " + shape + " area light is drawn as the rectangle of the same size");
   }
   const float sx = (*size)[0], sy = (*size)[1];
   RectLight light;
@@ -49,14 +51,15 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
 }
 
 void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, const std::string& where,
-                           Material& material, std::vector<std::string>& warnings) {
+                           const std::string& at, Material& material, Reporter& report) {
   if (!extras.IsObject() || !extras.Has("rtcli_bump")) return;
   const tinygltf::Value& b = extras.Get("rtcli_bump");
   if (!b.IsObject() || !b.Has("image") || !b.Get("image").IsString()) {
-    warnings.push_back(where + ": rtcli_bump needs an \"image\" file name; ignored");
+    report.warning(at + "/extras/rtcli_bump", where + ": rtcli_bump needs an \"image\" file name; ignored");
     return;
   }
-  material.bump.height = images.file_slot(b.Get("image").Get<std::string>(), where + " rtcli_bump");
+  material.bump.height =
+      images.file_slot(b.Get("image").Get<std::string>(), where + " rtcli_bump", at + "/extras/rtcli_bump/image");
   material.bump.strength = gltf_number(b, "strength").value_or(1.0f);
   material.bump.epsilon = std::max(0.0f, gltf_number(b, "epsilon").value_or(0.0f));
   // Blender's exporter wrote the Bump node's height image as a normal map: not one.

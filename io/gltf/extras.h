@@ -20,6 +20,7 @@
 
 #include "core/lights/rect_light.h"
 #include "core/material.h"
+#include "io/base/reporter.h"
 
 namespace tinygltf {
 class Value;
@@ -29,12 +30,12 @@ namespace rt {
 
 class ImageDecoder;
 
-// The area light a node's extras describe, or nullopt (none, or unusable: `warnings` says why).
+// The area light a node's extras describe, or nullopt (none, or unusable: a warning at `at` says why).
 std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, const std::string& where,
-                                                std::vector<std::string>& warnings);
+                                                const std::string& at, Reporter& report);
 
 // Applies a material's rtcli_bump extras, if any, to `material`.
 void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, const std::string& where,
-                           Material& material, std::vector<std::string>& warnings);
+                           const std::string& at, Material& material, Reporter& report);
 
 }  // namespace rt

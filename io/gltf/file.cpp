@@ -9,6 +9,7 @@
 #include "io/gltf/accessor.h"
 #include "io/gltf/supported_extensions.h"
 #include "io/json/document.h"
+#include "io/json/reader.h"
 
 namespace rt {
 namespace {
@@ -97,7 +98,7 @@ std::string outside_folder_message(const std::string& uri, const std::string& ba
 }
 
 GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& base_dir, const LoadLimits& limits,
-                    std::string& error) {
+                    Reporter& report) {
   GltfFile result;
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   // The JSON part: its size and nesting are checked before tinygltf builds a tree of it (which
@@ -105,24 +106,27 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
   std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   if (binary) {
     if (bytes.size() < 20) {
-      error = "a .glb file of " + std::to_string(bytes.size()) + " bytes is shorter than its 20-byte header";
+      report.error("", "a .glb file of " + std::to_string(bytes.size()) + " bytes is shorter than its 20-byte header");
       return result;
     }
     const uint32_t json_length = read_u32(bytes.data() + 12);
     if (json_length > bytes.size() - 20) {
-      error = "the .glb header announces " + std::to_string(json_length) + " bytes of JSON, but the file has only " +
-              std::to_string(bytes.size() - 20) + " after the header: the file is truncated";
+      report.error("", "the .glb header announces " + std::to_string(json_length) +
+                           " bytes of JSON, but the file has only " + std::to_string(bytes.size() - 20) +
+                           " after the header: the file is truncated");
       return result;
     }
     json = json.substr(20, json_length);
   }
   if (json.size() > limits.gltf_json_bytes) {
-    error = "its JSON is " + format_bytes(json.size()) + ", more than the " + format_bytes(limits.gltf_json_bytes) +
-            " a glTF file's JSON may have (store large buffers in .bin files or a .glb)";
+    report.error("", "its JSON is " + format_bytes(json.size()) + ", more than the " +
+                         format_bytes(limits.gltf_json_bytes) +
+                         " a glTF file's JSON may have (store large buffers in .bin files or a .glb)");
     return result;
   }
   if (!json_nesting_within(json, kMaxJsonNesting)) {
-    error = "expected JSON nested at most " + std::to_string(kMaxJsonNesting) + " levels deep, found deeper nesting";
+    report.error(
+        "", "expected JSON nested at most " + std::to_string(kMaxJsonNesting) + " levels deep, found deeper nesting");
     return result;
   }
 
@@ -148,27 +152,33 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
     err = e.what();
   }
   result.files = std::move(access.files);
-  if (!warn.empty()) result.warnings.push_back(clean(warn));
+  if (!warn.empty()) report.warning("", clean(warn));
   if (!ok) {
-    error = err.empty() ? "not a readable glTF file" : clean(err);
+    report.error("", err.empty() ? "not a readable glTF file" : clean(err));
     return result;
   }
-  for (const std::string& name : model->extensionsRequired) {
-    const auto& supported = supported_gltf_extensions();
+  // A .gltf is JSON text (now known to be well-formed): problems found from here on get its
+  // line:column and a caret, as a scene file's do. A .glb's JSON is inside a binary file.
+  if (!binary) report.find_places_with(json_places(std::make_shared<const std::string>(json)));
+  const auto& supported = supported_gltf_extensions();
+  for (size_t i = 0; i < model->extensionsRequired.size(); ++i) {
+    const std::string& name = model->extensionsRequired[i];
     if (std::find(supported.begin(), supported.end(), name) == supported.end()) {
-      error = "it requires the extension \"" + name + "\", which rtcli does not implement (extensionsRequired)";
+      report.error("/extensionsRequired/" + std::to_string(i),
+                   "it requires the extension \"" + name + "\", which rtcli does not implement (extensionsRequired)");
       return result;
     }
   }
   // An optional extension we do not implement leaves the file renderable: say what is ignored.
-  for (const std::string& name : model->extensionsUsed) {
-    const auto& supported = supported_gltf_extensions();
+  for (size_t i = 0; i < model->extensionsUsed.size(); ++i) {
+    const std::string& name = model->extensionsUsed[i];
     const bool required = std::find(model->extensionsRequired.begin(), model->extensionsRequired.end(), name) !=
                           model->extensionsRequired.end();
     if (!required && std::find(supported.begin(), supported.end(), name) == supported.end())
-      result.warnings.push_back("it uses the extension \"" + name + "\", which rtcli ignores (extensionsUsed)");
+      report.warning("/extensionsUsed/" + std::to_string(i),
+                     "it uses the extension \"" + name + "\", which rtcli ignores (extensionsUsed)");
   }
-  if (!check_buffer_views(*model, error)) return result;
+  if (!check_buffer_views(*model, report)) return result;
   result.model = std::move(model);
   return result;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 
 namespace tinygltf {
 class Model;
@@ -19,14 +20,14 @@ namespace rt {
 
 struct GltfFile {
   std::shared_ptr<const tinygltf::Model> model;
-  std::vector<std::string> files;     // every file read: the model and its external buffers
-  std::vector<std::string> warnings;  // from tinygltf, cleaned
+  std::vector<std::string> files;  // every file read: the model and its external buffers
 };
 
 // `bytes` are the whole file (.glb if they start with "glTF", else JSON text); external buffers
-// resolve against `base_dir`. On failure returns no model and sets `error`.
+// resolve against `base_dir`. Problems go to `report` (tinygltf's warnings cleaned), which from
+// then on finds line:column in a .gltf's text; on failure, no model.
 GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& base_dir, const LoadLimits& limits,
-                    std::string& error);
+                    Reporter& report);
 
 // The error for an image or buffer URI that leaves the model's folder (LoadLimits::outside_files).
 std::string outside_folder_message(const std::string& uri, const std::string& base_dir);

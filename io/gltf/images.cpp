@@ -32,28 +32,30 @@ std::string percent_decoded(const std::string& uri) {
 }
 
 ImageDecoder::ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits,
-                           LimitUsage& usage, ImportedModel& out)
-    : model_(model), base_dir_(base_dir), limits_(limits), usage_(usage), out_(out) {}
+                           LimitUsage& usage, ImportedModel& out, Reporter& report)
+    : model_(model), base_dir_(base_dir), limits_(limits), usage_(usage), out_(out), report_(report) {}
 
 TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where) {
   TextureSlot slot;
   int texcoord = ref.texcoord;
   if (ref.transform) {
-    read_transform(*ref.transform, slot.mapping, where);
+    read_transform(*ref.transform, slot.mapping, where, ref.pointer + "/extensions/KHR_texture_transform");
     if (ref.transform->Has("texCoord") && ref.transform->Get("texCoord").IsInt())
       texcoord = ref.transform->Get("texCoord").GetNumberAsInt();  // overrides the textureInfo's
   }
   slot.mapping.uv_set = texcoord == 1 ? 1u : 0u;
   if (texcoord < 0 || texcoord > 1)
-    out_.warnings.push_back(where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
+    report_.warning(ref.pointer + "/texCoord",
+                    where + ": TEXCOORD_" + to_string(texcoord) + " is not supported; TEXCOORD_0 used");
   if (ref.index < 0 || static_cast<size_t>(ref.index) >= model_.textures.size()) {
-    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " does not exist; ignored");
+    report_.warning(ref.pointer + "/index", where + ": texture " + to_string(ref.index) + " does not exist; ignored");
     return slot;
   }
   const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(ref.index)];
   read_sampler(texture.sampler, slot.mapping);
   if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
-    out_.warnings.push_back(where + ": texture " + to_string(ref.index) + " has no image; ignored");
+    report_.warning("/textures/" + to_string(ref.index) + "/source",
+                    where + ": texture " + to_string(ref.index) + " has no image; ignored");
     return slot;
   }
   slot.texture = decode(source_of(static_cast<size_t>(texture.source)), encoding, where);
@@ -75,12 +77,13 @@ void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {
   mapping.filter = nearest ? TextureFilter::kNearest : mipmapped ? TextureFilter::kTrilinear : TextureFilter::kBilinear;
 }
 
-void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapping, const std::string& where) {
+void ImageDecoder::read_transform(const tinygltf::Value& t, TextureMapping& mapping, const std::string& where,
+                                  const std::string& at) {
   const auto pair = [&](const char* key, Vec2& out) {
     if (!t.Has(key)) return;
     const auto v = gltf_numbers(t, key, 2);
     if (v) out = Vec2((*v)[0], (*v)[1]);
-    else out_.warnings.push_back(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
+    else report_.warning(at + "/" + key, where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
   };
   pair("offset", mapping.offset);
   pair("scale", mapping.scale);
@@ -100,17 +103,22 @@ std::span<const unsigned char> ImageDecoder::view_bytes(int index) const {
 ImageDecoder::Source ImageDecoder::source_of(size_t image_index) const {
   const tinygltf::Image& image = model_.images[image_index];
   const std::string name = "image " + to_string(image_index);
+  const std::string at = "/images/" + to_string(image_index);
   if (image.bufferView >= 0)
-    return {"view " + to_string(image.bufferView), name + " (buffer view " + to_string(image.bufferView) + ")",
-            view_bytes(image.bufferView), "", ""};
-  if (!image.image.empty()) return {name, name, image.image, "", ""};
-  if (!image.uri.empty()) return file_source(image.uri);
-  return {"", name, {}, "", ""};
+    return {"view " + to_string(image.bufferView),
+            name + " (buffer view " + to_string(image.bufferView) + ")",
+            view_bytes(image.bufferView),
+            "",
+            "",
+            at};
+  if (!image.image.empty()) return {name, name, image.image, "", "", at};
+  if (!image.uri.empty()) return file_source(image.uri, at + "/uri");
+  return {"", name, {}, "", "", at};
 }
 
-ImageDecoder::Source ImageDecoder::file_source(const std::string& uri) const {
+ImageDecoder::Source ImageDecoder::file_source(const std::string& uri, const std::string& pointer) const {
   const std::string path = resolve_path(base_dir_, percent_decoded(uri));
-  return {"file " + path, "\"" + path + "\"", {}, path, uri};
+  return {"file " + path, "\"" + path + "\"", {}, path, uri, pointer};
 }
 
 bool ImageDecoder::fit_in_budget() {
@@ -138,36 +146,37 @@ bool ImageDecoder::fit_in_budget() {
   }
   const uint64_t left = usage_.texels >= limits_.scene_texels ? 0 : limits_.scene_texels - usage_.texels;
   if (needed <= left) return true;
-  failure_ = "its textures' " + to_string(counted) + " images need " + to_string(needed) +
-             " texels with their mip levels (read from their headers), more than the " + to_string(left) +
-             " left of the scene's texture budget of " + to_string(limits_.scene_texels) + " texels";
-  over_limit_ = true;
+  report_.over_limit("/images", "its textures' " + to_string(counted) + " images need " + to_string(needed) +
+                                    " texels with their mip levels (read from their headers), more than the " +
+                                    to_string(left) + " left of the scene's texture budget of " +
+                                    to_string(limits_.scene_texels) + " texels");
+  failed_ = true;
   return false;
 }
 
 uint32_t ImageDecoder::decode(const Source& source, TextureEncoding encoding, const std::string& where) {
-  if (!failure_.empty()) return kNoTexture;
+  if (failed_) return kNoTexture;
   if (source.key.empty()) {
-    out_.warnings.push_back(where + ": " + source.name + " has no data; ignored");
+    report_.warning(source.pointer, where + ": " + source.name + " has no data; ignored");
     return kNoTexture;
   }
   const auto key = std::make_pair(source.key, encoding);
   if (const auto it = decoded_.find(key); it != decoded_.end()) return it->second;
   uint32_t texture = kNoTexture;
   if (source.path.empty() && source.bytes.empty()) {
-    out_.warnings.push_back(where + ": " + source.name + " holds no image; ignored");
+    report_.warning(source.pointer, where + ": " + source.name + " holds no image; ignored");
   } else if (source.path.empty()) {
-    texture = decode_bytes(source.bytes, source.name, encoding, where);
+    texture = decode_bytes(source.bytes, source, encoding, where);
   } else if (const auto file = read_file(source, where)) {
-    texture = decode_bytes(*file, source.name, encoding, where);
+    texture = decode_bytes(*file, source, encoding, where);
   }
-  if (failure_.empty()) decoded_.emplace(key, texture);
+  if (!failed_) decoded_.emplace(key, texture);
   return texture;
 }
 
-TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where) {
+TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& where, const std::string& at) {
   TextureSlot slot;
-  slot.texture = decode(file_source(uri), TextureEncoding::kLinear, where);
+  slot.texture = decode(file_source(uri, at), TextureEncoding::kLinear, where);
   return slot;
 }
 
@@ -175,13 +184,14 @@ TextureSlot ImageDecoder::file_slot(const std::string& uri, const std::string& w
 // model must not show the user's other files in its render.
 std::optional<std::vector<unsigned char>> ImageDecoder::read_file(const Source& source, const std::string& where) {
   if (!limits_.outside_files && !is_inside_folder(source.path, base_dir_)) {
-    failure_ = where + ": " + outside_folder_message(source.uri, base_dir_);
+    report_.error(source.pointer, where + ": " + outside_folder_message(source.uri, base_dir_));
+    failed_ = true;
     return std::nullopt;
   }
   std::string error;
   auto file = read_input_bytes(source.path, kMaxTextureFileBytes, error);
   if (!file) {
-    out_.warnings.push_back(where + ": cannot read " + source.name + " (" + error + "); ignored");
+    report_.warning(source.pointer, where + ": cannot read " + source.name + " (" + error + "); ignored");
     return std::nullopt;
   }
   if (std::find(out_.files.begin(), out_.files.end(), source.path) == out_.files.end())
@@ -189,16 +199,17 @@ std::optional<std::vector<unsigned char>> ImageDecoder::read_file(const Source& 
   return file;
 }
 
-uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const std::string& name,
+uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const Source& source,
                                     TextureEncoding encoding, const std::string& where) {
+  const std::string& source_pointer = source.pointer;
   TextureError error;
-  auto texture = decode_texture(bytes, name, encoding, limits_, usage_, error);
+  auto texture = decode_texture(bytes, source.name, encoding, limits_, usage_, error);
   if (!texture) {
     if (error.over_budget) {
-      failure_ = where + ": " + error.message;
-      over_limit_ = true;
+      report_.over_limit(source_pointer, where + ": " + error.message);
+      failed_ = true;
     } else {
-      out_.warnings.push_back(where + ": " + error.message + "; ignored");
+      report_.warning(source_pointer, where + ": " + error.message + "; ignored");
     }
     return kNoTexture;
   }

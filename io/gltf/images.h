@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 #include "io/gltf/imported_model.h"
 #include "io/image/texture_file.h"
 
@@ -33,27 +34,29 @@ struct GltfTextureRef {
   int index = -1;
   int texcoord = 0;
   const tinygltf::Value* transform = nullptr;  // its KHR_texture_transform object, if any
+  std::string pointer;                         // where the textureInfo is ("/materials/0/normalTexture")
 };
 
 class ImageDecoder {
  public:
+  // Problems go to `report`: unusable images are warnings (the material renders without them), a
+  // file outside the model's folder is an error, and the texel budget stops the import.
   ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits, LimitUsage& usage,
-               ImportedModel& out);
+               ImportedModel& out, Reporter& report);
 
   // The slot for a material's texture: its image decoded as `encoding` (colour is sRGB, normal
   // and metallic-roughness maps are data, alpha masks read the alpha channel), its UV set, its
   // sampler's wrap and filter modes and its KHR_texture_transform.
   TextureSlot slot(const GltfTextureRef& ref, TextureEncoding encoding, const std::string& where);
-  // A data slot for an image file beside the glTF file (rtcli's extras), decoded once.
-  TextureSlot file_slot(const std::string& uri, const std::string& where);
+  // A data slot for an image file beside the glTF file (rtcli's extras, at pointer `at`), decoded once.
+  TextureSlot file_slot(const std::string& uri, const std::string& where, const std::string& at);
 
   // Whether the images the file's textures use, each source once and sized from its header, fit
-  // in what is left of the scene's texel budget; if not, failure() says so. Before decoding any.
+  // in what is left of the scene's texel budget; if not, it is reported. Before decoding any.
   bool fit_in_budget();
 
-  // Why the import must stop, or empty; whether that is the scene's texel budget.
-  const std::string& failure() const { return failure_; }
-  bool failure_is_over_limit() const { return over_limit_; }
+  // Whether the import must stop (a file outside the folder, the texel budget): reported.
+  bool failed() const { return failed_; }
 
  private:
   // Where an image's bytes are: the key images share a texture by (one per encoding), the name
@@ -64,31 +67,33 @@ class ImageDecoder {
     std::span<const unsigned char> bytes;  // a buffer view's or a data URI's
     std::string path;                      // or a file's, resolved against the model's folder
     std::string uri;                       // the file's URI, as the model writes it
+    std::string pointer;                   // the image's ("/images/2"), or the extras' naming the file
   };
   Source source_of(size_t image_index) const;
-  Source file_source(const std::string& uri) const;
+  Source file_source(const std::string& uri, const std::string& pointer) const;
 
   // The texture decoded from `source` as `encoding`: decoded the first time, shared after.
   uint32_t decode(const Source& source, TextureEncoding encoding, const std::string& where);
-  // A file's bytes, if it is in the model's folder (failure() otherwise) and readable (a warning
+  // A file's bytes, if it is in the model's folder (an error otherwise) and readable (a warning
   // otherwise).
   std::optional<std::vector<unsigned char>> read_file(const Source& source, const std::string& where);
-  uint32_t decode_bytes(std::span<const unsigned char> bytes, const std::string& name, TextureEncoding encoding,
+  uint32_t decode_bytes(std::span<const unsigned char> bytes, const Source& source, TextureEncoding encoding,
                         const std::string& where);
   // A buffer view's bytes (empty if it has none).
   std::span<const unsigned char> view_bytes(int view) const;
   void read_sampler(int sampler, TextureMapping& mapping);
-  void read_transform(const tinygltf::Value& transform, TextureMapping& mapping, const std::string& where);
+  void read_transform(const tinygltf::Value& transform, TextureMapping& mapping, const std::string& where,
+                      const std::string& at);
 
   const tinygltf::Model& model_;
   const std::string& base_dir_;
   const LoadLimits& limits_;
   LimitUsage& usage_;
   ImportedModel& out_;
+  Reporter& report_;
   // Per source key and encoding: its texture, or kNoTexture if unusable.
   std::map<std::pair<std::string, TextureEncoding>, uint32_t> decoded_;
-  std::string failure_;
-  bool over_limit_ = false;
+  bool failed_ = false;
 };
 
 }  // namespace rt

@@ -46,14 +46,14 @@ struct ImportedModel {
   std::vector<Material> materials;          // per glTF material (io/gltf/materials.h); texture slots index `textures`
   std::vector<std::string> material_names;  // per glTF material, as the file names them ("" if not)
   std::vector<Texture> textures;            // the images the materials use, decoded once per encoding
-  std::vector<std::string> warnings;
-  std::vector<std::string> files;  // every file read: the model and its external buffers
+  std::vector<std::string> files;           // every file read: the model and its external buffers
 };
 
+// Not a problem in the file but in the request: the file has no mesh of the name asked for.
+// (Problems in the file go to the import's Reporter.)
 struct ImportError {
-  std::string message;        // completes "could not be loaded: ..." or "has no mesh named ..."
-  bool unknown_mesh = false;  // the file loaded, but has no mesh of the requested name
-  bool over_limit = false;    // the file is fine, but the scene's limits have no room for it
+  bool unknown_mesh = false;
+  std::string message;  // "its meshes are "a", "b""
 };
 
 }  // namespace rt

@@ -40,13 +40,12 @@ std::vector<uint32_t> to_triangle_list(std::vector<uint32_t> v, int mode) {
 class Importer {
  public:
   Importer(const tinygltf::Model& model, const LoadLimits& limits, LimitUsage& usage, ImportedModel& out,
-           ImportError& error)
+           Reporter& report)
       : model_(model),
         limits_(limits),
         usage_(usage),
         out_(out),
-        import_error_(error),
-        error_(error.message),
+        report_(report),
         imported_(model.meshes.size(), false) {
     out_.meshes.resize(model.meshes.size());
   }
@@ -59,7 +58,8 @@ class Importer {
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         const std::string where = "mesh " + to_string(index) + (mesh.name.empty() ? "" : " (\"" + mesh.name + "\")") +
                                   " primitive " + to_string(p);
-        if (!import_primitive(mesh.primitives[p], where, out_.meshes[index])) return false;
+        const std::string at = "/meshes/" + to_string(index) + "/primitives/" + to_string(p);
+        if (!import_primitive(mesh.primitives[p], where, at, out_.meshes[index])) return false;
       }
     }
     return true;
@@ -77,21 +77,21 @@ class Importer {
   }
 
  private:
-  bool fail(const std::string& message) {
-    error_ = message;
+  bool fail(const std::string& pointer, const std::string& message) {
+    report_.error(pointer, message);
     return false;
   }
 
   // The primitive's vertices and triangles, from its accessors' counts, against what the scene
   // has left: checked before anything is read, so that many primitives sharing one huge
   // accessor stop at the first that does not fit.
-  bool reserve(MeshCost cost, const std::string& where) {
+  bool reserve(MeshCost cost, const std::string& where, const std::string& at) {
     const uint64_t vertices = cost.vertices, triangles = cost.triangles;
     const auto over = [&](const char* what, uint64_t limit, uint64_t used, uint64_t wanted) {
-      import_error_.over_limit = true;
-      return fail(where + ": expected at most " + to_string(limit) + " " + what + " in a scene's meshes, found " +
-                  to_string(wanted) + " here" +
-                  (used ? " after " + to_string(used) + " in the meshes before it" : std::string()));
+      report_.over_limit(at, where + ": expected at most " + to_string(limit) + " " + what +
+                                 " in a scene's meshes, found " + to_string(wanted) + " here" +
+                                 (used ? " after " + to_string(used) + " in the meshes before it" : std::string()));
+      return false;
     };
     if (vertices > limits_.vertices || usage_.vertices > limits_.vertices - vertices)
       return over("vertices", limits_.vertices, usage_.vertices, vertices);
@@ -102,37 +102,42 @@ class Importer {
     return true;
   }
 
-  bool import_primitive(const tinygltf::Primitive& prim, const std::string& where,
+  bool import_primitive(const tinygltf::Primitive& prim, const std::string& where, const std::string& at,
                         std::vector<ImportedPrimitive>& out) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-      out_.warnings.push_back(where + ": points and lines are not rendered; primitive skipped");
+      report_.warning(at + "/mode", where + ": points and lines are not rendered; primitive skipped");
       return true;
     }
     const auto pos_it = prim.attributes.find("POSITION");
     if (pos_it == prim.attributes.end()) {
-      out_.warnings.push_back(where + ": no POSITION attribute; primitive skipped");
+      report_.warning(at + "/attributes", where + ": no POSITION attribute; primitive skipped");
       return true;
     }
+    // Who reads an attribute's accessor: its message context and the pointer naming it.
+    const auto use = [&](const std::string& attribute) {
+      return AccessorUse{report_, where + " " + attribute + ": ", at + "/attributes/" + attribute};
+    };
+    const auto accessor_at = [](int index) { return "/accessors/" + to_string(index); };
     ImportedPrimitive ip;
     ip.material = prim.material;
     if (prim.material >= static_cast<int>(model_.materials.size()))
-      return fail(where + ": material " + to_string(prim.material) + " does not exist");
-    if (!reserve(primitive_cost(model_, prim), where)) return false;
+      return fail(at + "/material", where + ": material " + to_string(prim.material) + " does not exist");
+    if (!reserve(primitive_cost(model_, prim), where, at)) return false;
     std::vector<float> raw;
-    if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, error_))
-      return fail(where + " POSITION: " + error_);
+    if (!read_float_accessor(model_, pos_it->second, 3, limits_.vertices, raw, use("POSITION"))) return false;
     const size_t n = raw.size() / 3;
     ip.mesh.positions.resize(n);
     for (size_t i = 0; i < n; ++i) {
       ip.mesh.positions[i] = Vec3(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
       if (!is_finite(ip.mesh.positions[i]))
-        return fail(where + " POSITION: vertex " + to_string(i) + " is not a finite point in single precision");
+        return fail(accessor_at(pos_it->second),
+                    where + " POSITION: vertex " + to_string(i) + " is not a finite point in single precision");
     }
     if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-      if (!read_float_accessor(model_, it->second, 3, limits_.vertices, raw, error_))
-        return fail(where + " NORMAL: " + error_);
-      if (raw.size() / 3 != n) return fail(where + ": NORMAL and POSITION counts differ");
+      if (!read_float_accessor(model_, it->second, 3, limits_.vertices, raw, use("NORMAL"))) return false;
+      if (raw.size() / 3 != n)
+        return fail(accessor_at(it->second) + "/count", where + ": NORMAL and POSITION counts differ");
       ip.mesh.normals.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const Vec3 v(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
@@ -143,9 +148,9 @@ class Importer {
     for (const auto& [name, uvs] : {std::pair{"TEXCOORD_0", &ip.mesh.uvs}, std::pair{"TEXCOORD_1", &ip.mesh.uvs1}}) {
       const auto it = prim.attributes.find(name);
       if (it == prim.attributes.end()) continue;
-      if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, error_))
-        return fail(where + " " + name + ": " + error_);
-      if (raw.size() / 2 != n) return fail(where + ": " + name + " and POSITION counts differ");
+      if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, use(name))) return false;
+      if (raw.size() / 2 != n)
+        return fail(accessor_at(it->second) + "/count", where + ": " + name + " and POSITION counts differ");
       uvs->resize(n);
       for (size_t i = 0; i < n; ++i) (*uvs)[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
     }
@@ -155,10 +160,9 @@ class Importer {
                                      model_.accessors[static_cast<size_t>(it->second)].type == TINYGLTF_TYPE_VEC3
                                  ? 3
                                  : 4;
-      if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, error_))
-        return fail(where + " COLOR_0: " + error_);
+      if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, use("COLOR_0"))) return false;
       if (raw.size() / static_cast<size_t>(components) != n)
-        return fail(where + ": COLOR_0 and POSITION counts differ");
+        return fail(accessor_at(it->second) + "/count", where + ": COLOR_0 and POSITION counts differ");
       ip.mesh.colors.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const float* c = &raw[static_cast<size_t>(components) * i];
@@ -167,9 +171,9 @@ class Importer {
       }
     }
     if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
-      if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, error_))
-        return fail(where + " TANGENT: " + error_);
-      if (raw.size() / 4 != n) return fail(where + ": TANGENT and POSITION counts differ");
+      if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, use("TANGENT"))) return false;
+      if (raw.size() / 4 != n)
+        return fail(accessor_at(it->second) + "/count", where + ": TANGENT and POSITION counts differ");
       ip.mesh.tangents.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const Vec3 t(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
@@ -184,15 +188,16 @@ class Importer {
     if (prim.indices >= 0) {
       // A strip or fan of k indices makes k - 2 triangles; a list, k / 3.
       const uint64_t max_indices = mode == TINYGLTF_MODE_TRIANGLES ? 3 * limits_.triangles : limits_.triangles + 2;
-      if (!read_index_accessor(model_, prim.indices, max_indices, n, indices, error_))
-        return fail(where + " indices: " + error_);
+      if (!read_index_accessor(model_, prim.indices, max_indices, n, indices,
+                               AccessorUse{report_, where + " indices: ", at + "/indices"}))
+        return false;
     } else {
       indices.resize(n);
       for (size_t i = 0; i < n; ++i) indices[i] = static_cast<uint32_t>(i);
     }
     ip.mesh.indices = to_triangle_list(std::move(indices), mode);
     if (ip.mesh.indices.empty()) {
-      out_.warnings.push_back(where + ": no complete triangle; primitive skipped");
+      report_.warning(at, where + ": no complete triangle; primitive skipped");
       return true;
     }
     out.push_back(std::move(ip));
@@ -203,8 +208,7 @@ class Importer {
   const LoadLimits& limits_;
   LimitUsage& usage_;
   ImportedModel& out_;
-  ImportError& import_error_;
-  std::string& error_;
+  Reporter& report_;
   std::vector<bool> imported_;
 };
 
@@ -214,43 +218,45 @@ class Importer {
 // otherwise double the work at every level).
 // node_map receives, per file node, its index in out.nodes (-1: not in the scene).
 bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, const LoadLimits& limits,
-                 Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map, std::string& error) {
+                 const std::string& scene_at, Importer& importer, ImportedModel& out, std::vector<int32_t>& node_map,
+                 Reporter& report) {
   const size_t count = model.nodes.size();
-  if (count > limits.nodes) {
-    error = "it has " + to_string(count) + " nodes, more than the " + to_string(limits.nodes) + " rtcli accepts";
+  const auto fail = [&](const std::string& pointer, const std::string& message) {
+    report.error(pointer, message);
     return false;
-  }
+  };
+  if (count > limits.nodes)
+    return fail("/nodes",
+                "it has " + to_string(count) + " nodes, more than the " + to_string(limits.nodes) + " rtcli accepts");
   std::vector<int> parent(count, -1);
   for (size_t i = 0; i < count; ++i) {
-    for (const int child : model.nodes[i].children) {
-      if (child < 0 || static_cast<size_t>(child) >= count) {
-        error = "node " + to_string(i) + " lists child " + to_string(child) + ", which does not exist";
-        return false;
-      }
-      if (static_cast<size_t>(child) == i || parent[static_cast<size_t>(child)] >= 0) {
-        error = "node " + to_string(child) + " is a child of node " + to_string(i) +
-                (static_cast<size_t>(child) == i ? " itself"
-                                                 : " and of node " + to_string(parent[static_cast<size_t>(child)])) +
-                "; glTF requires every node to have at most one parent";
-        return false;
-      }
+    const std::vector<int>& children = model.nodes[i].children;
+    for (size_t c = 0; c < children.size(); ++c) {
+      const int child = children[c];
+      const std::string child_at = "/nodes/" + to_string(i) + "/children/" + to_string(c);
+      if (child < 0 || static_cast<size_t>(child) >= count)
+        return fail(child_at, "node " + to_string(i) + " lists child " + to_string(child) + ", which does not exist");
+      if (static_cast<size_t>(child) == i || parent[static_cast<size_t>(child)] >= 0)
+        return fail(child_at, "node " + to_string(child) + " is a child of node " + to_string(i) +
+                                  (static_cast<size_t>(child) == i
+                                       ? " itself"
+                                       : " and of node " + to_string(parent[static_cast<size_t>(child)])) +
+                                  "; glTF requires every node to have at most one parent");
       parent[static_cast<size_t>(child)] = static_cast<int>(i);
     }
   }
   std::vector<bool> is_root(count, false);
-  for (const int root : scene.nodes) {
-    if (root < 0 || static_cast<size_t>(root) >= count) {
-      error = "the scene lists node " + to_string(root) + ", which does not exist";
-      return false;
-    }
-    if (parent[static_cast<size_t>(root)] >= 0 || is_root[static_cast<size_t>(root)]) {
-      error = "the scene lists node " + to_string(root) +
-              (is_root[static_cast<size_t>(root)]
-                   ? " twice"
-                   : ", which is a child of node " + to_string(parent[static_cast<size_t>(root)])) +
-              "; glTF requires the scene's nodes to be distinct roots";
-      return false;
-    }
+  for (size_t r = 0; r < scene.nodes.size(); ++r) {
+    const int root = scene.nodes[r];
+    const std::string root_at = scene_at + "/nodes/" + to_string(r);
+    if (root < 0 || static_cast<size_t>(root) >= count)
+      return fail(root_at, "the scene lists node " + to_string(root) + ", which does not exist");
+    if (parent[static_cast<size_t>(root)] >= 0 || is_root[static_cast<size_t>(root)])
+      return fail(root_at, "the scene lists node " + to_string(root) +
+                               (is_root[static_cast<size_t>(root)]
+                                    ? " twice"
+                                    : ", which is a child of node " + to_string(parent[static_cast<size_t>(root)])) +
+                               "; glTF requires the scene's nodes to be distinct roots");
     is_root[static_cast<size_t>(root)] = true;
   }
   // Every node is reached at most once: from its only parent, or as a root without one. Nodes in
@@ -265,10 +271,10 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     const Item item = stack.back();
     stack.pop_back();
     const tinygltf::Node& node = model.nodes[static_cast<size_t>(item.node)];
-    if (node.mesh >= static_cast<int>(model.meshes.size())) {
-      error = "node " + to_string(item.node) + " uses mesh " + to_string(node.mesh) + ", which does not exist";
-      return false;
-    }
+    const std::string node_at = "/nodes/" + to_string(item.node);
+    if (node.mesh >= static_cast<int>(model.meshes.size()))
+      return fail(node_at + "/mesh",
+                  "node " + to_string(item.node) + " uses mesh " + to_string(node.mesh) + ", which does not exist");
     if (node.mesh >= 0 && !importer.import_mesh(static_cast<size_t>(node.mesh))) return false;
     ImportedNode imported;
     imported.name = node.name;
@@ -276,10 +282,12 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
     imported.mesh = node.mesh;
     imported.gltf_index = item.node;
     read_node_transform(node, imported);
-    if (node.mesh >= 0 && !import_instancing(model, node, limits, imported, error)) return false;
+    if (node.mesh >= 0 && !import_instancing(model, node, node_at, limits, imported, report)) return false;
     const auto index = static_cast<int32_t>(out.nodes.size());
-    if (!import_camera(model, node, index, out, error) || !import_light(model, node, index, out, error)) return false;
-    if (auto area = area_light_from_extras(node.extras, "node \"" + node.name + "\"", out.warnings))
+    if (!import_camera(model, node, node_at, index, out, report) ||
+        !import_light(model, node, node_at, index, out, report))
+      return false;
+    if (auto area = area_light_from_extras(node.extras, "node \"" + node.name + "\"", node_at, report))
       out.lights.push_back(LightPlacement{*area, index});
     node_map[static_cast<size_t>(item.node)] = index;
     out.nodes.push_back(std::move(imported));
@@ -292,38 +300,26 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
 
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
                                                const std::optional<std::string>& mesh_name, const LoadLimits& limits,
-                                               LimitUsage& usage, ImportError& import_error) {
-  std::string& error = import_error.message;
-  GltfFile file = parse_gltf(bytes, base_dir, limits, error);
+                                               LimitUsage& usage, Reporter& report, ImportError& import_error) {
+  GltfFile file = parse_gltf(bytes, base_dir, limits, report);
   ImportedModel out;
   out.files = std::move(file.files);
-  out.warnings = std::move(file.warnings);
   if (!file.model) return std::nullopt;
   const tinygltf::Model& model = *file.model;
-  ImageDecoder images(model, base_dir, limits, usage, out);
-  if (!images.fit_in_budget()) {
-    import_error.over_limit = true;
-    error = images.failure();
-    return std::nullopt;
-  }
+  ImageDecoder images(model, base_dir, limits, usage, out, report);
+  if (!images.fit_in_budget()) return std::nullopt;
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
     const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
-    out.materials.push_back(import_material(m, images, where, out.warnings));
-    apply_material_extras(m.extras, images, where, out.materials.back(), out.warnings);
+    const std::string at = "/materials/" + to_string(i);
+    out.materials.push_back(import_material(m, images, where, at, report));
+    apply_material_extras(m.extras, images, where, at, out.materials.back(), report);
     out.material_names.push_back(m.name);
-    if (!images.failure().empty()) {
-      import_error.over_limit = images.failure_is_over_limit();
-      error = images.failure();
-      return std::nullopt;
-    }
+    if (images.failed()) return std::nullopt;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
-  if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, error)) {
-    import_error.over_limit = true;
-    return std::nullopt;
-  }
-  Importer importer(model, limits, usage, out, import_error);
+  if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, report)) return std::nullopt;
+  Importer importer(model, limits, usage, out, report);
 
   if (mesh_name) {
     std::string names;
@@ -336,12 +332,12 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     }
     if (model.meshes.size() > 20) names += ", ...";
     import_error.unknown_mesh = true;
-    error = "its meshes are " + (names.empty() ? std::string("none") : names);
+    import_error.message = "its meshes are " + (names.empty() ? std::string("none") : names);
     return std::nullopt;
   }
 
   if (scene >= static_cast<int>(model.scenes.size())) {
-    error = "its default scene " + to_string(scene) + " does not exist";
+    report.error("/scene", "its default scene " + to_string(scene) + " does not exist");
     return std::nullopt;
   }
   if (scene < 0) {
@@ -350,9 +346,10 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     return out;
   }
   std::vector<int32_t> node_map(model.nodes.size(), -1);
-  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, importer, out, node_map, error))
+  if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, "/scenes/" + to_string(scene), importer,
+                   out, node_map, report))
     return std::nullopt;
-  if (!import_animations(model, node_map, limits, usage, out, import_error)) return std::nullopt;
+  if (!import_animations(model, node_map, limits, usage, out, report)) return std::nullopt;
   return out;
 }
 
@@ -371,11 +368,16 @@ std::vector<ModelPlacement> placements(const ImportedModel& model) {
 }
 
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         const LoadLimits& limits, LimitUsage& usage, ImportError& error) {
-  auto bytes = read_input_bytes(path, limits.gltf_total_bytes, error.message);
-  if (!bytes) return std::nullopt;
+                                         const LoadLimits& limits, LimitUsage& usage, Reporter& report,
+                                         ImportError& error) {
+  std::string why;
+  auto bytes = read_input_bytes(path, limits.gltf_total_bytes, why);
+  if (!bytes) {
+    report.error("", why);
+    return std::nullopt;
+  }
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, usage, error);
+  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, usage, report, error);
   if (model) model->files.insert(model->files.begin(), path);
   return model;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 #include "io/gltf/imported_model.h"
 
 namespace rt {
@@ -21,19 +22,16 @@ std::vector<ModelPlacement> placements(const ImportedModel& model);
 // With mesh_name: that mesh only, on one node with an identity transform. Without: every mesh the file's
 // default scene places, at its node transforms (or every mesh once if the file has no scene).
 // Vertices, triangles, texels and animation keys are checked against what `usage` says the scene
-// has left of `limits` before they are read or decoded, and added to it.
+// has left of `limits` before they are read or decoded, and added to it. Every problem and
+// warning goes to `report` (a reporter on the glTF file: its pointers, and a .gltf's
+// line:column); one past a limit stops the import (report.stopped_by_limit()).
 std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                         const LoadLimits& limits, LimitUsage& usage, ImportError& error);
-// A model on its own: nothing else counts against the limits.
-inline std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
-                                                const LoadLimits& limits, ImportError& error) {
-  LimitUsage usage;
-  return import_gltf(path, mesh_name, limits, usage, error);
-}
+                                         const LoadLimits& limits, LimitUsage& usage, Reporter& report,
+                                         ImportError& error);
 
 // The same from the file's bytes already in memory; external buffers resolve against base_dir.
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
                                                const std::optional<std::string>& mesh_name, const LoadLimits& limits,
-                                               LimitUsage& usage, ImportError& error);
+                                               LimitUsage& usage, Reporter& report, ImportError& error);
 
 }  // namespace rt

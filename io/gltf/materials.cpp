@@ -15,8 +15,8 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
   return it != extensions.end() && it->second.IsObject() ? &it->second : nullptr;
 }
 
-GltfTextureRef texture_ref(int index, int texcoord, const tinygltf::ExtensionMap& extensions) {
-  return GltfTextureRef{index, texcoord, extension(extensions, "KHR_texture_transform")};
+GltfTextureRef texture_ref(int index, int texcoord, const tinygltf::ExtensionMap& extensions, std::string pointer) {
+  return GltfTextureRef{index, texcoord, extension(extensions, "KHR_texture_transform"), std::move(pointer)};
 }
 
 Vec3 clamped01(Vec3 v) { return glm::clamp(v, Vec3(0.0f), Vec3(1.0f)); }
@@ -24,7 +24,7 @@ Vec3 clamped01(Vec3 v) { return glm::clamp(v, Vec3(0.0f), Vec3(1.0f)); }
 }  // namespace
 
 Material import_material(const tinygltf::Material& m, ImageDecoder& images, const std::string& where,
-                         std::vector<std::string>& warnings) {
+                         const std::string& at, Reporter& report) {
   const auto& pbr = m.pbrMetallicRoughness;
   Material out;
   float alpha = 1.0f;
@@ -40,16 +40,19 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   out.pbr.roughness = static_cast<float>(pbr.roughnessFactor);
   const auto& base = pbr.baseColorTexture;
   if (base.index >= 0)
-    out.texture = images.slot(texture_ref(base.index, base.texCoord, base.extensions), TextureEncoding::kSrgb,
-                              where + " baseColorTexture");
+    out.texture = images.slot(
+        texture_ref(base.index, base.texCoord, base.extensions, at + "/pbrMetallicRoughness/baseColorTexture"),
+        TextureEncoding::kSrgb, where + " baseColorTexture");
   const auto& mr = pbr.metallicRoughnessTexture;
   if (mr.index >= 0)
-    out.pbr.texture = images.slot(texture_ref(mr.index, mr.texCoord, mr.extensions), TextureEncoding::kLinear,
-                                  where + " metallicRoughnessTexture");
+    out.pbr.texture = images.slot(
+        texture_ref(mr.index, mr.texCoord, mr.extensions, at + "/pbrMetallicRoughness/metallicRoughnessTexture"),
+        TextureEncoding::kLinear, where + " metallicRoughnessTexture");
   const auto& normal = m.normalTexture;
   if (normal.index >= 0) {
-    out.normal_map.map = images.slot(texture_ref(normal.index, normal.texCoord, normal.extensions),
-                                     TextureEncoding::kLinear, where + " normalTexture");
+    out.normal_map.map =
+        images.slot(texture_ref(normal.index, normal.texCoord, normal.extensions, at + "/normalTexture"),
+                    TextureEncoding::kLinear, where + " normalTexture");
     out.normal_map.scale = static_cast<float>(normal.scale);
   }
 
@@ -63,8 +66,9 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   if (!is_finite(out.emission)) out.emission = Vec3(0.0f);
   const auto& emissive = m.emissiveTexture;
   if (emissive.index >= 0 && out.emission != Vec3(0.0f))
-    out.emission_texture = images.slot(texture_ref(emissive.index, emissive.texCoord, emissive.extensions),
-                                       TextureEncoding::kSrgb, where + " emissiveTexture");
+    out.emission_texture =
+        images.slot(texture_ref(emissive.index, emissive.texCoord, emissive.extensions, at + "/emissiveTexture"),
+                    TextureEncoding::kSrgb, where + " emissiveTexture");
 
   // Refraction: transmission with its index, and the volume's absorption inside.
   bool ior_given = false;
@@ -76,7 +80,8 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   if (const auto* t = extension(m.extensions, "KHR_materials_transmission")) {
     out.transmission = Vec3(std::clamp(gltf_number(*t, "transmissionFactor").value_or(0.0f), 0.0f, 1.0f));
     if (t->Has("transmissionTexture"))
-      warnings.push_back(where + ": KHR_materials_transmission's transmissionTexture is not used; the factor is");
+      report.warning(at + "/extensions/KHR_materials_transmission/transmissionTexture",
+                     where + ": KHR_materials_transmission's transmissionTexture is not used; the factor is");
   }
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
     const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);
@@ -92,8 +97,9 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
     out.cutout.cutoff = m.alphaMode == "MASK" ? static_cast<float>(m.alphaCutoff) : 0.5f;
     out.cutout.factor = m.alphaMode == "MASK" ? alpha : 1.0f;
     if (base.index >= 0) {
-      out.cutout.texture = images.slot(texture_ref(base.index, base.texCoord, base.extensions), TextureEncoding::kAlpha,
-                                       where + " baseColorTexture (alpha)");
+      out.cutout.texture = images.slot(
+          texture_ref(base.index, base.texCoord, base.extensions, at + "/pbrMetallicRoughness/baseColorTexture"),
+          TextureEncoding::kAlpha, where + " baseColorTexture (alpha)");
       out.cutout.texture.mapping.filter = out.texture.mapping.filter;
     }
     if (m.alphaMode == "BLEND" && alpha < 1.0f) {

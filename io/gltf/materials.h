@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/material.h"
+#include "io/base/reporter.h"
 
 namespace tinygltf {
 struct Material;
@@ -29,8 +30,9 @@ namespace rt {
 
 class ImageDecoder;
 
-// `where` names the material in warnings (unsupported parts, unusable textures).
+// `where` names the material in messages and `at` is its pointer ("/materials/2"): what it uses
+// but rtcli does not (a transmission texture) and unusable textures are warnings there.
 Material import_material(const tinygltf::Material& m, ImageDecoder& images, const std::string& where,
-                         std::vector<std::string>& warnings);
+                         const std::string& at, Reporter& report);
 
 }  // namespace rt

@@ -50,7 +50,7 @@ std::vector<bool> meshes_used(const tinygltf::Model& model, const std::optional<
 }
 
 bool meshes_fit(const tinygltf::Model& model, const std::vector<bool>& used, const LoadLimits& limits,
-                const LimitUsage& usage, std::string& error) {
+                const LimitUsage& usage, Reporter& report) {
   MeshCost total;
   for (size_t m = 0; m < model.meshes.size(); ++m) {
     if (!used[m]) continue;
@@ -61,9 +61,10 @@ bool meshes_fit(const tinygltf::Model& model, const std::vector<bool>& used, con
     }
   }
   const auto over = [&](const char* what, uint64_t limit, uint64_t taken, uint64_t wanted) {
-    error = "expected at most " + to_string(limit) + " " + what + " in a scene's meshes, found " + to_string(wanted) +
-            " in this file's (counted from their accessors, before reading them)" +
-            (taken ? " after " + to_string(taken) + " in the meshes before it" : std::string());
+    report.over_limit("/meshes",
+                      "expected at most " + to_string(limit) + " " + what + " in a scene's meshes, found " +
+                          to_string(wanted) + " in this file's (counted from their accessors, before reading them)" +
+                          (taken ? " after " + to_string(taken) + " in the meshes before it" : std::string()));
     return false;
   };
   if (total.vertices + usage.vertices > limits.vertices)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 
 namespace tinygltf {
 class Model;
@@ -28,8 +29,8 @@ MeshCost primitive_cost(const tinygltf::Model& model, const tinygltf::Primitive&
 // scene's nodes use (`scene` < 0: the file has none, so all of them).
 std::vector<bool> meshes_used(const tinygltf::Model& model, const std::optional<std::string>& mesh_name, int scene);
 
-// Whether the used meshes fit in what `usage` leaves of `limits`; if not, why, in `error`.
+// Whether the used meshes fit in what `usage` leaves of `limits`; if not, reported (over_limit).
 bool meshes_fit(const tinygltf::Model& model, const std::vector<bool>& used, const LoadLimits& limits,
-                const LimitUsage& usage, std::string& error);
+                const LimitUsage& usage, Reporter& report);
 
 }  // namespace rt

@@ -36,11 +36,12 @@ void read_node_transform(const tinygltf::Node& node, ImportedNode& out) {
 }
 
 // glTF cameras look down their node's -Z with +Y up; only perspective projection is rendered.
-bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, int32_t index, ImportedModel& out,
-                   std::string& error) {
+bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, const std::string& at, int32_t index,
+                   ImportedModel& out, Reporter& report) {
   if (node.camera < 0) return true;
   if (static_cast<size_t>(node.camera) >= model.cameras.size()) {
-    error = "node \"" + node.name + "\" uses camera " + to_string(node.camera) + ", which does not exist";
+    report.error(at + "/camera",
+                 "node \"" + node.name + "\" uses camera " + to_string(node.camera) + ", which does not exist");
     return false;
   }
   const tinygltf::Camera& c = model.cameras[static_cast<size_t>(node.camera)];
@@ -48,9 +49,10 @@ bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, int
   if (c.type == "perspective" && c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1)
     fov = static_cast<float>(c.perspective.yfov * 180.0 / 3.14159265358979);
   else
-    out.warnings.push_back("camera " + to_string(node.camera) + " (\"" + c.name + "\") is " +
-                           (c.type == "perspective" ? "a perspective camera without a usable yfov" : "orthographic") +
-                           "; rendered as a perspective camera with a 40 degree field of view");
+    report.warning("/cameras/" + to_string(node.camera),
+                   "camera " + to_string(node.camera) + " (\"" + c.name + "\") is " +
+                       (c.type == "perspective" ? "a perspective camera without a usable yfov" : "orthographic") +
+                       "; rendered as a perspective camera with a 40 degree field of view");
   CameraPlacement placement;
   placement.name = !c.name.empty() ? c.name : !node.name.empty() ? node.name : "camera " + to_string(node.camera);
   placement.camera = Camera::look_at(Vec3(0.0f), Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, 1.0f, 0.0f), fov);
@@ -60,35 +62,38 @@ bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, int
 }
 
 // KHR_lights_punctual, converted to our units by the rule in io/gltf/lights.h.
-bool import_light(const tinygltf::Model& model, const tinygltf::Node& node, int32_t index, ImportedModel& out,
-                  std::string& error) {
+bool import_light(const tinygltf::Model& model, const tinygltf::Node& node, const std::string& at, int32_t index,
+                  ImportedModel& out, Reporter& report) {
   const auto ext = node.extensions.find("KHR_lights_punctual");
   if (ext == node.extensions.end() || !ext->second.Has("light")) return true;
   const tinygltf::Value& v = ext->second.Get("light");
   const int light = v.IsInt() ? v.GetNumberAsInt() : -1;
   if (light < 0 || static_cast<size_t>(light) >= model.lights.size()) {
-    error = "node \"" + node.name + "\" uses light " + to_string(light) + ", which does not exist";
+    report.error(at + "/extensions/KHR_lights_punctual/light",
+                 "node \"" + node.name + "\" uses light " + to_string(light) + ", which does not exist");
     return false;
   }
   const tinygltf::Light& l = model.lights[static_cast<size_t>(light)];
+  const std::string light_at = "/extensions/KHR_lights_punctual/lights/" + to_string(light);
   std::string why;
   const auto converted =
       light_from_gltf(l.type, l.color, l.intensity, l.spot.innerConeAngle, l.spot.outerConeAngle, why);
   if (!converted) {
-    out.warnings.push_back("light " + to_string(light) + " (\"" + l.name + "\"): " + why + "; ignored");
+    report.warning(light_at, "light " + to_string(light) + " (\"" + l.name + "\"): " + why + "; ignored");
     return true;
   }
   if (l.range > 0.0)
-    out.warnings.push_back("light " + to_string(light) + " (\"" + l.name +
-                           "\"): range is not modelled; the inverse-square falloff continues beyond it");
+    report.warning(light_at + "/range",
+                   "light " + to_string(light) + " (\"" + l.name +
+                       "\"): range is not modelled; the inverse-square falloff continues beyond it");
   out.lights.push_back(LightPlacement{*converted, index});
   return true;
 }
 
 // EXT_mesh_gpu_instancing: the node's mesh drawn once per row of its TRANSLATION, ROTATION and
 // SCALE accessors (each optional, all of one count), in the node's space.
-bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node, const LoadLimits& limits,
-                       ImportedNode& out, std::string& error) {
+bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node, const std::string& at,
+                       const LoadLimits& limits, ImportedNode& out, Reporter& report) {
   const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
   if (ext == node.extensions.end() || !ext->second.Has("attributes")) return true;
   const tinygltf::Value& attributes = ext->second.Get("attributes");
@@ -100,15 +105,18 @@ bool import_instancing(const tinygltf::Model& model, const tinygltf::Node& node,
        {std::tuple{"TRANSLATION", 3, &t}, std::tuple{"ROTATION", 4, &r}, std::tuple{"SCALE", 3, &s}}) {
     if (!attributes.Has(name)) continue;
     const tinygltf::Value& index = attributes.Get(name);
-    if (!index.IsInt() ||
-        !read_float_accessor(model, index.GetNumberAsInt(), components, limits.instances, *values, error)) {
-      error = where + name + ": " + (index.IsInt() ? error : "expected an accessor index");
+    const std::string attribute_at = at + "/extensions/EXT_mesh_gpu_instancing/attributes/" + name;
+    if (!index.IsInt()) {
+      report.error(attribute_at, where + name + ": expected an accessor index");
       return false;
     }
+    if (!read_float_accessor(model, index.GetNumberAsInt(), components, limits.instances, *values,
+                             AccessorUse{report, where + name + ": ", attribute_at}))
+      return false;
     const size_t n = values->size() / static_cast<size_t>(components);
     if (any && n != count) {
-      error =
-          where + name + ": expected " + to_string(count) + " values like the other attributes, found " + to_string(n);
+      report.error(attribute_at, where + name + ": expected " + to_string(count) +
+                                     " values like the other attributes, found " + to_string(n));
       return false;
     }
     count = n;

@@ -141,7 +141,8 @@ Diagnostic at_offset(const std::string& path, const std::string& text, size_t of
                      std::string message) {
   const LineColumn lc = line_column(text, offset);
   return Diagnostic{
-      Severity::kError, path, lc.line, lc.column, std::move(pointer), std::move(message), source_excerpt(text, offset)};
+      Severity::kError, path, lc.line, lc.column, std::move(pointer), std::move(message), source_excerpt(text, offset),
+      std::nullopt};
 }
 
 }  // namespace

@@ -49,23 +49,39 @@ std::string join_quoted(const std::vector<std::string>& items) {
   return out;
 }
 
-void JsonReader::add(Severity severity, const std::string& pointer, std::string message, Anchor anchor) const {
-  std::string where = pointer;
-  if (anchor == Anchor::kParent) where = pointer.substr(0, pointer.rfind('/'));
-  const auto loc = locate_pointer(doc_.text, where);
-  size_t offset = 0;
-  if (loc) offset = anchor == Anchor::kKey ? loc->key_offset : loc->value_offset;
-  const LineColumn lc = line_column(doc_.text, offset);
-  diags_.add(Diagnostic{severity, doc_.path, loc ? lc.line : 0, loc ? lc.column : 0, pointer, std::move(message),
-                        loc ? source_excerpt(doc_.text, offset) : ""});
+namespace {
+
+void find_in_text(std::string_view text, const std::string& pointer, Anchor anchor, Place& place) {
+  const std::string where = anchor == Anchor::kParent ? pointer.substr(0, pointer.rfind('/')) : pointer;
+  const auto loc = locate_pointer(text, where);
+  if (!loc) return;
+  const size_t offset = anchor == Anchor::kKey ? loc->key_offset : loc->value_offset;
+  const LineColumn lc = line_column(text, offset);
+  place.line = lc.line;
+  place.column = lc.column;
+  place.excerpt = source_excerpt(text, offset);
+}
+
+}  // namespace
+
+PlaceFinder json_places(std::shared_ptr<const std::string> text) {
+  return [text = std::move(text)](const std::string& pointer, Anchor anchor, Place& place) {
+    find_in_text(*text, pointer, anchor, place);
+  };
+}
+
+PlaceFinder json_places(const JsonDocument& doc) {
+  return [&doc](const std::string& pointer, Anchor anchor, Place& place) {
+    find_in_text(doc.text, pointer, anchor, place);
+  };
 }
 
 void JsonReader::error(const std::string& pointer, std::string message, Anchor anchor) const {
-  add(Severity::kError, pointer, std::move(message), anchor);
+  report_.error(pointer, std::move(message), anchor);
 }
 
 void JsonReader::warning(const std::string& pointer, std::string message, Anchor anchor) const {
-  add(Severity::kWarning, pointer, std::move(message), anchor);
+  report_.warning(pointer, std::move(message), anchor);
 }
 
 void JsonReader::expected(const std::string& pointer, std::string_view what, const Json& found) const {

@@ -3,6 +3,7 @@
 // so one run reports every problem in a file. Unknown keys are errors, with a suggestion.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,16 +11,20 @@
 
 #include "core/math.h"
 #include "io/base/diagnostics.h"
+#include "io/base/reporter.h"
 #include "io/json/document.h"
 
 namespace rt {
 
-// Where in the source an error about a pointer is shown.
-enum class Anchor { kValue, kKey, kParent };
+// Where a pointer lies in JSON source text: line:column and the excerpt with its caret. The text
+// is kept by the finder (shared, not copied per report).
+PlaceFinder json_places(std::shared_ptr<const std::string> text);
+// The same for a document that outlives the finder.
+PlaceFinder json_places(const JsonDocument& doc);
 
 class JsonReader {
  public:
-  JsonReader(const JsonDocument& doc, Diagnostics& diags) : doc_(doc), diags_(diags) {}
+  JsonReader(const JsonDocument& doc, Diagnostics& diags) : doc_(doc), report_(diags, doc.path, json_places(doc)) {}
 
   void error(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;
   void warning(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;
@@ -27,13 +32,13 @@ class JsonReader {
   void expected(const std::string& pointer, std::string_view what, const Json& found) const;
 
   const JsonDocument& document() const { return doc_; }
-  Diagnostics& diagnostics() const { return diags_; }
+  Diagnostics& diagnostics() const { return report_.diagnostics(); }
+  // The reporter behind error() and warning(), for code that reports on the same file.
+  Reporter& reporter() const { return report_; }
 
  private:
-  void add(Severity severity, const std::string& pointer, std::string message, Anchor anchor) const;
-
   const JsonDocument& doc_;
-  Diagnostics& diags_;
+  mutable Reporter report_;  // reading is const; reporting a problem is not the document's state
 };
 
 // A short description of a value for "found ..." messages: the string "red", the number -3, ...

@@ -3,6 +3,7 @@
 // and exit code 2 (or renders, where the input is valid), quickly, and leaves no file behind.
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -157,4 +158,49 @@ TEST_CASE("cli: validate reports every problem in every file, as text or JSON", 
 
   r = rtcli("validate");
   CHECK(r.code == 2);
+}
+
+TEST_CASE("cli: a problem inside a glTF file names its pointer and line:column, in text and JSON",
+          "[cli][validate][gltf]") {
+  // Through a scene: reported at the scene's reference, with the place inside the glTF file.
+  Run r = rtcli("validate tests/data/bad/file-mesh-accessor-overrun.json");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output,
+             Catch::Contains("file-mesh-accessor-overrun.json:48:17: error: /nodes/1/mesh/file: ") &&
+                 Catch::Contains("  in tests/data/bad/models/accessor-overrun.gltf:1:210: /accessors/0/count"));
+  r = rtcli("validate --json tests/data/bad/file-mesh-accessor-overrun.json");
+  rt::Json list = rt::Json::parse(r.output);
+  REQUIRE(list.size() == 1);
+  CHECK(list[0]["inside"]["file"] == "tests/data/bad/models/accessor-overrun.gltf");
+  CHECK(list[0]["inside"]["pointer"] == "/accessors/0/count");
+  CHECK(list[0]["inside"]["line"] == 1);
+  CHECK(list[0]["inside"]["column"] == 210);
+
+  // On its own: the glTF file is the place.
+  r = rtcli("validate --json tests/data/bad/models/two-parents.gltf");
+  CHECK(r.code == 2);
+  list = rt::Json::parse(r.output);
+  REQUIRE(list.size() == 1);
+  CHECK(list[0]["file"] == "tests/data/bad/models/two-parents.gltf");
+  CHECK(list[0]["pointer"] == "/nodes/1/children/0");
+  CHECK(list[0]["line"] == 1);
+  CHECK(list[0]["column"] == 105);
+  CHECK_FALSE(list[0].contains("inside"));
+
+  // A warning travels the same way: in --json, and not at all under render's --quiet.
+  const std::string gltf = write_file("sparkles.gltf", R"({"asset": {"version": "2.0"},
+  "extensionsUsed": ["EXT_fancy_sparkles"],
+  "scenes": [{"nodes": []}]})");
+  r = rtcli("validate --json '" + gltf + "'");
+  CHECK(r.code == 0);
+  list = rt::Json::parse(r.output);
+  const auto used =
+      std::find_if(list.begin(), list.end(), [](const rt::Json& d) { return d["pointer"] == "/extensionsUsed/0"; });
+  REQUIRE(used != list.end());
+  CHECK((*used)["severity"] == "warning");
+  CHECK((*used)["line"] == 2);
+  CHECK((*used)["column"] == 22);
+  r = rtcli("render -q '" + gltf + "' -o '" + output_path("sparkles.png") + "'");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("sparkles.gltf:2:22: warning: /extensionsUsed/0:"));
 }

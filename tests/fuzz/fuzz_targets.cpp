@@ -104,10 +104,12 @@ std::vector<unsigned char> square_data() {
 // Imports a glTF file's bytes from `folder` and places it; an import may fail (with a message).
 std::string import_and_place(const std::vector<unsigned char>& bytes, const std::string& folder) {
   const LoadOptions options = fuzz_options();
+  Diagnostics found;
+  Reporter report(found, folder + "/fuzz.gltf");
   ImportError error;
   LimitUsage usage;
-  const auto model = import_gltf_bytes(bytes, folder, std::nullopt, options.limits, usage, error);
-  if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
+  const auto model = import_gltf_bytes(bytes, folder, std::nullopt, options.limits, usage, report, error);
+  if (!model) return found.has_errors() ? "" : "a rejected model came with no error";
   for (const Texture& t : model->textures)
     for (const TextureFilter filter : {TextureFilter::kNearest, TextureFilter::kTrilinear})
       if (!is_finite(t.sample(Vec2(0.3f, 0.7f), TextureWrap::kRepeat, filter, 0.01f)))
@@ -150,12 +152,14 @@ std::string scene_json(const uint8_t* data, size_t size) {
 
 std::string gltf_model(const uint8_t* data, size_t size) {
   const LoadOptions options = fuzz_options();
+  Diagnostics found;
+  Reporter report(found, "fuzz.gltf");
   ImportError error;
   const std::vector<unsigned char> bytes(data, data + size);
   LimitUsage usage;
   auto model = import_gltf_bytes(bytes, std::string(RTCLI_SOURCE_DIR) + "/scenes/models", std::nullopt, options.limits,
-                                 usage, error);
-  if (!model) return error.message.empty() ? "a rejected model came with no error" : "";
+                                 usage, report, error);
+  if (!model) return found.has_errors() ? "" : "a rejected model came with no error";
   std::vector<TriangleMesh> meshes;
   size_t triangles = 0;
   for (const ModelPlacement& instance : placements(*model)) {

@@ -18,11 +18,18 @@ using namespace rt;
 
 namespace {
 
-// Whether some error sits at `pointer` with `message` in its text.
-bool reports(const Diagnostics& diags, const std::string& pointer, const std::string& message) {
-  for (const Diagnostic& d : diags.all())
-    if (d.severity == Severity::kError && d.pointer == pointer && d.message.find(message) != std::string::npos)
+// Whether some error sits at `pointer` with `message` in its text, and, for a problem inside a
+// glTF file the scene names, at `inside` there (its pointer, line and column, with an excerpt).
+bool reports(const Diagnostics& diags, const std::string& pointer, const std::string& message,
+             const Json& inside = Json()) {
+  for (const Diagnostic& d : diags.all()) {
+    if (d.severity != Severity::kError || d.pointer != pointer || d.message.find(message) == std::string::npos)
+      continue;
+    if (inside.is_null()) return true;
+    if (d.inside && d.inside->pointer == inside["pointer"] && d.inside->line == inside["line"] &&
+        d.inside->column == inside["column"] && !d.inside->excerpt.empty())
       return true;
+  }
   return false;
 }
 
@@ -38,7 +45,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
           "[io][errors][schema]") {
   const std::string folder = rt::test::source_path("tests/data/bad/");
   const Json expected = Json::parse(rt::test::read_file(folder + "expected.json"));
-  size_t files = 0, schema_cases = 0;
+  size_t files = 0, schema_cases = 0, inside_cases = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
     if (entry.path().extension() == ".json" && entry.path().filename() != "expected.json") ++files;
   CHECK(files == expected.size());  // every file has an expectation, and every expectation a file
@@ -46,17 +53,19 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
   for (const auto& item : expected.items()) {
     const std::string path = folder + item.key();
     const std::string pointer = item.value()["pointer"], message = item.value()["message"];
+    const Json inside = item.value().value("inside", Json());
+    inside_cases += inside.is_null() ? 0 : 1;
     INFO(item.key() << ": expected " << pointer << ": ..." << message << "...");
 
     Diagnostics load_diags;
     CHECK_FALSE(load_scene(path, rt::test::load_options(), load_diags));
     INFO("loader said:\n" << all_messages(load_diags));
-    CHECK(reports(load_diags, pointer, message));
+    CHECK(reports(load_diags, pointer, message, inside));
 
     const Diagnostics validate_diags = validate_file(path, rt::test::load_options());
     INFO("validator said:\n" << all_messages(validate_diags));
     CHECK(validate_diags.has_errors());
-    CHECK(reports(validate_diags, pointer, message));
+    CHECK(reports(validate_diags, pointer, message, inside));
 
     if (item.value()["schema"] == true) {
       ++schema_cases;
@@ -72,6 +81,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
     }
   }
   CHECK(schema_cases >= 40);
+  CHECK(inside_cases >= 6);  // problems inside glTF files, at their pointer and line:column
 }
 
 TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint", "[io][schema]") {

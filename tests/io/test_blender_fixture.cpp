@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "io/gltf/loader.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
@@ -71,7 +72,7 @@ TEST_CASE("Blender fixture: camera, lights and area-light extras in our units", 
 }
 
 TEST_CASE("Blender fixture: materials, the bump map from extras and the animation", "[blender][gltf]") {
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto model = import_gltf(fixture(), std::nullopt, LoadLimits{}, error);
   INFO(error.message);
   REQUIRE(model);

@@ -11,6 +11,7 @@
 #include "io/json/document.h"
 #include "io/scene_loader.h"
 #include "tests/support/gltf_files.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
@@ -28,7 +29,8 @@ size_t triangle_count(const ImportedModel& m) {
   return n;
 }
 
-std::optional<ImportedModel> import(const std::string& path, ImportError& error, std::optional<std::string> mesh = {}) {
+std::optional<ImportedModel> import(const std::string& path, rt::test::ImportProblems& error,
+                                    std::optional<std::string> mesh = {}) {
   return import_gltf(path, mesh, LoadLimits{}, error);
 }
 
@@ -41,7 +43,7 @@ TEST_CASE("glTF samples: Box in all three containers gives the same 12 triangles
   }
   std::vector<Vec3> reference;
   for (const char* path : {"Box/glTF-Binary/Box.glb", "Box/glTF/Box.gltf", "Box/glTF-Embedded/Box.gltf"}) {
-    ImportError error;
+    rt::test::ImportProblems error;
     const auto model = import(rt::test::sample_model(path), error);
     INFO(path << ": " << error.message);
     REQUIRE(model);
@@ -59,7 +61,7 @@ TEST_CASE("glTF samples: interleaved buffers, instancing, UVs, node hierarchies,
     WARN("../shared/gltf not found: sample-model tests skipped");
     return;
   }
-  ImportError error;
+  rt::test::ImportProblems error;
   auto m = import(rt::test::sample_model("BoxInterleaved/glTF-Binary/BoxInterleaved.glb"), error);
   REQUIRE(m);
   CHECK(triangle_count(*m) == 12);
@@ -112,7 +114,7 @@ TEST_CASE("glTF samples: a model renders directly, framed by the default camera"
 }
 
 TEST_CASE("glTF: a named mesh, and an unknown mesh name", "[io][gltf]") {
-  ImportError error;
+  rt::test::ImportProblems error;
   const std::string knot = rt::test::source_path("scenes/models/knot.glb");
   auto m = import(knot, error, "knot");
   REQUIRE(m);
@@ -135,7 +137,7 @@ TEST_CASE("glTF: byte indices, triangle strips and fans", "[io][gltf]") {
        {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
         {{"bufferView", 1}, {"componentType", 5121}, {"count", 4}, {"type", "SCALAR"}}}},
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 4}}}}};
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto m = import(write_gltf("strip-fan.gltf", buffer, doc), error);
   INFO(error.message);
   REQUIRE(m);
@@ -166,7 +168,7 @@ TEST_CASE("glTF: sparse accessors and normalised texture coordinates", "[io][glt
         {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 16}},
         {{"buffer", 0}, {"byteOffset", 64}, {"byteLength", 2}},
         {{"buffer", 0}, {"byteOffset", 68}, {"byteLength", 12}}}}};
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto m = import(write_gltf("sparse.gltf", buffer, doc), error);
   INFO(error.message);
   REQUIRE(m);
@@ -185,7 +187,7 @@ TEST_CASE("glTF: out-of-bounds accessors and indices are errors, not crashes", "
        {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
         {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 8}}}}};
-  ImportError error;
+  rt::test::ImportProblems error;
   CHECK_FALSE(import(write_gltf("bad-index.gltf", buffer, doc), error));
   CHECK_THAT(error.message, Catch::Contains("element 2 is index 9, but there are only 4 vertices"));
 
@@ -204,7 +206,7 @@ TEST_CASE("glTF samples: Avocado's normal map, with its TANGENT attribute", "[io
     WARN("../shared/gltf not found: sample-model tests skipped");
     return;
   }
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto model = import(rt::test::sample_model("Avocado/glTF/Avocado.gltf"), error);
   INFO(error.message);
   REQUIRE(model);

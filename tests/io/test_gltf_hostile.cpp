@@ -12,6 +12,7 @@
 #include "io/gltf/loader.h"
 #include "io/scene_loader.h"
 #include "tests/support/gltf_files.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
@@ -38,7 +39,7 @@ struct Outcome {
 
 Outcome import_file(const std::string& path, const LoadLimits& limits = {}) {
   const auto start = std::chrono::steady_clock::now();
-  ImportError error;
+  rt::test::ImportProblems error;
   Outcome o;
   o.loaded = import_gltf(path, std::nullopt, limits, error).has_value();
   o.error = error.message;
@@ -120,12 +121,17 @@ TEST_CASE("glTF hostile: what the specification forbids is refused", "[io][gltf]
   CHECK(import_json("quantization.gltf", doc).loaded);  // implemented: any component type is read
   doc = triangle();
   doc["extensionsUsed"] = {"EXT_fancy_sparkles"};  // optional and unknown: a warning, and it renders
-  ImportError optional_error;
+  rt::test::ImportProblems optional_error;
   const auto optional =
       import_gltf(write_gltf("optional.gltf", square_positions(), doc), std::nullopt, {}, optional_error);
   REQUIRE(optional);
-  REQUIRE(optional->warnings.size() == 1);
-  CHECK_THAT(optional->warnings[0], Catch::Contains("\"EXT_fancy_sparkles\", which rtcli ignores"));
+  REQUIRE(optional_error.warnings.size() == 1);
+  CHECK_THAT(optional_error.warnings[0], Catch::Contains("\"EXT_fancy_sparkles\", which rtcli ignores"));
+  // Reported where the file says it, with the line and column of its text.
+  const Diagnostic& used = optional_error.found.all().front();
+  CHECK(used.pointer == "/extensionsUsed/0");
+  CHECK(used.line == 1);
+  CHECK(used.column > 1);
 
   doc = triangle();
   doc["bufferViews"][0]["byteStride"] = 13;

@@ -10,6 +10,7 @@
 #include "materials/evaluated_surface.h"
 #include "materials/pbr_to_phong.h"
 #include "tests/support/gltf_files.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 
 using namespace rt;
@@ -61,11 +62,11 @@ std::string quad_file(const std::string& name, const Json& material, const std::
 }
 
 ImportedModel import_file(const std::string& path) {
-  ImportError error;
+  rt::test::ImportProblems error;
   auto model = import_gltf(path, std::nullopt, LoadLimits{}, error);
   INFO(error.message);
   REQUIRE(model);
-  for (const std::string& w : model->warnings) UNSCOPED_INFO(w);
+  for (const std::string& w : error.warnings) UNSCOPED_INFO(w);
   return std::move(*model);
 }
 

@@ -4,6 +4,7 @@
 #include "io/gltf/lights.h"
 #include "io/gltf/loader.h"
 #include "tests/support/gltf_files.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 #include "tests/support/run_rtcli.h"
 
@@ -96,7 +97,7 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
     WARN("../shared/gltf not found: sample-model tests skipped");
     return;
   }
-  ImportError error;
+  rt::test::ImportProblems error;
   auto m =
       import_gltf(rt::test::sample_model("BoxAnimated/glTF-Binary/BoxAnimated.glb"), std::nullopt, LoadLimits{}, error);
   REQUIRE(m);

@@ -11,6 +11,7 @@
 
 #include "io/gltf/loader.h"
 #include "tests/support/gltf_files.h"
+#include "tests/support/gltf_import.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
 
@@ -53,7 +54,7 @@ std::string textured(const std::string& name, int images, bool one_view) {
 }  // namespace
 
 TEST_CASE("budgets: glTF images on one buffer view are decoded once", "[io][gltf][limits]") {
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto model = import_gltf(textured("six-images-one-view.gltf", 6, true), std::nullopt, LoadLimits{}, error);
   INFO(error.message);
   REQUIRE(model);
@@ -65,7 +66,7 @@ TEST_CASE("budgets: a glTF file's images are summed from their headers before an
   LoadLimits limits;
   limits.scene_texels = 85 * 23;  // 23 of the 24 8 x 8 images (85 texels with mip levels each)
   LimitUsage usage;
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto start = std::chrono::steady_clock::now();
   CHECK_FALSE(import_gltf(textured("24-images.gltf", 24, false), std::nullopt, limits, usage, error));
   CHECK(seconds_since(start) < 1.0);
@@ -87,7 +88,7 @@ TEST_CASE("budgets: many primitives sharing one huge accessor stop before readin
   doc["asset"] = {{"version", "2.0"}};
   const std::string path = rt::test::write_file("twelve-primitives.gltf", doc.dump());
   LimitUsage usage;
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto start = std::chrono::steady_clock::now();
   CHECK_FALSE(import_gltf(path, std::nullopt, LoadLimits{}, usage, error));
   CHECK(seconds_since(start) < 1.0);
@@ -120,7 +121,7 @@ TEST_CASE("budgets: glTF channels share their sampler's keys, counted once", "[i
   }
   const std::string path = write_gltf("shared-sampler.gltf", buffer, doc);
   LimitUsage usage;
-  ImportError error;
+  rt::test::ImportProblems error;
   const auto model = import_gltf(path, std::nullopt, LoadLimits{}, usage, error);
   INFO(error.message);
   REQUIRE(model);
