@@ -7,9 +7,9 @@
 
 namespace rt {
 
-std::vector<PlacementWarning> hidden_file_warnings(const SceneGraph& g, const std::vector<std::string>& pointers,
-                                                   const std::vector<bool>& from_file,
-                                                   const std::vector<PlacementIssue>& issues) {
+void warn_hidden_files(const SceneGraph& g, const std::vector<std::string>& pointers,
+                       const std::vector<bool>& from_file, const std::vector<PlacementIssue>& issues,
+                       Reporter& report) {
   // Per file (the pointer that places it): its nodes with geometry, and those singular. A file's
   // parts scaled to nothing are hidden on purpose; all of them is a file that draws nothing.
   std::map<std::string, std::pair<size_t, std::set<uint32_t>>> files;
@@ -18,18 +18,16 @@ std::vector<PlacementWarning> hidden_file_warnings(const SceneGraph& g, const st
   for (const PlacementIssue& issue : issues)
     if (issue.kind == PlacementIssue::kSingular && from_file[issue.node])
       files[pointers[issue.node]].second.insert(issue.node);
-  std::vector<PlacementWarning> out;
   for (const auto& [pointer, nodes] : files)
     if (nodes.first > 0 && nodes.second.size() == nodes.first)
-      out.emplace_back(pointer,
-                       "the glTF file has no triangles to render: every node of it that carries a mesh has a "
-                       "singular world transform in the first frame (a zero scale, or a matrix that flattens "
-                       "it)");
-  return out;
+      report.warning(pointer,
+                     "the glTF file has no triangles to render: every node of it that carries a mesh has a "
+                     "singular world transform in the first frame (a zero scale, or a matrix that flattens "
+                     "it)");
 }
 
-std::optional<PlacementWarning> stacked_copies_warning(const SceneGraph& g, float seconds,
-                                                       const std::vector<std::string>& pointers) {
+void warn_stacked_copies(const SceneGraph& g, float seconds, const std::vector<std::string>& pointers,
+                         Reporter& report) {
   // Every placement as (what: a mesh, or -1 - a shape kind; its world matrix; its node), sorted:
   // copies at one spot are neighbours.
   const std::vector<Mat4> world = g.world_transforms(seconds);
@@ -56,12 +54,12 @@ std::optional<PlacementWarning> stacked_copies_warning(const SceneGraph& g, floa
       node = copies[i].second;
     }
   }
-  if (most < kStackedCopiesWarning) return std::nullopt;
-  return PlacementWarning{pointers[node],
-                          std::to_string(most) + " copies of " + (g.nodes[node].shape ? "a shape" : "a mesh") +
-                              " are placed at exactly the same spot (the same world transform): no "
-                              "BVH can separate them, so every ray that reaches them tests all " +
-                              std::to_string(most) + " and the render will be slow (docs/errors-and-limits.md, \"Limits\")"};
+  if (most < kStackedCopiesWarning) return;
+  report.warning(pointers[node], std::to_string(most) + " copies of " + (g.nodes[node].shape ? "a shape" : "a mesh") +
+                                     " are placed at exactly the same spot (the same world transform): no "
+                                     "BVH can separate them, so every ray that reaches them tests all " +
+                                     std::to_string(most) +
+                                     " and the render will be slow (docs/errors-and-limits.md, \"Limits\")");
 }
 
 }  // namespace rt

@@ -109,8 +109,7 @@ class Builder {
     const float t0 = g.timeline.seconds(g.timeline.first_frame);
     std::vector<PlacementIssue> issues;
     PrimitiveSet placed = g.place(t0, &issues);
-    for (const auto& [pointer, message] : hidden_file_warnings(g, pointers_, from_file_, issues))
-      warning(pointer, message);
+    warn_hidden_files(g, pointers_, from_file_, issues, report_);
     for (const PlacementIssue& issue : issues) {
       if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
       error(pointers_[issue.node],
@@ -120,7 +119,7 @@ class Builder {
                 : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
                   "that reaches infinity");
     }
-    if (auto w = stacked_copies_warning(g, t0, pointers_)) warning(w->first, w->second);
+    warn_stacked_copies(g, t0, pointers_, report_);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
@@ -198,10 +197,7 @@ class Builder {
     Material out = m.material;
     const auto fill = [&](const std::optional<TextureFileReference>& ref, TextureSlot& slot) {
       if (!ref || over_limit()) return;
-      TextureError why;
-      slot.texture = textures_.load(*ref, why, files_);
-      if (why.over_budget) limit_error(ref->pointer, why.message);
-      else if (!why.message.empty()) error(ref->pointer, why.message);
+      slot.texture = textures_.load(*ref, report_, files_);
     };
     fill(m.texture, out.texture);
     fill(m.specular_texture, out.specular_texture);

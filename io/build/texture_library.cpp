@@ -2,16 +2,21 @@
 
 namespace rt {
 
-uint32_t TextureLibrary::load(const TextureFileReference& ref, TextureError& error, std::vector<std::string>& files) {
+uint32_t TextureLibrary::load(const TextureFileReference& ref, Reporter& report, std::vector<std::string>& files) {
   const std::string key = ref.resolved_path + "\n" + std::to_string(static_cast<int>(ref.encoding));
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
+  TextureError error;
   auto texture = load_texture(ref.resolved_path, ref.encoding, limits_, usage_, error);
   uint32_t index = kNoTexture;
   if (texture) {
     files.push_back(ref.resolved_path);
     index = add(std::move(*texture));
-  } else if (error.message.rfind("expected", 0) != 0 && !error.over_budget) {
-    error.message = "expected a readable PNG or JPEG image; " + error.message;
+  } else if (error.over_budget) {
+    report.over_limit(ref.pointer, error.message);
+  } else {
+    const bool says_expected = error.message.rfind("expected", 0) == 0;
+    report.error(ref.pointer,
+                 says_expected ? error.message : "expected a readable PNG or JPEG image; " + error.message);
   }
   indices_.emplace(key, index);
   return index;

@@ -10,6 +10,7 @@
 
 #include "core/texture/texture.h"
 #include "io/base/load_options.h"
+#include "io/base/reporter.h"
 #include "io/scene/texture_parser.h"
 
 namespace rt {
@@ -20,9 +21,9 @@ class TextureLibrary {
       : textures_(textures), limits_(limits), usage_(usage) {}
 
   // The index of the file's texture, loading it the first time; kNoTexture when it cannot be
-  // used, with why in `error` the first time (over_budget: loading should stop). `files`
-  // receives the path of a file read.
-  uint32_t load(const TextureFileReference& ref, TextureError& error, std::vector<std::string>& files);
+  // used, reported at ref.pointer the first time (past the texel budget: report.over_limit).
+  // `files` receives the path of a file read.
+  uint32_t load(const TextureFileReference& ref, Reporter& report, std::vector<std::string>& files);
   // Appends a texture decoded elsewhere, its texels already counted (a glTF file's); returns its index.
   uint32_t add(Texture texture);
 
