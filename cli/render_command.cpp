@@ -1,7 +1,6 @@
 #include "cli/render_command.h"
 
 #include <unistd.h>
-#include <climits>
 
 #include <algorithm>
 #include <chrono>
@@ -11,9 +10,11 @@
 #include "cli/exit_codes.h"
 #include "cli/frame_output.h"
 #include "cli/interrupt.h"
+#include "cli/output_checks.h"
 #include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
+#include "core/frame_scenes.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/refinement_images.h"
@@ -29,54 +30,6 @@ std::string default_output(const std::string& scene, bool animation) {
   return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");
 }
 
-// Refuses an output we could never write before spending minutes on the render: a missing or
-// read-only folder, a folder in its place, a name too long for the file system.
-bool check_output(const std::string& path, std::string& error) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) {
-    error = "cannot write \"" + path + "\": the folder \"" + folder.string() + "\" does not exist";
-    return false;
-  }
-  if (::access(folder.c_str(), W_OK) != 0) {
-    error = "cannot write \"" + path + "\": the folder \"" + folder.string() + "\" is not writable";
-    return false;
-  }
-  if (fs::is_directory(p, ec)) {
-    error = "cannot write \"" + path + "\": it is a folder";
-    return false;
-  }
-  const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
-  const std::string name = p.filename().string();
-  if (name_max > 0 && name.size() > static_cast<size_t>(name_max)) {
-    error = "cannot write \"" + path + "\": its name is " + std::to_string(name.size()) + " bytes, more than the " +
-            std::to_string(name_max) + " the file system allows";
-    return false;
-  }
-  if (path.size() >= PATH_MAX) {
-    error = "cannot write \"" + path.substr(0, 60) + "...\": its path is " + std::to_string(path.size()) +
-            " bytes, more than the " + std::to_string(PATH_MAX - 1) + " the system allows";
-    return false;
-  }
-  return true;
-}
-
-// The image must not replace a file the scene was read from (the same file, links resolved).
-bool output_is_an_input(const std::string& output, const std::vector<std::string>& inputs, std::string& error) {
-  std::error_code ec;
-  if (!std::filesystem::exists(output, ec)) return false;
-  for (const std::string& input : inputs) {
-    if (std::filesystem::equivalent(output, input, ec)) {
-      error = "refusing to write the image to \"" + output + "\": it is the input file \"" + input +
-              "\" (choose another name with -o)";
-      return true;
-    }
-  }
-  return false;
-}
-
 // A name the render pipeline must know (an integrator, an anti-aliasing mode), or an error
 // listing the names it knows.
 bool check_name(const char* option, const char* what, const std::string& name, const std::vector<std::string>& names) {
@@ -86,13 +39,6 @@ bool check_name(const char* option, const char* what, const std::string& name, c
   std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"; expected one of: %s\n", option, what, name.c_str(),
                list.c_str());
   return false;
-}
-
-// "out.png" -> "out.aa-refined.png" for --aa-debug's images.
-std::string beside(const std::string& output, const std::string& suffix) {
-  std::filesystem::path p(output);
-  p.replace_extension(suffix + ".png");
-  return p.string();
 }
 
 // The scene's render settings with the command line's overrides applied.
@@ -134,135 +80,119 @@ std::optional<FrameRange> requested_frames(const RenderCommand& cmd) {
   return range;
 }
 
+// What the command line asks for, checked before anything is loaded.
+struct RenderRequest {
+  FrameRange frames;  // as asked; without --frame or --frames, the scene's first frame (known once loaded)
+  bool frames_given = false;
+  std::string output;
+  OutputKind kind = OutputKind::kPng;
+};
+
+// What a render writes, every name checked once the scene's own files are known.
+struct RenderOutputs {
+  std::vector<std::string> paths;  // each frame's file (or the one PNG or GIF), then --aa-debug's two
+  std::string aa_refined, aa_depth;
+};
+
 struct RenderTotals {
   RenderStats last;  // the last frame's
   RayCounters rays;
   double seconds = 0.0;        // rendering, all frames
-  double place_seconds = 0.0;  // placing animated frames (top-level BVH builds)
+  double place_seconds = 0.0;  // placing animated frames (top-level BVHs)
   size_t refined = 0;          // pixels refined by adaptive anti-aliasing, all frames
 };
 
-void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
-                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written) {
-  const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
-  const unsigned threads = t.last.threads;
-  if (frames.count() == 1) {
-    std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s\n",
-                 cmd.scene.c_str(), settings.width, settings.height, t.seconds, load_seconds,
-                 format_count(static_cast<double>(t.rays.total())).c_str(), format_ray_counts(t.rays).c_str(),
-                 rate / 1e6, threads, threads == 1 ? "" : "s");
-  } else {
-    std::fprintf(stderr,
-                 "rendered %s: frames %d-%d (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
-                 "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s\n",
-                 cmd.scene.c_str(), frames.first, frames.last, frames.count(), settings.width, settings.height,
-                 t.seconds / frames.count(), 1e3 * t.place_seconds / frames.count(), t.seconds + t.place_seconds,
-                 load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
-                 threads == 1 ? "" : "s");
-  }
-  const double pixels = static_cast<double>(pixel_count(settings)) * frames.count();
-  std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
-               static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
-               100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
-  if (written.size() <= 3) {
-    for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
-  } else {
-    std::printf("wrote %s ... %s (%zu files)\n", written.front().c_str(), written.back().c_str(), written.size());
-  }
-}
-
-}  // namespace
-
-int run_render(const RenderCommand& cmd) {
-  std::string error;
+std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   if (cmd.integrator && !check_name("--integrator", "integrator", *cmd.integrator, integrator_names()))
-    return kExitBadInput;
+    return std::nullopt;
   if (cmd.aa_mode && !check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names()))
-    return kExitBadInput;
+    return std::nullopt;
   if (cmd.texture_filter &&
       !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
-    return kExitBadInput;
+    return std::nullopt;
   const std::optional<FrameRange> asked = requested_frames(cmd);
-  if (!asked) return kExitBadInput;
-  const std::string output = cmd.output.empty() ? default_output(cmd.scene, asked->count() > 1) : cmd.output;
-  const std::optional<OutputKind> kind = output_kind(output, error);
-  if (!kind || !check_output(output, error)) {
+  if (!asked) return std::nullopt;
+  RenderRequest r{*asked, cmd.frames.has_value(), "", OutputKind::kPng};
+  r.output = cmd.output.empty() ? default_output(cmd.scene, asked->count() > 1) : cmd.output;
+  std::string error;
+  const std::optional<OutputKind> kind = output_kind(r.output, error);
+  if (!kind || !check_output(r.output, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-    return kExitBadInput;
+    return std::nullopt;
   }
-  if (asked->count() > 1 && *kind == OutputKind::kPng) {
+  r.kind = *kind;
+  if (asked->count() > 1 && r.kind == OutputKind::kPng) {
     std::fprintf(stderr,
                  "rtcli: error: %d frames need an animated GIF (-o NAME.gif) or numbered PNGs (-o NAME_####.png), "
                  "found \"%s\"\n",
-                 asked->count(), output.c_str());
-    return kExitBadInput;
+                 asked->count(), r.output.c_str());
+    return std::nullopt;
   }
-  if (cmd.aa_debug && *kind != OutputKind::kPng) {
+  if (cmd.aa_debug && r.kind != OutputKind::kPng) {
     std::fprintf(stderr, "rtcli: error: --aa-debug writes images beside one PNG; it does not go with \"%s\"\n",
-                 output.c_str());
-    return kExitBadInput;
+                 r.output.c_str());
+    return std::nullopt;
   }
+  return r;
+}
 
-  const auto load_start = std::chrono::steady_clock::now();
-  Diagnostics diags;
-  std::optional<LoadedScene> loaded =
-      load_scene(cmd.scene, cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files), diags);
-  print_diagnostics(stderr, diags);
-  if (!loaded) return kExitBadInput;
-  const Timeline& timeline = loaded->graph.timeline;
-  const FrameRange frames = cmd.frames ? *asked : FrameRange{timeline.first_frame, timeline.first_frame};
-  std::vector<std::string> outputs;
-  if (*kind == OutputKind::kPngSequence)
-    for (int f = frames.first; f <= frames.last; ++f) outputs.push_back(sequence_path(output, f));
-  else outputs.push_back(output);
+std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const RenderRequest& request,
+                                           const FrameRange& frames, const std::vector<std::string>& inputs) {
+  RenderOutputs out;
+  if (request.kind == OutputKind::kPngSequence)
+    for (int f = frames.first; f <= frames.last; ++f) out.paths.push_back(sequence_path(request.output, f));
+  else out.paths.push_back(request.output);
   if (cmd.aa_debug) {
-    outputs.push_back(beside(output, ".aa-refined"));
-    outputs.push_back(beside(output, ".aa-depth"));
+    out.aa_refined = beside(request.output, ".aa-refined");
+    out.aa_depth = beside(request.output, ".aa-depth");
+    out.paths.push_back(out.aa_refined);
+    out.paths.push_back(out.aa_depth);
   }
-  for (const std::string& out : outputs) {
-    if (!check_output(out, error) || output_is_an_input(out, loaded->inputs, error)) {
+  std::string error;
+  for (const std::string& path : out.paths) {
+    if (!check_output(path, error) || output_is_an_input(path, inputs, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-      return kExitBadInput;
+      return std::nullopt;
     }
   }
-  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+  return out;
+}
 
-  const RenderSettings settings = with_overrides(loaded->description.render, cmd);
+// The size limit on what the command line asks for, and a word about renders that will be slow
+// or show one picture many times.
+bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames, bool animated) {
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
-                   "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders (docs/errors-and-limits.md, \"Limits\")\n",
+                   "rtcli: error: %dx%d is %llu pixels, more than the %llu rtcli renders "
+                   "(docs/errors-and-limits.md, \"Limits\")\n",
                    settings.width, settings.height, static_cast<unsigned long long>(pixel_count(settings)),
                    static_cast<unsigned long long>(kMaxPixels));
-      return kExitBadInput;
+      return false;
     }
     if (max_camera_rays_per_frame(settings) > kCameraRaysWarning)
       std::fprintf(stderr,
                    "rtcli: warning: this render can trace up to %llu camera rays; expect it to take a long time\n",
                    static_cast<unsigned long long>(max_camera_rays_per_frame(settings)));
   }
-  if (frames.count() > 1 && !loaded->graph.animated)
+  if (frames.count() > 1 && !animated)
     std::fprintf(stderr, "rtcli: warning: %s has no animation: all %d frames will show the same picture\n",
                  cmd.scene.c_str(), frames.count());
+  return true;
+}
 
+// Renders each frame into `sink`, the progress bar counting frames. An exit code if it must stop
+// (Ctrl-C, a frame that cannot be written); the film holds the last frame.
+std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
+                                 const FrameRange& frames, FrameSink& sink, Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
-  const BvhBuildOptions bvh_options{resolve_thread_count(settings.threads)};
-  FrameSink sink(*kind, output, settings.width, settings.height, timeline.fps, frames.count(), cmd.dither,
-                 resolve_thread_count(settings.threads));
-  RenderTotals totals;
-  Film film;
+  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads)});
+  std::string error;
   for (int frame = frames.first; frame <= frames.last; ++frame) {
     const int index = frame - frames.first;
-    // The loaded scene is the first frame of the timeline; any other frame is placed anew (its
-    // top-level BVH only: meshes and their BVHs are shared).
-    std::optional<Scene> placed;
-    if (frame != timeline.first_frame) {
-      const auto start = std::chrono::steady_clock::now();
-      placed = loaded->graph.at(timeline.seconds(frame), bvh_options);
-      totals.place_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-    const Scene& scene = placed ? *placed : loaded->scene;
+    const Scene& scene = scenes.at(frame);
+    totals.place_seconds = scenes.placing_seconds();
     const InterruptWatch interrupt;
     RenderControl control;
     if (show_progress) {
@@ -297,26 +227,92 @@ int run_render(const RenderCommand& cmd) {
       return kExitFailure;
     }
   }
-  {
-    const SignalBlock block;
-    const auto write = [&](const std::string& path, const Image& image) {
-      if (write_png(path, encode_srgb8(image), error, totals.last.threads)) return true;
-      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-      return false;
-    };
-    if (!sink.finish(error)) {
-      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-      return kExitFailure;
-    }
-    if (cmd.aa_debug &&
-        (!write(outputs[1], refined_pixels_in_red(film)) || !write(outputs[2], refinement_heat_map(film))))
-      return kExitFailure;
+  return std::nullopt;
+}
+
+// Finishes the output (the GIF is written at the end) and --aa-debug's images.
+bool finish_outputs(const RenderOutputs& outputs, FrameSink& sink, const Film& film, unsigned threads) {
+  const SignalBlock block;
+  std::string error;
+  const auto write = [&](const std::string& path, const Image& image) {
+    if (write_png(path, encode_srgb8(image), error, threads)) return true;
+    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+    return false;
+  };
+  if (!sink.finish(error)) {
+    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+    return false;
   }
+  return outputs.aa_refined.empty() ||
+         (write(outputs.aa_refined, refined_pixels_in_red(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
+}
+
+void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
+                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written) {
+  const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
+  const unsigned threads = t.last.threads;
+  if (frames.count() == 1) {
+    std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s\n",
+                 cmd.scene.c_str(), settings.width, settings.height, t.seconds, load_seconds,
+                 format_count(static_cast<double>(t.rays.total())).c_str(), format_ray_counts(t.rays).c_str(),
+                 rate / 1e6, threads, threads == 1 ? "" : "s");
+  } else {
+    std::fprintf(stderr,
+                 "rendered %s: frames %d-%d (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
+                 "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s\n",
+                 cmd.scene.c_str(), frames.first, frames.last, frames.count(), settings.width, settings.height,
+                 t.seconds / frames.count(), 1e3 * t.place_seconds / frames.count(), t.seconds + t.place_seconds,
+                 load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
+                 threads == 1 ? "" : "s");
+  }
+  const double pixels = static_cast<double>(pixel_count(settings)) * frames.count();
+  std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
+               static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
+               100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
+  if (written.size() <= 3) {
+    for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
+  } else {
+    std::printf("wrote %s ... %s (%zu files)\n", written.front().c_str(), written.back().c_str(), written.size());
+  }
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& cmd) {
+  // Check the arguments.
+  const std::optional<RenderRequest> request = check_arguments(cmd);
+  if (!request) return kExitBadInput;
+
+  // Load: the first frame asked for is the one built with the scene.
+  const auto load_start = std::chrono::steady_clock::now();
+  LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files);
+  if (request->frames_given) options.frame = request->frames.first;
+  Diagnostics diags;
+  const std::optional<LoadedScene> loaded = load_scene(cmd.scene, options, diags);
+  print_diagnostics(stderr, diags);
+  if (!loaded) return kExitBadInput;
+  const FrameRange frames = request->frames_given ? request->frames : FrameRange{loaded->frame, loaded->frame};
+  const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, loaded->inputs);
+  if (!outputs) return kExitBadInput;
+  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+  const RenderSettings settings = with_overrides(loaded->settings, cmd);
+  if (!check_settings(cmd, settings, frames, loaded->graph.animated)) return kExitBadInput;
+
+  // Render the frames.
+  FrameSink sink(request->kind, request->output, settings.width, settings.height, loaded->graph.timeline.fps,
+                 frames.count(), cmd.dither, resolve_thread_count(settings.threads));
+  RenderTotals totals;
+  Film film;
+  if (const std::optional<int> stop = render_frames(cmd, *loaded, settings, frames, sink, film, totals)) return *stop;
+
+  // Write and summarise.
+  if (!finish_outputs(*outputs, sink, film, totals.last.threads)) return kExitFailure;
   if (!cmd.quiet) {
     print_summary(cmd, settings, frames, totals, load_seconds, sink.written());
     if (cmd.aa_debug) {
-      std::printf("wrote %s (the image, refined pixels in red)\n", outputs[1].c_str());
-      std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n", outputs[2].c_str());
+      std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
+      std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",
+                  outputs->aa_depth.c_str());
     }
   }
   return kExitSuccess;

@@ -10,7 +10,8 @@ namespace rt {
 // outside_files: --allow-outside-files (LoadLimits::outside_files).
 inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt,
                                     bool outside_files = false) {
-  LoadOptions options{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::move(camera)};
+  LoadOptions options{threads, integrator_names(), pixel_sampler_names(), LoadLimits{},
+                      true,    std::move(camera),  std::nullopt};
   options.limits.outside_files = outside_files;
   return options;
 }

@@ -42,7 +42,7 @@ Light transform_light(const Light& light, const Mat4& m) {
       light);
 }
 
-std::vector<Mat4> SceneGraph::world_transforms(float seconds) const {
+Pose SceneGraph::pose_at(float seconds) const {
   std::vector<Trs> local(nodes.size());
   for (size_t i = 0; i < nodes.size(); ++i) local[i] = nodes[i].trs;
   for (const Track& track : tracks)
@@ -53,11 +53,11 @@ std::vector<Mat4> SceneGraph::world_transforms(float seconds) const {
     const Mat4 m = n.matrix ? *n.matrix : local[i].matrix();
     world[i] = n.parent >= 0 ? world[static_cast<size_t>(n.parent)] * m : m;
   }
-  return world;
+  return Pose{seconds, std::move(world)};
 }
 
-PrimitiveSet SceneGraph::place(float seconds, std::vector<PlacementIssue>* issues) const {
-  const std::vector<Mat4> world = world_transforms(seconds);
+PrimitiveSet SceneGraph::place(const Pose& pose, std::vector<PlacementIssue>* issues) const {
+  const std::vector<Mat4>& world = pose.world;
   const auto issue = [&](PlacementIssue::Kind kind, size_t node) {
     if (issues) issues->push_back(PlacementIssue{kind, static_cast<uint32_t>(node)});
   };
@@ -91,12 +91,8 @@ PrimitiveSet SceneGraph::place(float seconds, std::vector<PlacementIssue>* issue
   return top;
 }
 
-Scene SceneGraph::at(float seconds, const BvhBuildOptions& options, std::vector<PlacementIssue>* issues) const {
-  return at(seconds, place(seconds, issues), options);
-}
-
-Scene SceneGraph::at(float seconds, const PrimitiveSet& placed, const BvhBuildOptions& options) const {
-  const std::vector<Mat4> world = world_transforms(seconds);  // for the camera and lights on nodes
+Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuildOptions& options) const {
+  const std::vector<Mat4>& world = pose.world;  // for the camera and lights on nodes
   Scene scene;
   scene.assets = assets;
   scene.background = background;

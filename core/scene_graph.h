@@ -1,8 +1,10 @@
 // The scene as loaded, before it is placed in time: shared assets, a node tree whose local
 // transforms stay as translation, rotation and scale, what each node carries (a shape, mesh
-// primitives, a camera, lights), and the animation tracks that move nodes. at(t) places it:
-// it evaluates the tracks and the tree at time t and builds one immutable Scene, reusing every
-// mesh's object-space BVH and building only the top level over shapes and mesh instances.
+// primitives, a camera, lights), and the animation tracks that move nodes. A frame is placed in
+// two steps: pose(frame) turns the frame number into a time (the timeline's one rule) and
+// evaluates the tracks and the tree once, into every node's world transform; at(pose) builds one
+// immutable Scene from it, reusing every mesh's object-space BVH and building only the top
+// level over shapes and mesh instances (core/frame_scenes.h walks a range of frames).
 #pragma once
 
 #include <optional>
@@ -58,6 +60,12 @@ struct Timeline {
   int frame_count() const { return last_frame - first_frame + 1; }
 };
 
+// The node tree evaluated at one moment: the tracks applied, every node's world transform.
+struct Pose {
+  float seconds = 0.0f;
+  std::vector<Mat4> world;  // per node
+};
+
 // Why a node's geometry was left out of a frame.
 struct PlacementIssue {
   enum Kind { kSingular, kBeyondRange } kind;
@@ -75,16 +83,16 @@ struct SceneGraph {
   Vec3 background{0.0f};
   Vec3 ambient{0.0f};
 
-  // Every node's world transform at `seconds`, the tracks applied.
-  std::vector<Mat4> world_transforms(float seconds) const;
-  // The shapes and mesh instances where they are at `seconds` (what at() builds its BVH over).
-  PrimitiveSet place(float seconds, std::vector<PlacementIssue>* issues = nullptr) const;
-  // The frame at `seconds`. Geometry whose world transform is singular at that time (animated
-  // to a zero scale: glTF's way of hiding a part) or that reaches beyond the float range is left
-  // out, and said in `issues` when given.
-  Scene at(float seconds, const BvhBuildOptions& options, std::vector<PlacementIssue>* issues = nullptr) const;
-  // The frame for the placed primitives, with the camera and lights at `seconds`.
-  Scene at(float seconds, const PrimitiveSet& placed, const BvhBuildOptions& options) const;
+  // The tree at frame `frame` of the timeline (time frame / fps), or at any time.
+  Pose pose(int frame) const { return pose_at(timeline.seconds(frame)); }
+  Pose pose_at(float seconds) const;
+  // The shapes and mesh instances where the pose puts them (what at() builds its BVH over).
+  // Geometry whose world transform is singular (animated to a zero scale: glTF's way of hiding
+  // a part) or that reaches beyond the float range is left out, and said in `issues` when given.
+  PrimitiveSet place(const Pose& pose, std::vector<PlacementIssue>* issues = nullptr) const;
+  // The frame: the placed primitives in a BVH, the camera and lights where the pose puts them.
+  Scene at(const Pose& pose, const PrimitiveSet& placed, const BvhBuildOptions& options) const;
+  Scene at(const Pose& pose, const BvhBuildOptions& options) const { return at(pose, place(pose), options); }
 };
 
 // A light moved by a node's world transform.

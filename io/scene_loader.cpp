@@ -31,9 +31,7 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   std::vector<std::string> files;
   std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);
   if (!built) return std::nullopt;
-  const Camera& c = built->first_frame.camera;  // in the world, wherever its node put it
-  desc.camera = CameraDescription{c.position, c.position + c.forward, c.up, c.vertical_fov_degrees, 0.0f, {}};
-  return LoadedScene{std::move(desc), std::move(built->graph), std::move(built->first_frame), std::move(files)};
+  return LoadedScene{desc.render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }
 
 std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
@@ -46,7 +44,7 @@ std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOp
   std::optional<BuiltScene> built = build_scene(*desc, &*doc, options, diags, &models);
   if (!built) return std::nullopt;
   files.insert(files.end(), models.begin(), models.end());
-  return LoadedScene{std::move(*desc), std::move(built->graph), std::move(built->first_frame), std::move(files)};
+  return LoadedScene{desc->render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }
 
 }  // namespace

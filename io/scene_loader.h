@@ -10,17 +10,19 @@
 #include <string>
 #include <vector>
 
+#include "core/render_settings.h"
 #include "core/scene_graph.h"
 #include "io/base/diagnostics.h"
 #include "io/base/load_options.h"
-#include "io/scene/description.h"
 
 namespace rt {
 
+// What a render needs of a loaded scene, and no more.
 struct LoadedScene {
-  SceneDescription description;     // render settings and what the file said
-  SceneGraph graph;                 // every frame: graph.at(graph.timeline.seconds(frame), ...)
-  Scene scene;                      // the first frame
+  RenderSettings settings;          // the file's render block (defaults for a model on its own)
+  SceneGraph graph;                 // every frame: graph.at(graph.pose(frame), ...), or FrameScenes
+  int frame = 0;                    // the frame `scene` shows: LoadOptions::frame, or the timeline's first
+  Scene scene;                      // that frame, placed
   std::vector<std::string> inputs;  // every file read: the scene, glTF models, their buffers
 };
 

@@ -74,11 +74,11 @@ int run_bench(const BenchCommand& cmd) {
     std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
     return kExitBadInput;
   }
-  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(),
-              scene->description.render.width, scene->description.render.height);
+  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(), scene->settings.width,
+              scene->settings.height);
   std::vector<RenderStats> renders;
   for (const unsigned t : thread_counts) {
-    renders.push_back(best_render(scene->scene, scene->description.render, t));
+    renders.push_back(best_render(scene->scene, scene->settings, t));
     const RenderStats& r = renders.back();
     std::printf("  %u thread%s %.3f s (%.2f Mrays/s)", t, t == 1 ? "" : "s", r.seconds,
                 static_cast<double>(r.rays.total()) / r.seconds / 1e6);

@@ -46,6 +46,9 @@ struct LoadOptions {
   bool build_bvh = true;  // false: check everything, build no acceleration structure (validate)
   // A glTF camera to look through, by the camera's name (or its node's): `rtcli render --camera`.
   std::optional<std::string> camera;
+  // The frame whose Scene the loader builds (LoadedScene::scene): the first a render will show.
+  // Default: the timeline's first frame.
+  std::optional<int> frame;
 };
 
 }  // namespace rt

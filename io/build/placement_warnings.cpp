@@ -26,11 +26,11 @@ void warn_hidden_files(const SceneGraph& g, const std::vector<std::string>& poin
                      "it)");
 }
 
-void warn_stacked_copies(const SceneGraph& g, float seconds, const std::vector<std::string>& pointers,
+void warn_stacked_copies(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
                          Reporter& report) {
   // Every placement as (what: a mesh, or -1 - a shape kind; its world matrix; its node), sorted:
   // copies at one spot are neighbours.
-  const std::vector<Mat4> world = g.world_transforms(seconds);
+  const std::vector<Mat4>& world = pose.world;
   using Placement = std::pair<int64_t, std::array<float, 16>>;
   std::vector<std::pair<Placement, size_t>> copies;
   for (size_t n = 0; n < g.nodes.size(); ++n) {

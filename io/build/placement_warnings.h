@@ -19,8 +19,8 @@ inline constexpr size_t kStackedCopiesWarning = 64;
 void warn_hidden_files(const SceneGraph& g, const std::vector<std::string>& pointers,
                        const std::vector<bool>& from_file, const std::vector<PlacementIssue>& issues, Reporter& report);
 
-// From the placements at `seconds` (so that validate, which builds no BVH, says it too).
-void warn_stacked_copies(const SceneGraph& g, float seconds, const std::vector<std::string>& pointers,
+// From the placements in `pose` (so that validate, which builds no BVH, says it too).
+void warn_stacked_copies(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
                          Reporter& report);
 
 }  // namespace rt

@@ -104,11 +104,11 @@ class Builder {
       for (const NodeMesh& nm : node.meshes) assets->add_mask(nm.mesh, nm.material);
     g.assets = std::move(assets);
 
-    // The first frame, placed once: its problems are errors at the nodes concerned (nodes from
-    // glTF files scaled to nothing are parts hidden on purpose, and simply not drawn).
-    const float t0 = g.timeline.seconds(g.timeline.first_frame);
+    // The timeline's first frame, placed once: its problems are errors at the nodes concerned
+    // (nodes from glTF files scaled to nothing are parts hidden on purpose, and simply not drawn).
+    const Pose rest = g.pose(g.timeline.first_frame);
     std::vector<PlacementIssue> issues;
-    PrimitiveSet placed = g.place(t0, &issues);
+    PrimitiveSet placed = g.place(rest, &issues);
     warn_hidden_files(g, pointers_, from_file_, issues, report_);
     for (const PlacementIssue& issue : issues) {
       if (issue.kind == PlacementIssue::kSingular && from_file_[issue.node]) continue;
@@ -119,12 +119,17 @@ class Builder {
                 : "expected a shape within the single-precision range (|x| < 3.4e38) after its transforms, found one "
                   "that reaches infinity");
     }
-    warn_stacked_copies(g, t0, pointers_, report_);
+    warn_stacked_copies(g, rest, pointers_, report_);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
-    Scene first = options_.build_bvh ? g.at(t0, placed, bvh_options_) : g.at(t0, PrimitiveSet{}, bvh_options_);
-    return BuiltScene{std::move(g), std::move(first)};
+    // The frame a render shows first, with its BVH (validate builds none); another than the
+    // timeline's first is posed anew, and the first frame's placement is not built at all.
+    const int frame = options_.frame.value_or(g.timeline.first_frame);
+    Scene scene = !options_.build_bvh               ? g.at(rest, PrimitiveSet{}, bvh_options_)
+                  : frame == g.timeline.first_frame ? g.at(rest, placed, bvh_options_)
+                                                    : g.at(g.pose(frame), bvh_options_);
+    return BuiltScene{std::move(g), frame, std::move(scene)};
   }
 
   std::vector<std::string> take_files() { return std::move(files_); }

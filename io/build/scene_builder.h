@@ -20,7 +20,8 @@ namespace rt {
 
 struct BuiltScene {
   SceneGraph graph;
-  Scene first_frame;  // graph.at(the timeline's first frame); without a BVH when options.build_bvh is false
+  int frame = 0;  // options.frame, or the timeline's first frame
+  Scene scene;    // that frame, placed; without a BVH when options.build_bvh is false
 };
 
 // `source` is the scene file the description came from, for error positions (may be null).

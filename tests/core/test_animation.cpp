@@ -85,7 +85,7 @@ TEST_CASE("animation: node transforms compose parent * T * R * S, tracks replace
   child.trs.scale = Vec3(2);
   g.nodes = {parent, child};
   // The child's origin: its translation (1, 0, 0) turned 90 degrees about Y -> (0, 0, -1), moved to x = 10.
-  std::vector<Mat4> w = g.world_transforms(0.0f);
+  std::vector<Mat4> w = g.pose_at(0.0f).world;
   Vec3 origin = Vec3(w[1] * Vec4(0, 0, 0, 1));
   CHECK(origin.x == Approx(10.0f));
   CHECK(origin.z == Approx(-1.0f));
@@ -97,7 +97,7 @@ TEST_CASE("animation: node transforms compose parent * T * R * S, tracks replace
   Track lift = vec_track(Interpolation::kLinear, {0.0f, 1.0f}, {Vec4(1, 0, 0, 0), Vec4(1, 4, 0, 0)});
   lift.node = 1;
   g.tracks = {lift};
-  w = g.world_transforms(0.5f);
+  w = g.pose_at(0.5f).world;
   origin = Vec3(w[1] * Vec4(0, 0, 0, 1));
   CHECK(origin.y == Approx(2.0f));  // the track replaced the translation; scale and parent stay
   CHECK(Vec3(w[1] * Vec4(1, 0, 0, 1)).z == Approx(-3.0f));

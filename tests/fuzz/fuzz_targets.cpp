@@ -30,7 +30,7 @@ namespace {
 
 // Small limits keep each input fast, so the fuzzer explores instead of allocating.
 LoadOptions fuzz_options() {
-  LoadOptions options{1, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::nullopt};
+  LoadOptions options{1, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::nullopt, std::nullopt};
   options.limits.scene_file_bytes = 1 << 20;
   options.limits.gltf_json_bytes = 1 << 20;
   options.limits.gltf_total_bytes = 4 << 20;
@@ -137,7 +137,7 @@ std::string scene_json(const uint8_t* data, size_t size) {
   if (!desc) return diags.has_errors() ? "" : "a rejected scene came with no error";
   auto scene = build_scene(*desc, &*doc, options, diags);
   if (!scene) return diags.has_errors() ? "" : "a scene that failed to build came with no error";
-  if (const std::string problem = scene->first_frame.bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  if (const std::string problem = scene->scene.bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
   for (const MeshGeometry& g : scene->graph.assets->meshes)
     if (const std::string problem = g.bvh.check_structure(); !problem.empty()) return "mesh BVH: " + problem;
   RenderSettings settings = desc->render;
@@ -146,7 +146,7 @@ std::string scene_json(const uint8_t* data, size_t size) {
   settings.antialias.max_depth = std::min(settings.antialias.max_depth, 1);
   settings.threads = 1;
   Image image;
-  render(scene->first_frame, settings, image);
+  render(scene->scene, settings, image);
   return "";
 }
 
@@ -253,7 +253,7 @@ std::string texture_file(const uint8_t* data, size_t size) {
   settings.width = settings.height = 4;
   settings.threads = 1;
   Image image;
-  render(built->first_frame, settings, image);
+  render(built->scene, settings, image);
   for (const Vec3& p : image.pixels)
     if (!is_finite(p)) return "a textured pixel is not finite";
   return "";

@@ -2,6 +2,8 @@
 // per-frame placement (top-level BVH only) against a full load of the same frame.
 #include <catch2/catch.hpp>
 
+#include "core/frame_scenes.h"
+
 #include "core/render/renderer.h"
 #include "tests/support/loading.h"
 
@@ -34,7 +36,7 @@ const std::string kTurn = R"({ "node": "spinner", "property": "rotate",
 
 // Where the box's centre is at `frame`.
 Vec3 box_centre(const LoadedScene& s, int frame) {
-  const std::vector<Mat4> w = s.graph.world_transforms(s.graph.timeline.seconds(frame));
+  const std::vector<Mat4> w = s.graph.pose_at(s.graph.timeline.seconds(frame)).world;
   for (size_t i = 0; i < s.graph.nodes.size(); ++i)
     if (s.graph.nodes[i].name == "box") return Vec3(w[i] * Vec4(0, 0, 0, 1));
   FAIL("no box");
@@ -80,7 +82,7 @@ TEST_CASE("animation scene: key forms, step interpolation and the default frame 
   CHECK(s.graph.timeline.last_frame == 45);  // the last key's frame
   CHECK(box_centre(s, 14).x == Approx(1.0f));
   CHECK(box_centre(s, 15).x == Approx(2.0f));
-  const std::vector<Mat4> w = s.graph.world_transforms(s.graph.timeline.seconds(15));
+  const std::vector<Mat4> w = s.graph.pose_at(s.graph.timeline.seconds(15)).world;
   for (size_t i = 0; i < s.graph.nodes.size(); ++i)
     if (s.graph.nodes[i].name == "box") CHECK(glm::length(Vec3(w[i][0])) == Approx(0.6f));  // halfway 0.4 -> 0.8
 }
@@ -120,14 +122,43 @@ TEST_CASE("animation scene: a frame placed on the loaded meshes renders as a ful
   const LoadedScene full =
       rt::test::load_scene_text("anim_forty.json", spinner_scene(R"("frames": [40, 40], )", kTurn));
   const float t = from_zero.graph.timeline.seconds(40);
-  const Scene placed = from_zero.graph.at(t, BvhBuildOptions{1});
+  const Scene placed = from_zero.graph.at(from_zero.graph.pose_at(t), BvhBuildOptions{1});
   CHECK(placed.assets == from_zero.scene.assets);  // shared, not copied
   CHECK(placed.bvh.instances().size() == from_zero.scene.bvh.instances().size());
   Image a, b, first;
-  render(placed, from_zero.description.render, a, {}, 40);
-  render(full.scene, full.description.render, b, {}, 40);
-  render(from_zero.scene, from_zero.description.render, first, {}, 40);
+  render(placed, from_zero.settings, a, {}, 40);
+  render(full.scene, full.settings, b, {}, 40);
+  render(from_zero.scene, from_zero.settings, first, {}, 40);
   REQUIRE(a.pixels.size() == b.pixels.size());
   CHECK(a.pixels == b.pixels);
   CHECK(a.pixels != first.pixels);  // and the frame did move
+}
+
+TEST_CASE("animation scene: the loader builds the frame asked for first, and FrameScenes walks the rest",
+          "[animation][io]") {
+  // `render --frames 40-41` loads with options.frame = 40: the scene built at load is frame 40,
+  // the timeline's first frame (0) is never placed into a Scene, and the next frame is posed
+  // from the same graph.
+  LoadOptions options = rt::test::load_options();
+  options.frame = 40;
+  Diagnostics diags;
+  const auto at_forty = load_scene(
+      rt::test::write_file("anim_ask_forty.json", spinner_scene(R"("frames": [0, 119], )", kTurn)), options, diags);
+  REQUIRE(at_forty);
+  CHECK(at_forty->frame == 40);
+  CHECK(at_forty->graph.timeline.first_frame == 0);
+  const LoadedScene full =
+      rt::test::load_scene_text("anim_forty_again.json", spinner_scene(R"("frames": [40, 40], )", kTurn));
+  Image asked, whole;
+  render(at_forty->scene, at_forty->settings, asked, {}, 40);
+  render(full.scene, full.settings, whole, {}, 40);
+  CHECK(asked.pixels == whole.pixels);
+
+  FrameScenes scenes(at_forty->graph, at_forty->frame, at_forty->scene, BvhBuildOptions{1});
+  CHECK(&scenes.at(40) == &at_forty->scene);  // kept, not built again
+  CHECK(scenes.placing_seconds() == 0.0);
+  Image next;
+  render(scenes.at(41), at_forty->settings, next, {}, 41);
+  CHECK(scenes.placing_seconds() > 0.0);
+  CHECK(next.pixels != asked.pixels);
 }

@@ -262,7 +262,7 @@ TEST_CASE("glTF samples: TextureCoordinateTest's squares land where their labels
   const auto loaded = load_scene(rt::test::sample_model("TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"),
                                  rt::test::load_options(), diags);
   REQUIRE(loaded);
-  RenderSettings settings = loaded->description.render;
+  RenderSettings settings = loaded->settings;
   settings.width = settings.height = 64;
   Image image;
   render(loaded->scene, settings, image);

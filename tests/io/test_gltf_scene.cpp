@@ -118,7 +118,7 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
   REQUIRE(loaded);
   CHECK(loaded->graph.animated);
   CHECK(loaded->graph.timeline.last_frame == 112);  // ceil(3.708 s * 30 fps)
-  const std::vector<Mat4> at0 = loaded->graph.world_transforms(0.0f), at1 = loaded->graph.world_transforms(1.0f);
+  const std::vector<Mat4> at0 = loaded->graph.pose_at(0.0f).world, at1 = loaded->graph.pose_at(1.0f).world;
   // The file hangs under the one node the loader makes for it: its nodes start at graph index 1.
   CHECK(at0[moved + 1][3] != at1[moved + 1][3]);  // the translated node moved
 
@@ -199,7 +199,7 @@ TEST_CASE("JSON scenes: a glTF file's materials replaced by name, its nodes anim
   CHECK(scene.materials()[left.material].transmissive());
   CHECK_FALSE(scene.materials()[right.material].transmissive());
   // The track names the node inside the file: both placements of the file move.
-  const Scene later = loaded.graph.at(1.0f, BvhBuildOptions{});
+  const Scene later = loaded.graph.at(loaded.graph.pose_at(1.0f), BvhBuildOptions{});
   for (const MeshInstance& i : later.bvh.instances()) {
     const MeshInstance& before = i.bounds.centre().x < 0 ? left : right;
     CHECK(i.bounds.centre().y - before.bounds.centre().y == Approx(3.0f).epsilon(1e-4));

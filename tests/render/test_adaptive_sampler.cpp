@@ -43,7 +43,7 @@ struct Rendered {
 };
 
 Rendered render_film(const LoadedScene& s, unsigned threads = 1, int tile = 32) {
-  RenderSettings settings = s.description.render;
+  RenderSettings settings = s.settings;
   settings.threads = threads;
   settings.tile_size = tile;
   Rendered r;
@@ -122,7 +122,7 @@ TEST_CASE("adaptive: the image is the same for any thread count and tile size", 
       return std::move(*loaded);
     }();
     s.scene.camera.aperture = 0.03f;
-    RenderSettings& settings = s.description.render;
+    RenderSettings& settings = s.settings;
     settings.width = 120;
     settings.height = 68;
     settings.antialias.max_depth = 3;

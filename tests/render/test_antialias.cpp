@@ -23,7 +23,7 @@ TEST_CASE("anti-aliased coverage of a half-plane edge converges to the covered f
                    "transform": { "translate": [-24.925, 0, -5], "rotate": [90, 0, 0], "scale": [25.075, 1, 50] } } ] })";
     const LoadedScene s = rt::test::load_scene_text("half_plane.json", json);
     Image image;
-    render(s.scene, s.description.render, image);
+    render(s.scene, s.settings, image);
     CHECK(image.at(5, 10).x == 1.0f);   // covered
     CHECK(image.at(15, 10).x == 0.0f);  // not
     return image.at(10, 10).x;

@@ -142,7 +142,7 @@ TEST_CASE("rect lights are seen by camera rays and in mirrors, and cast no shado
     "lights": [ { "type": "rect", "corner": [-0.5, -0.5, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0],
                   "color": [0.2, 0.4, 0.8] } ], "nodes": [] })");
   Image image;
-  render(s.scene, s.description.render, image);
+  render(s.scene, s.settings, image);
   CHECK(image.at(16, 16) == Vec3(0.2f, 0.4f, 0.8f));  // facing +Z, towards the camera
   CHECK(image.at(1, 1) == Vec3(0.0f));                // background beside it
 }

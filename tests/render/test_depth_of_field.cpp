@@ -42,7 +42,7 @@ TEST_CASE("aperture 0 is the pinhole image bit for bit; an aperture blurs what i
   Diagnostics diags;
   const auto scene = load_scene(rt::test::source_path("scenes/depth_of_field.json"), rt::test::load_options(), diags);
   REQUIRE(scene);
-  RenderSettings settings = scene->description.render;
+  RenderSettings settings = scene->settings;
   settings.width = 96;
   settings.height = 54;
   Image lens, pinhole, closed;

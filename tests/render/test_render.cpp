@@ -36,7 +36,7 @@ TEST_CASE("the image is the same for any thread count and tile size", "[render][
   for (const char* scene : {"scenes/primitives.json", "scenes/refraction.json", "scenes/glossy.json"}) {
     INFO(scene);
     const LoadedScene s = load(rt::test::source_path(scene));
-    RenderSettings settings = s.description.render;
+    RenderSettings settings = s.settings;
     settings.width = 160;
     settings.height = 90;
     settings.threads = 1;
@@ -52,7 +52,7 @@ TEST_CASE("the image is the same for any thread count and tile size", "[render][
 
 TEST_CASE("render statistics count camera and shadow rays", "[render]") {
   const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
-  RenderSettings settings = s.description.render;
+  RenderSettings settings = s.settings;
   Image image;
   int progress_calls = 0;
   const RenderStats stats = render(s.scene, settings, image, RenderControl{[&](const RenderProgress& p) {
@@ -77,7 +77,7 @@ namespace {
 void check_golden(const std::string& name, const std::string& scene, int width, int height) {
   const std::string golden = rt::test::source_path("tests/golden/" + name + ".png");
   const LoadedScene s = load(rt::test::source_path(scene));
-  RenderSettings settings = s.description.render;
+  RenderSettings settings = s.settings;
   if (width > 0) {
     settings.width = width;
     settings.height = height;
@@ -141,7 +141,7 @@ TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
     if (entry.path().extension() != ".json") continue;
     INFO(entry.path().string());
     const LoadedScene s = load(entry.path().string());
-    RenderSettings settings = s.description.render;
+    RenderSettings settings = s.settings;
     settings.width = 48;
     settings.height = 27;
     const Rgb8Image image = render_rgb8(s, settings);
@@ -173,7 +173,7 @@ TEST_CASE("emission: camera and mirror rays see an emissive surface's own radian
     "nodes": [{"shape": "sphere", "material": "lamp", "transform": {"translate": [0.8, 0, 1], "scale": 0.25}},
               {"shape": "cube", "material": "mirror", "transform": {"translate": [0, 0, -1.2], "scale": [3, 3, 0.1]}}]})");
   Image image;
-  render(s.scene, s.description.render, image);
+  render(s.scene, s.settings, image);
   const Vec3 centre = image.at(18, 10);  // the sphere, seen directly
   CHECK(centre.x == Approx(2.0f));
   CHECK(centre.y == Approx(1.0f));

@@ -109,8 +109,8 @@ TEST_CASE("ior 1 with transmission 1 and no absorption leaves the image behind u
           R"(, "clear": { "kd": 0, "transmission": 1, "ior": 1 })",
           R"(, { "shape": "sphere", "material": "clear", "transform": { "translate": [0, 0.8, 1], "scale": 0.8 } })"));
   RenderStats stats;
-  const Rgb8Image a = encode_srgb8(render_image(without, without.description.render));
-  const Rgb8Image b = encode_srgb8(render_image(with, with.description.render, &stats));
+  const Rgb8Image a = encode_srgb8(render_image(without, without.settings));
+  const Rgb8Image b = encode_srgb8(render_image(with, with.settings, &stats));
   CHECK(stats.rays[RayKind::kRefraction] > 500);  // the sphere was there and was crossed
   int max_diff = 0;
   for (size_t i = 0; i < a.rgb.size(); ++i) max_diff = std::max(max_diff, std::abs(a.rgb[i] - b.rgb[i]));
@@ -127,7 +127,7 @@ TEST_CASE("max_depth bounds the rays traced between two facing mirrors", "[refle
       { "shape": "plane", "material": "mirror", "transform": { "translate": [0, 0, -2], "rotate": [90, 0, 0], "scale": 10 } },
       { "shape": "plane", "material": "mirror", "transform": { "translate": [0, 0, 2], "rotate": [-90, 0, 0], "scale": 10 } } ] })");
   for (const int depth : {0, 1, 5, 64}) {
-    RenderSettings settings = s.description.render;
+    RenderSettings settings = s.settings;
     settings.max_depth = depth;
     RenderStats stats;
     render_image(s, settings, &stats);
@@ -152,13 +152,13 @@ TEST_CASE("glossy width 0 is the mirror image bit for bit; --no-glossy too", "[g
   const LoadedScene mirror = rt::test::load_scene_text("mirror_ball.json", glossy_scene(""));
   const LoadedScene zero = rt::test::load_scene_text("zero_width.json", glossy_scene(R"(, "glossy": 0)"));
   const LoadedScene wide = rt::test::load_scene_text("wide.json", glossy_scene(R"(, "glossy": 0.3)"));
-  const Image reference = render_image(mirror, mirror.description.render);
-  CHECK(render_image(zero, zero.description.render).pixels == reference.pixels);
-  RenderSettings off = wide.description.render;
+  const Image reference = render_image(mirror, mirror.settings);
+  CHECK(render_image(zero, zero.settings).pixels == reference.pixels);
+  RenderSettings off = wide.settings;
   off.glossy = false;
   CHECK(render_image(wide, off).pixels == reference.pixels);
   RenderStats stats;
-  CHECK(render_image(wide, wide.description.render, &stats).pixels != reference.pixels);
+  CHECK(render_image(wide, wide.settings, &stats).pixels != reference.pixels);
   CHECK(stats.rays[RayKind::kGlossy] > 1000);
 }
 
@@ -178,7 +178,7 @@ TEST_CASE("no glossy ray goes below the surface", "[glossy]") {
   };
   const LoadedScene below = rt::test::load_scene_text("glossy_below.json", scene(-1.0f));
   RenderStats stats;
-  const Image image = render_image(below, below.description.render, &stats);
+  const Image image = render_image(below, below.settings, &stats);
   CHECK(stats.rays[RayKind::kGlossy] > 5000);
   float red = 0.0f;
   for (const Vec3& p : image.pixels) red = std::max(red, p.x);
@@ -186,7 +186,7 @@ TEST_CASE("no glossy ray goes below the surface", "[glossy]") {
   // The same box above the floor is seen in it: the test can tell.
   const LoadedScene above = rt::test::load_scene_text("glossy_above.json", scene(2.0f));
   red = 0.0f;
-  for (const Vec3& p : render_image(above, above.description.render).pixels) red = std::max(red, p.x);
+  for (const Vec3& p : render_image(above, above.settings).pixels) red = std::max(red, p.x);
   CHECK(red > 0.05f);
 }
 
@@ -206,7 +206,7 @@ TEST_CASE("a clear glass sphere's shadow is lighter than an opaque one's, and ti
   };
   const auto centre = [&](const std::string& name, const std::string& material) {
     const LoadedScene s = rt::test::load_scene_text(name, scene(material));
-    return render_image(s, s.description.render).at(2, 2);
+    return render_image(s, s.settings).at(2, 2);
   };
   const Vec3 opaque = centre("opaque.json", R"({ "kd": 0.5 })");
   const Vec3 glass = centre("glass.json", R"({ "kd": 0, "transmission": 1, "ior": 1.5 })");
@@ -245,8 +245,8 @@ TEST_CASE("nested glass: an inner object of the same index inside glass is no in
   const LoadedScene plain = rt::test::load_scene_text("nested_plain.json", scene(false));
   const LoadedScene nested = rt::test::load_scene_text("nested_inner.json", scene(true));
   RenderStats a, b;
-  const Rgb8Image without = encode_srgb8(render_image(plain, plain.description.render, &a));
-  const Rgb8Image with = encode_srgb8(render_image(nested, nested.description.render, &b));
+  const Rgb8Image without = encode_srgb8(render_image(plain, plain.settings, &a));
+  const Rgb8Image with = encode_srgb8(render_image(nested, nested.settings, &b));
   CHECK(b.rays[RayKind::kRefraction] > a.rays[RayKind::kRefraction] + 500);  // the inner sphere was crossed
   int max_diff = 0;
   for (size_t i = 0; i < without.rgb.size(); ++i) max_diff = std::max(max_diff, std::abs(without.rgb[i] - with.rgb[i]));
@@ -263,7 +263,7 @@ TEST_CASE("a ray that escapes inside an absorbing medium keeps its non-absorbed 
     "background": 0.5,
     "materials": { "tinted": { "kd": 0, "transmission": 1, "ior": 1, "absorption": [1, 0, 0] } },
     "nodes": [ { "shape": "plane", "material": "tinted", "transform": { "scale": 10 } } ] })");
-  const Vec3 centre = render_image(s, s.description.render).at(1, 1);
+  const Vec3 centre = render_image(s, s.settings).at(1, 1);
   CHECK(centre.x == 0.0f);
   CHECK(centre.y == Approx(0.5f));
   CHECK(centre.z == Approx(0.5f));

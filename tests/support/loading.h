@@ -15,7 +15,8 @@
 namespace rt::test {
 
 inline LoadOptions load_options(unsigned threads = 1) {
-  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::nullopt};
+  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{},
+                     true,    std::nullopt,       std::nullopt};
 }
 
 // Writes `json` to the scratch folder as `name` and loads it; the test stops (showing every
