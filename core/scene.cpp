@@ -10,6 +10,21 @@ SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
   return si;
 }
 
+bool Scene::intersect(Ray& ray, SceneHit& out) const {
+  out.surface = bvh.intersect(ray, out.hit);
+  out.light = nullptr;
+  for (const Light& light : lights) {
+    const RectLight* rect = std::get_if<RectLight>(&light);
+    float t;
+    if (rect && rect->intersect(ray, t, &out.light_uv)) {  // nearer than the surface and the lights before
+      ray.tmax = t;
+      out.light = rect;
+      out.surface = false;
+    }
+  }
+  return out.surface || out.light;
+}
+
 uint32_t Scene::material_of(uint32_t prim) const {
   return bvh.is_instance(prim) ? bvh.instance(prim).material : bvh.shape(prim).material;
 }

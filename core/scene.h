@@ -13,6 +13,17 @@
 
 namespace rt {
 
+// What a ray meets first: a surface in the BVH, or the face of an area light. Area lights are
+// not in the BVH (they cast no shadow: shadow rays ask occluded()), but a camera, mirror or glossy
+// ray that meets one before any surface sees it. The scene finds them, so that no integrator
+// needs a loop of its own (as pbrt's, Mitsuba's and Tungsten's emitters).
+struct SceneHit {
+  bool surface = false;
+  Hit hit;                           // when surface: the BVH's record, for Scene::surface()
+  const RectLight* light = nullptr;  // else, when the ray met an area light's face
+  Vec2 light_uv{0.0f};               // where on it: along edge1 and edge2, each in [0, 1]
+};
+
 struct Scene {
   std::shared_ptr<const SceneAssets> assets = std::make_shared<const SceneAssets>();
   Camera camera;
@@ -24,7 +35,10 @@ struct Scene {
   const std::vector<Material>& materials() const { return assets->materials; }
   const std::vector<Texture>& textures() const { return assets->textures; }
 
+  // The closest surface (ray.tmax becomes its distance); area lights are not surfaces.
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
+  // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
+  bool intersect(Ray& ray, SceneHit& out) const;
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
   // The material index of primitive `prim` of the top-level BVH.
   uint32_t material_of(uint32_t prim) const;

@@ -26,9 +26,10 @@ struct RectLight {
   Vec3 normal() const { return glm::normalize(glm::cross(edge1, edge2)); }
   Vec3 point(Vec2 u) const { return corner + u.x * edge1 + u.y * edge2; }
 
-  // Where the ray meets the rectangle's face that shows light, in (ray.tmin, ray.tmax); false if
-  // it misses it or meets the dark back of a one-sided light.
-  bool intersect(const Ray& ray, float& t) const {
+  // Where the ray meets the rectangle's face that shows light, in (ray.tmin, ray.tmax), and the
+  // point's coordinates along the edges (each in [0, 1]); false if it misses it or meets the dark
+  // back of a one-sided light.
+  bool intersect(const Ray& ray, float& t, Vec2* along = nullptr) const {
     const Vec3 n = glm::cross(edge1, edge2);
     const float facing = glm::dot(ray.direction, n);
     if (facing == 0.0f || (!two_sided && facing > 0.0f)) return false;
@@ -40,6 +41,7 @@ struct RectLight {
     const float q1 = glm::dot(q, edge1), q2 = glm::dot(q, edge2);
     const float det = e11 * e22 - e12 * e12;
     const float s = (q1 * e22 - q2 * e12) / det, u = (q2 * e11 - q1 * e12) / det;
+    if (along) *along = Vec2(s, u);
     return s >= 0.0f && s <= 1.0f && u >= 0.0f && u <= 1.0f;
   }
 };

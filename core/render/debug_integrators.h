@@ -4,7 +4,9 @@
 //   depth    distance from the camera, linear from white at the nearest point of the scene's
 //            bounds to black at their farthest corner;
 //   albedo   the evaluated diffuse colour (kd, less what the material transmits).
-// A ray that hits nothing is black. One class, parameterised by the view of the hit.
+// An area light's face seen first is drawn as a surface would be (its normal, its coordinates
+// along its edges, its distance; no albedo: black). A ray that hits nothing is black. One
+// class, parameterised by the view of the hit.
 #pragma once
 
 #include "core/render/integrator.h"
@@ -16,17 +18,24 @@ struct DebugHit {
   Ray ray;  // the camera ray
   SurfaceInteraction surface;
   float distance = 0.0f;  // from the ray's origin
+  bool light = false;     // an area light's face: `surface` has its normal and uv, no material
 };
 
 template <Vec3 (*View)(const DebugHit&, const Scene&)>
 class DebugIntegrator final : public Integrator {
  public:
   Vec3 radiance(const Ray& camera_ray, int /*depth*/, TraceContext& ctx) const override {
-    DebugHit h{camera_ray, {}, 0.0f};
-    Hit hit;
-    if (!ctx.scene.intersect(h.ray, hit)) return Vec3(0.0f);
-    h.surface = ctx.scene.surface(h.ray, hit);
-    h.distance = hit.t * glm::length(h.ray.direction);
+    DebugHit h{camera_ray, {}, 0.0f, false};
+    SceneHit met;
+    if (!ctx.scene.intersect(h.ray, met)) return Vec3(0.0f);
+    h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
+    if (met.light) {
+      h.light = true;
+      h.surface.shading_normal = met.light->normal();
+      h.surface.texcoord[0].uv = met.light_uv;
+    } else {
+      h.surface = ctx.scene.surface(h.ray, met.hit);
+    }
     return View(h, ctx.scene);
   }
 };
@@ -53,6 +62,7 @@ inline Vec3 depth_view(const DebugHit& h, const Scene& scene) {
 }
 
 inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
+  if (h.light) return Vec3(0.0f);
   return evaluate_surface(scene.materials()[h.surface.material], h.surface, h.ray.direction, scene.textures()).diffuse;
 }
 

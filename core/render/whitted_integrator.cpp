@@ -23,21 +23,14 @@ Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int depth, TraceContext&
 Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
   Ray ray = incoming;
-  Hit hit;
-  bool found = scene.intersect(ray, hit);
+  SceneHit met;
+  scene.intersect(ray, met);
   Vec3 radiance = scene.background;
-  // Area lights are not in the BVH (they cast no shadow); a ray that meets one before any surface
-  // sees its emitted radiance, so mirrors show the light's shape.
-  for (const Light& light : scene.lights) {
-    const RectLight* rect = std::get_if<RectLight>(&light);
-    float t;
-    if (rect && rect->intersect(ray, t)) {
-      ray.tmax = t;
-      radiance = rect->color;
-      found = false;
-    }
-  }
-  if (found) {
+  // An area light's face seen before any surface shows its emitted radiance, so mirrors show
+  // the light's shape.
+  if (met.light) radiance = met.light->color;
+  if (met.surface) {
+    const Hit& hit = met.hit;
     const SurfaceInteraction si = scene.surface(ray, hit);
     const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
     const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/direct_lighting.h"
+#include "core/render/integrator.h"
 #include "core/render/renderer.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
@@ -145,4 +146,38 @@ TEST_CASE("rect lights are seen by camera rays and in mirrors, and cast no shado
   render(s.scene, s.settings, image);
   CHECK(image.at(16, 16) == Vec3(0.2f, 0.4f, 0.8f));  // facing +Z, towards the camera
   CHECK(image.at(1, 1) == Vec3(0.0f));                // background beside it
+}
+
+TEST_CASE("rect light: the scene's intersection finds its face, so every integrator sees it", "[lights]") {
+  // The 2 x 2 light at height 4 facing down, over the slab at height 2.
+  const LoadedScene s = rt::test::load_scene_text("rect-found.json", shadow_scene(true));
+  // Looking up from below the slab's edge at x = 0.5 (the slab covers x < 0): the light's face.
+  Ray up(Vec3(0.5f, 1.0f, 0.5f), Vec3(0.0f, 1.0f, 0.0f));
+  SceneHit met;
+  REQUIRE(s.scene.intersect(up, met));
+  CHECK_FALSE(met.surface);
+  REQUIRE(met.light);
+  CHECK(up.tmax == Approx(3.0f));
+  CHECK(met.light_uv.x == Approx(0.75f));
+  CHECK(met.light_uv.y == Approx(0.75f));
+  // Under the slab, the slab comes first; the surface-only intersection never reports a light.
+  Ray blocked(Vec3(-0.5f, 1.0f, 0.5f), Vec3(0.0f, 1.0f, 0.0f));
+  REQUIRE(s.scene.intersect(blocked, met));
+  CHECK(met.surface);
+  CHECK_FALSE(met.light);
+  Ray through(Vec3(0.5f, 1.0f, 0.5f), Vec3(0.0f, 1.0f, 0.0f));
+  Hit hit;
+  CHECK_FALSE(s.scene.intersect(through, hit));
+  // From above, a one-sided light shows its dark back: nothing is met (the slab is at x < 0).
+  Ray down(Vec3(0.5f, 6.0f, 0.5f), Vec3(0.0f, -1.0f, 0.0f));
+  CHECK_FALSE(s.scene.intersect(down, met));
+
+  // A debug view sees the light with no loop of its own: its normal, (0, -1, 0), mapped to colour.
+  const auto normals = make_integrator("normals");
+  RayCounters counters;
+  TraceContext ctx{s.scene, s.settings, counters, SampleStream(1, 0, 0, 0)};
+  const Vec3 seen = normals->radiance(Ray(Vec3(0.5f, 1.0f, 0.5f), Vec3(0.0f, 1.0f, 0.0f)), 0, ctx);
+  CHECK(seen.x == Approx(0.5f));
+  CHECK(seen.y == Approx(0.0f));
+  CHECK(seen.z == Approx(0.5f));
 }
