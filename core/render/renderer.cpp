@@ -2,13 +2,11 @@
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
+#include "core/parallel_for.h"
 #include "core/render/pixel_sampler.h"
 
 namespace rt {
@@ -43,9 +41,6 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   std::atomic<uint64_t> pixels_done{0}, rays_done{0};
   std::atomic<bool> stopped{false};
   std::vector<RayCounters> counters(threads);
-  std::mutex mutex;
-  std::condition_variable finished;
-  unsigned running = threads;
 
   const auto worker = [&](unsigned index) {
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
@@ -74,27 +69,12 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
       done[static_cast<size_t>(tile.index)].notify_all();
     }
     counters[index] = mine;
-    std::lock_guard lock(mutex);
-    if (--running == 0) finished.notify_all();
   };
-
-  std::vector<std::jthread> pool;
-  pool.reserve(threads);
-  for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker, i);
-  const auto report = [&] {
+  // The calling thread reports progress while the workers render.
+  run_workers(threads, worker, [&] {
     if (control.progress)
       control.progress(RenderProgress{pixels_done.load(), pixel_count(settings), rays_done.load(), elapsed()});
-  };
-  {
-    std::unique_lock lock(mutex);
-    while (!finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; })) {
-      lock.unlock();
-      report();
-      lock.lock();
-    }
-  }
-  pool.clear();  // joins
-  report();
+  });
 
   RenderStats stats;
   stats.seconds = elapsed();

@@ -3,8 +3,9 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
+#include <vector>
+
+#include "core/parallel_for.h"
 
 namespace rt {
 namespace {
@@ -64,17 +65,11 @@ void compress_band(const Rgb8Image& image, int y0, int y1, bool last, Band& band
 std::vector<uint8_t> encode_png(const Rgb8Image& image, unsigned threads) {
   const int bands = std::max(1, (image.height + kRowsPerBand - 1) / kRowsPerBand);
   std::vector<Band> compressed(static_cast<size_t>(bands));
-  std::atomic<int> next{0};
-  const auto work = [&] {
-    for (int b = next++; b < bands; b = next++)
-      compress_band(image, b * kRowsPerBand, std::min(image.height, (b + 1) * kRowsPerBand), b == bands - 1,
-                    compressed[static_cast<size_t>(b)]);
-  };
-  {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < std::min<unsigned>(threads, static_cast<unsigned>(bands)); ++t) pool.emplace_back(work);
-    work();
-  }
+  parallel_for(static_cast<size_t>(bands), threads, 1, [&](unsigned, size_t item) {
+    const int b = static_cast<int>(item);
+    compress_band(image, b * kRowsPerBand, std::min(image.height, (b + 1) * kRowsPerBand), b == bands - 1,
+                  compressed[item]);
+  });
 
   std::vector<uint8_t> idat{0x78, 0x01};  // zlib header: deflate, 32 KiB window, fastest
   uLong adler = 1;
