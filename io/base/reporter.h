@@ -2,7 +2,9 @@
 // reports about and, once that file's text is known, finds each JSON pointer's line:column and
 // excerpt in it (a PlaceFinder); every error and warning becomes a Diagnostic in one collection.
 // Scene files (io/json/reader.h), glTF files (io/gltf/) and the builder all report this way, so
-// `render`, `validate`, `--quiet` and `--json` see every problem alike.
+// `render`, `validate`, `--quiet` and `--json` see every problem alike. A leaf that reads or
+// writes one file (io/base/input_file.h, the image codecs in io/image/) knows no pointer: it
+// returns why it failed, as a value, to the one caller that reports it here.
 #pragma once
 
 #include <functional>

@@ -3,6 +3,7 @@
 // absurd nesting. Each is refused with a sentence, quickly and before any large allocation.
 #include <sys/stat.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -35,6 +36,8 @@ struct Outcome {
   bool loaded = false;
   std::string error;
   double seconds = 0.0;
+  std::string pointer;  // the first error's, inside the glTF file
+  size_t line = 0, column = 0;
 };
 
 Outcome import_file(const std::string& path, const LoadLimits& limits = {}) {
@@ -43,6 +46,11 @@ Outcome import_file(const std::string& path, const LoadLimits& limits = {}) {
   Outcome o;
   o.loaded = import_gltf(path, std::nullopt, limits, error).has_value();
   o.error = error.message;
+  if (const Diagnostic* d = error.first_error()) {
+    o.pointer = d->pointer;
+    o.line = d->line;
+    o.column = d->column;
+  }
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return o;
 }
@@ -245,4 +253,53 @@ TEST_CASE("glTF hostile: instancing shares a mesh; the instance limit counts pla
   CHECK_FALSE(load_scene(model, options, few));
   REQUIRE(few.has_errors());
   CHECK_THAT(few.all().front().message, Catch::Contains("at most 0 triangles in a scene's meshes"));
+}
+
+TEST_CASE("glTF hostile: each refusal names its JSON pointer in the file, and a .gltf's line:column",
+          "[io][gltf][hostile][errors]") {
+  const auto check = [](const char* name, const Json& doc, const std::string& pointer) {
+    // Written over several lines, so that the line is not always 1.
+    const std::string text = [&] {
+      Json full = doc;
+      full["asset"] = {{"version", "2.0"}};
+      full["buffers"] = {{{"byteLength", 48},
+                          {"uri", "data:application/octet-stream;base64," + rt::test::base64(square_positions())}}};
+      return full.dump(2);
+    }();
+    const std::string path = rt::test::write_file(name, text);
+    const Outcome o = import_file(path);
+    INFO(name << ": " << o.error);
+    CHECK_FALSE(o.loaded);
+    CHECK(o.pointer == pointer);
+    // The line:column is where the pointer's value starts in the text.
+    REQUIRE(o.line > 1);
+    size_t offset = 0;
+    for (size_t line = 1; line < o.line; ++line) offset = text.find('\n', offset) + 1;
+    const std::string key = pointer.substr(pointer.rfind('/') + 1);
+    const std::string before = text.substr(offset, o.column - 1);
+    const bool in_array = std::isdigit(static_cast<unsigned char>(key[0]));
+    if (!in_array) CHECK(before.find("\"" + key + "\"") != std::string::npos);
+  };
+  Json doc = triangle();
+  doc["bufferViews"][0]["byteOffset"] = 18446744073709551600ull;
+  check("pointer-wrap.gltf", doc, "/bufferViews/0/byteLength");
+  doc = triangle();
+  doc["bufferViews"][0]["byteStride"] = 8;  // smaller than a VEC3 of floats (tinygltf refuses 13 itself)
+  check("pointer-stride.gltf", doc, "/bufferViews/0/byteStride");
+  doc = triangle();
+  doc["accessors"][0]["count"] = 400;
+  check("pointer-count.gltf", doc, "/accessors/0/count");
+  doc = triangle();
+  doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7;
+  check("pointer-no-accessor.gltf", doc, "/meshes/0/primitives/0/attributes/POSITION");
+  doc = triangle();
+  doc["nodes"][0]["children"] = {5};
+  check("pointer-child.gltf", doc, "/nodes/0/children/0");
+  doc = triangle();
+  doc["extensionsUsed"] = doc["extensionsRequired"] = {"EXT_meshopt_compression"};
+  check("pointer-required.gltf", doc, "/extensionsRequired/0");
+  doc = triangle();
+  doc["animations"] = {{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+                        {"samplers", {{{"input", 0}, {"output", 0}, {"interpolation", "SMOOTH"}}}}}};
+  check("pointer-interpolation.gltf", doc, "/animations/0/samplers/0/interpolation");
 }
