@@ -124,7 +124,7 @@ TEST_CASE("cli: Ctrl-C stops a render within a second and writes nothing", "[cli
   CHECK(r.code == 130);
   CHECK_THAT(r.output, Catch::Contains("interrupted after") && Catch::Contains("nothing written"));
   // Stopped within a second of the signal; the margin is for a loaded 2-core CI machine.
-  CHECK(seconds < delay + 2.0);
+  CHECK(seconds < delay + rt::test::kStopMargin);
   CHECK_FALSE(fs::exists(out));
   CHECK_FALSE(has_temporary_files(output_path("interrupted")));
 }
