@@ -3,8 +3,14 @@
 namespace rt {
 
 Place Reporter::place(const std::string& pointer, Anchor anchor) const {
-  Place p{file_, 0, 0, pointer, ""};
-  if (find_) find_(pointer, anchor, p);
+  if (last_asked_ && last_asked_->first == pointer && last_asked_->second == anchor) return last_place_;
+  Place p{file_, 0, 0, pointers_shown_ ? pointer : "", ""};
+  if (find_ && pointers_shown_ && places_found_ < kPlacesPerFile) {
+    ++places_found_;
+    find_(pointer, anchor, p);
+  }
+  last_asked_ = std::make_pair(pointer, anchor);
+  last_place_ = p;
   return p;
 }
 

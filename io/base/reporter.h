@@ -8,7 +8,9 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "io/base/diagnostics.h"
 
@@ -18,17 +20,26 @@ namespace rt {
 enum class Anchor { kValue, kKey, kParent };
 
 // Where `pointer` (with `anchor`) lies in the reported file. Fills line, column and excerpt; may
-// leave them 0 and empty (a binary file, a pointer that names nothing), and may clear the pointer
-// (one into a description the user never wrote: a model rendered on its own).
+// leave them 0 and empty (a binary file, a pointer that names nothing).
 using PlaceFinder = std::function<void(const std::string& pointer, Anchor anchor, Place& place)>;
 
 class Reporter {
  public:
-  Reporter(Diagnostics& out, std::string file, PlaceFinder find = {})
-      : out_(out), file_(std::move(file)), find_(std::move(find)) {}
+  // Finding a place scans the file's text, so only this many problems per file get one (line,
+  // column, excerpt); later ones keep their pointer. A hostile file with a warning per primitive
+  // then costs time linear in its size, not quadratic.
+  static constexpr size_t kPlacesPerFile = 100;
+
+  // pointers_shown = false: the pointers name a description the user never wrote (a model
+  // rendered on its own), so reports carry none.
+  Reporter(Diagnostics& out, std::string file, PlaceFinder find = {}, bool pointers_shown = true)
+      : out_(out), file_(std::move(file)), find_(std::move(find)), pointers_shown_(pointers_shown) {}
 
   // Once the file's text has been read (a glTF file's JSON): positions from then on.
-  void find_places_with(PlaceFinder find) { find_ = std::move(find); }
+  void find_places_with(PlaceFinder find) {
+    find_ = std::move(find);
+    last_asked_.reset();
+  }
 
   void error(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) {
     add(Severity::kError, pointer, std::move(message), anchor);
@@ -64,8 +75,12 @@ class Reporter {
   Diagnostics& out_;
   std::string file_;
   PlaceFinder find_;
+  bool pointers_shown_ = true;
   size_t errors_ = 0;
   bool over_limit_ = false;
+  mutable size_t places_found_ = 0;
+  mutable std::optional<std::pair<std::string, Anchor>> last_asked_;  // many reports name one pointer
+  mutable Place last_place_;
 };
 
 }  // namespace rt

@@ -296,7 +296,7 @@ class Builder {
   // has no scene file: its description's pointers are not the user's, so none is shown.
   static Reporter scene_reporter(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags) {
     if (source) return Reporter(diags, desc.path, json_places(*source));
-    return Reporter(diags, desc.path, [](const std::string&, Anchor, Place& place) { place.pointer.clear(); });
+    return Reporter(diags, desc.path, {}, false);
   }
 
   const SceneDescription& desc_;

@@ -198,3 +198,26 @@ TEST_CASE("cli limits: a glTF file whose only node is singular says it draws not
   CHECK_THAT(r.output, Catch::Contains("warning: the glTF file has no triangles to render: every node of it that "
                                        "carries a mesh has a singular world transform"));
 }
+
+TEST_CASE("cli limits: a glTF file with a warning per primitive is validated in linear time", "[cli][limits]") {
+  // 50,000 point primitives, a warning each: finding every warning's line:column in the 2 MB
+  // text took quadratic time (minutes); only the first of a file's problems are placed now.
+  std::string buffer;
+  rt::test::append<float>(buffer, {0, 0, 0, 1, 0, 0, 0, 1, 0});
+  rt::Json primitives = rt::Json::array();
+  for (int i = 0; i < 50000; ++i) primitives.push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 0}});
+  const std::string model = rt::test::write_gltf(
+      "many-warnings.gltf", buffer,
+      {{"scenes", {{{"nodes", {0}}}}},
+       {"nodes", {{{"mesh", 0}}}},
+       {"meshes", {{{"primitives", primitives}}}},
+       {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+       {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}}});
+  const Run r = rtcli_bounded("validate --json '" + model + "'");
+  CHECK(r.code == 0);  // warnings only
+  const rt::Json list = rt::Json::parse(r.output.substr(r.output.find('[')));
+  CHECK(list.size() >= 50000);
+  size_t placed = 0;
+  for (const rt::Json& d : list) placed += d["line"].is_number() ? 1 : 0;
+  CHECK(placed == 100);
+}
