@@ -9,6 +9,7 @@
 #include "cli/exit_codes.h"
 #include "cli/number_checks.h"
 #include "cli/render_command.h"
+#include "cli/suggestions.h"
 #include "cli/validate_command.h"
 #include "core/render_settings.h"
 
@@ -93,6 +94,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // A misspelt command or option gets the nearest real one, as a scene file's keys do.
+    if (e.get_exit_code() != 0) {
+      if (const auto message = unknown_argument_message(app, std::vector<std::string>(argv + 1, argv + argc))) {
+        std::fprintf(stderr, "rtcli: error: %s\nRun with --help for more information.\n", message->c_str());
+        return kExitBadInput;
+      }
+    }
     const int code = app.exit(e);  // prints help, version or the parse error
     return code == 0 ? kExitSuccess : kExitBadInput;
   }

@@ -14,6 +14,7 @@
 #include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
+#include "cli/suggestions.h"
 #include "core/frame_scenes.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
@@ -36,8 +37,8 @@ bool check_name(const char* option, const char* what, const std::string& name, c
   if (std::find(names.begin(), names.end(), name) != names.end()) return true;
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"; expected one of: %s\n", option, what, name.c_str(),
-               list.c_str());
+  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name.c_str(),
+               did_you_mean(name, names).c_str(), list.c_str());
   return false;
 }
 

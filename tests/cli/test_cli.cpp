@@ -47,6 +47,27 @@ TEST_CASE("cli: bad usage exits 2 with a message", "[cli]") {
   }
 }
 
+TEST_CASE("cli: a misspelt command, option or option value gets the nearest real one", "[cli]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"rendr scenes/default.json", "unknown command \"rendr\" (did you mean \"render\"?)"},
+      {"render scenes/default.json --widht 5", "render: unknown option \"--widht\" (did you mean \"--width\"?)"},
+      {"validate --jsn scenes/default.json", "validate: unknown option \"--jsn\" (did you mean \"--json\"?)"},
+      {"render scenes/default.json --aa adaptve",
+       "unknown anti-aliasing mode \"adaptve\" (did you mean \"adaptive\"?)"},
+      {"render scenes/default.json --integrator normal", "(did you mean \"normals\"?)"},
+  };
+  for (const auto& [args, expected] : cases) {
+    INFO(args);
+    const Run r = rtcli(args);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains(expected));
+  }
+  // Nothing near: no guess, and the list of what there is.
+  const Run far = rtcli("frobnicate");
+  CHECK(far.code == 2);
+  CHECK_THAT(far.output, Catch::Contains("unknown command \"frobnicate\"; expected one of: render, validate, bench"));
+}
+
 TEST_CASE("cli: render writes the PNG, prints a summary and where it wrote", "[cli]") {
   const std::string out = output_path("cli-default.png");
   fs::remove(out);
