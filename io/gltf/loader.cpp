@@ -134,10 +134,14 @@ class Importer {
         return fail(accessor_at(pos_it->second),
                     where + " POSITION: vertex " + to_string(i) + " is not a finite point in single precision");
     }
+    // Another attribute's accessor, read as `components` floats a vertex, as many as POSITION has.
+    const auto read_attribute = [&](int accessor, const std::string& name, int components) {
+      if (!read_float_accessor(model_, accessor, components, limits_.vertices, raw, use(name))) return false;
+      if (raw.size() / static_cast<size_t>(components) == n) return true;
+      return fail(accessor_at(accessor) + "/count", where + ": " + name + " and POSITION counts differ");
+    };
     if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-      if (!read_float_accessor(model_, it->second, 3, limits_.vertices, raw, use("NORMAL"))) return false;
-      if (raw.size() / 3 != n)
-        return fail(accessor_at(it->second) + "/count", where + ": NORMAL and POSITION counts differ");
+      if (!read_attribute(it->second, "NORMAL", 3)) return false;
       ip.mesh.normals.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const Vec3 v(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
@@ -148,9 +152,7 @@ class Importer {
     for (const auto& [name, uvs] : {std::pair{"TEXCOORD_0", &ip.mesh.uvs}, std::pair{"TEXCOORD_1", &ip.mesh.uvs1}}) {
       const auto it = prim.attributes.find(name);
       if (it == prim.attributes.end()) continue;
-      if (!read_float_accessor(model_, it->second, 2, limits_.vertices, raw, use(name))) return false;
-      if (raw.size() / 2 != n)
-        return fail(accessor_at(it->second) + "/count", where + ": " + name + " and POSITION counts differ");
+      if (!read_attribute(it->second, name, 2)) return false;
       uvs->resize(n);
       for (size_t i = 0; i < n; ++i) (*uvs)[i] = Vec2(raw[2 * i], raw[2 * i + 1]);
     }
@@ -160,9 +162,7 @@ class Importer {
                                      model_.accessors[static_cast<size_t>(it->second)].type == TINYGLTF_TYPE_VEC3
                                  ? 3
                                  : 4;
-      if (!read_float_accessor(model_, it->second, components, limits_.vertices, raw, use("COLOR_0"))) return false;
-      if (raw.size() / static_cast<size_t>(components) != n)
-        return fail(accessor_at(it->second) + "/count", where + ": COLOR_0 and POSITION counts differ");
+      if (!read_attribute(it->second, "COLOR_0", components)) return false;
       ip.mesh.colors.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const float* c = &raw[static_cast<size_t>(components) * i];
@@ -171,9 +171,7 @@ class Importer {
       }
     }
     if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
-      if (!read_float_accessor(model_, it->second, 4, limits_.vertices, raw, use("TANGENT"))) return false;
-      if (raw.size() / 4 != n)
-        return fail(accessor_at(it->second) + "/count", where + ": TANGENT and POSITION counts differ");
+      if (!read_attribute(it->second, "TANGENT", 4)) return false;
       ip.mesh.tangents.resize(n);
       for (size_t i = 0; i < n; ++i) {
         const Vec3 t(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
