@@ -7,7 +7,10 @@
 
 #include "io/build/scene_builder.h"
 #include "io/json/document.h"
+#include "io/json/locate.h"
+#include "io/json/reader.h"
 #include "io/scene/scene_parser.h"
+#include "io/scene/schema.h"
 
 namespace rt {
 namespace {
@@ -34,17 +37,34 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   return LoadedScene{desc.render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }
 
+// Schema failures at values the parser or builder already reported (or above or below them)
+// are not repeated: their messages say more. Any other gets the prefix "schema:".
+void check_schema(const JsonDocument& doc, Diagnostics& diags) {
+  const std::vector<Diagnostic> found = diags.all();
+  const JsonReader reader(doc, diags);
+  for (const SchemaError& e : check_scene_schema(doc.root)) {
+    const bool reported = std::any_of(found.begin(), found.end(), [&](const Diagnostic& d) {
+      return d.severity == Severity::kError && pointers_related(d.pointer, e.pointer);  // "" contains every pointer
+    });
+    if (!reported) reader.error(e.pointer, "schema: " + e.message);
+  }
+}
+
+// Every check runs whatever the others found, so one run reports every problem: a parse error
+// does not stop the textures, glTF files and transforms from being checked (without a BVH).
 std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
   std::optional<JsonDocument> doc = read_json_file(path, options.limits.scene_file_bytes, diags);
   if (!doc) return std::nullopt;
-  std::optional<SceneDescription> desc = parse_scene(*doc, options, diags);
-  if (!desc) return std::nullopt;
-  std::vector<std::string> files{path};
+  const SceneDescription desc = parse_scene_partial(*doc, options, diags);
+  LoadOptions build_options = options;
+  build_options.build_bvh = options.build_bvh && !diags.has_errors();
   std::vector<std::string> models;
-  std::optional<BuiltScene> built = build_scene(*desc, &*doc, options, diags, &models);
-  if (!built) return std::nullopt;
+  std::optional<BuiltScene> built = build_scene(desc, &*doc, build_options, diags, &models);
+  check_schema(*doc, diags);
+  if (!built || diags.has_errors()) return std::nullopt;
+  std::vector<std::string> files{path};
   files.insert(files.end(), models.begin(), models.end());
-  return LoadedScene{desc->render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
+  return LoadedScene{desc.render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }
 
 }  // namespace
@@ -55,14 +75,18 @@ bool is_gltf_path(const std::string& path) {
 }
 
 std::optional<LoadedScene> load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
+  std::optional<LoadedScene> loaded;
   try {
-    return is_gltf_path(path) ? load_gltf_model(path, options, diags) : load_json_scene(path, options, diags);
+    loaded = is_gltf_path(path) ? load_gltf_model(path, options, diags) : load_json_scene(path, options, diags);
   } catch (const std::bad_alloc&) {
     diags.file_error(path, "ran out of memory while loading: the file asks for more than this machine has");
+    loaded.reset();
   } catch (const std::exception& e) {
     diags.file_error(path, std::string("could not be loaded: ") + e.what());
+    loaded.reset();
   }
-  return std::nullopt;
+  diags.sort_by_position();
+  return loaded;
 }
 
 }  // namespace rt

@@ -2,7 +2,9 @@
 //   .json        a scene file (schemas/scene.schema.json)
 //   .gltf/.glb   a model on its own: the whole file's default scene, framed by a default camera
 //                from the front and above, lit by a point light beside the camera
-// Every problem goes into `diags`; nothing comes back if any of them is an error. Loading never
+// Every problem goes into `diags`, sorted by position; nothing comes back if any of them is an
+// error. Every check runs (parser, builder, JSON Schema) whatever the others found, so render and
+// validate (which is this without a BVH) report the same problems. Loading never
 // throws: running out of memory or any other exception on the way becomes an error about the file.
 #pragma once
 

@@ -1,8 +1,5 @@
-// `rtcli validate`: every check the loader makes, without rendering and without building the
-// BVH, plus the JSON Schema (schemas/scene.schema.json) for scene files. One run reports every
-// problem: parse errors do not stop the glTF files and transforms from being checked. Schema
-// failures at values the loader already reported (or above or below them) are not repeated: the
-// loader's messages say more; any other is reported with the prefix "schema:".
+// `rtcli validate`: load_scene (io/scene_loader.h) without building the BVH. Render and validate
+// are one code path, so they report the same problems, in the same order, on every file.
 #pragma once
 
 #include <string>

@@ -66,6 +66,8 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
     INFO("validator said:\n" << all_messages(validate_diags));
     CHECK(validate_diags.has_errors());
     CHECK(reports(validate_diags, pointer, message, inside));
+    // One code path: the same problems, in the same order, whichever command asks.
+    CHECK(all_messages(load_diags) == all_messages(validate_diags));
 
     if (item.value()["schema"] == true) {
       ++schema_cases;
@@ -82,6 +84,13 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
   }
   CHECK(schema_cases >= 40);
   CHECK(inside_cases >= 6);  // problems inside glTF files, at their pointer and line:column
+
+  // The documentation's counts are the corpus's.
+  const std::string testing = rt::test::read_file(rt::test::source_path("docs/testing.md"));
+  const std::string limits = rt::test::read_file(rt::test::source_path("docs/errors-and-limits.md"));
+  CHECK_THAT(testing, Catch::Contains("(`tests/data/bad/`, " + std::to_string(files) + " files,"));
+  CHECK_THAT(testing, Catch::Contains("where JSON Schema can say it (" + std::to_string(schema_cases) + " of them)"));
+  CHECK_THAT(limits, Catch::Contains("one scene per class of error (" + std::to_string(files) + " of them)"));
 }
 
 TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint", "[io][schema]") {
