@@ -113,6 +113,8 @@ bool json_nesting_within(std::string_view text, size_t max_depth) {
       else if (c == '"') in_string = false;
     } else if (c == '"') {
       in_string = true;
+    } else if (const size_t end = comment_end(text, i); end != i) {
+      i = end - 1;
     } else if (c == '[' || c == '{') {
       if (++depth > max_depth) return false;
     } else if ((c == ']' || c == '}') && depth > 0) {
@@ -168,7 +170,7 @@ std::optional<JsonDocument> parse_json_text(std::string path, std::string text, 
   }
   JsonDocument doc{std::move(path), std::move(text), Json()};
   TrackingSax sax(doc.root);
-  const bool ok = Json::sax_parse(doc.text, &sax, Json::input_format_t::json, true, false);
+  const bool ok = Json::sax_parse(doc.text, &sax, Json::input_format_t::json, true, /*ignore_comments=*/true);
   if (sax.nesting_exceeded()) {
     diags.file_error(doc.path, "expected JSON nested at most " + std::to_string(TrackingSax::kMaxNesting) +
                                    " levels deep, found deeper nesting");

@@ -32,7 +32,7 @@ std::optional<JsonDocument> parse_json_text(std::string path, std::string text, 
 inline constexpr size_t kMaxJsonNesting = 512;
 
 // Whether no array or object in `text` is nested deeper than max_depth (a scan that skips
-// strings; it does not check the syntax).
+// strings and comments; it does not check the syntax).
 bool json_nesting_within(std::string_view text, size_t max_depth);
 
 // A message from nlohmann::json (also inside tinygltf's errors) without its exception-id prefix

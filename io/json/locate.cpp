@@ -4,6 +4,20 @@
 #include <cstdint>
 
 namespace rt {
+
+size_t comment_end(std::string_view text, size_t i) {
+  if (i + 1 >= text.size() || text[i] != '/') return i;
+  if (text[i + 1] == '/') {
+    const size_t newline = text.find('\n', i + 2);
+    return newline == std::string_view::npos ? text.size() : newline + 1;
+  }
+  if (text[i + 1] == '*') {
+    const size_t close = text.find("*/", i + 2);
+    return close == std::string_view::npos ? text.size() : close + 2;
+  }
+  return i;
+}
+
 namespace {
 
 // A forward scanner over well-formed JSON. Every function returns the offset just past what it
@@ -12,9 +26,14 @@ class Scanner {
  public:
   explicit Scanner(std::string_view text) : s_(text) {}
 
+  // Whitespace and comments (`// to the end of the line`, `/* ... */`), as the parser skips them.
   size_t ws(size_t i) const {
-    while (i < s_.size() && (s_[i] == ' ' || s_[i] == '\t' || s_[i] == '\n' || s_[i] == '\r')) ++i;
-    return i;
+    for (;;) {
+      while (i < s_.size() && (s_[i] == ' ' || s_[i] == '\t' || s_[i] == '\n' || s_[i] == '\r')) ++i;
+      const size_t end = comment_end(s_, i);
+      if (end == i) return i;
+      i = end;
+    }
   }
 
   // Reads the string starting at s_[i] == '"' into `out` (decoded), returns the offset after it.

@@ -30,6 +30,11 @@ struct JsonLocation {
 // a key, the last one counts, as for the parser. Nothing if the pointer names no value.
 std::optional<JsonLocation> locate_pointer(std::string_view text, std::string_view pointer);
 
+// Scene files may hold comments, `// to the end of the line` and `/* ... */` (the parser skips
+// them): the offset just past the comment starting at text[i], or i when none starts there. An
+// unclosed `/*` runs to the end of the text.
+size_t comment_end(std::string_view text, size_t i);
+
 struct LineColumn {
   size_t line = 1;    // 1-based
   size_t column = 1;  // 1-based, counting UTF-8 characters

@@ -268,3 +268,40 @@ TEST_CASE("minified files get a windowed excerpt around the error", "[io][errors
   CHECK(a.first().line == 1);
   CHECK(a.first().excerpt.size() < 300);
 }
+
+TEST_CASE("scene files may hold // and /* */ comments; positions and pointers stay right", "[io][errors]") {
+  // Brackets, quotes and "//" inside comments and strings must not confuse the scans that find
+  // positions and count nesting.
+  const std::string head = R"(// A commented scene: "quotes" and {braces} in a comment.
+{
+  /* the render block, with a [bracket]
+     over two lines */
+  "render": {"width": 32, "height": 24},  // trailing comment
+  "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], /* inline */ "fov": 45},
+  "materials": {"red": {"kd": [0.8, 0.1, 0.1], "texture_note_free": 1}},
+)";
+  const std::string tail = R"(
+  "lights": [{"type": "point", "position": [2, 4, 3]}],
+  "nodes": [{"name": "http://a//b", "shape": "sphere", "material": "red"}]  /* last */
+}
+// the end)";
+  // The unknown key is reported at its own line and column, past the comments.
+  Attempt bad = load_text("comments_bad.json", head + tail);
+  REQUIRE_FALSE(bad.loaded);
+  CHECK(bad.first().pointer == "/materials/red/texture_note_free");
+  CHECK(bad.first().line == 7);
+  CHECK(bad.first().column == 48);
+  // Fixed, it loads; the node's name keeps its "//".
+  std::string good = head;
+  good.replace(good.find(", \"texture_note_free\": 1"), std::string(", \"texture_note_free\": 1").size(), "");
+  const LoadedScene s = rt::test::load_scene_text("comments_good.json", good + tail);
+  CHECK(s.scene.bvh.primitive_count() == 1);
+  // An unclosed comment is a syntax error at the end, not a hang or a crash.
+  CHECK_FALSE(load_text("comments_open.json", "{\"render\": {} /* never closed").loaded);
+}
+
+TEST_CASE("the nesting scan skips comments", "[io][errors]") {
+  CHECK(json_nesting_within("[ // [[[[\n 1 /* [[[[ */ ]", 1));
+  CHECK_FALSE(json_nesting_within("[[ /* ] */ ]]", 1));
+  CHECK(json_nesting_within("[\"/* [[[ */\"]", 1));
+}
