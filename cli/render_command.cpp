@@ -137,6 +137,15 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   return r;
 }
 
+// Without --frame or --frames: an animated GIF or a PNG sequence shows the scene's whole
+// animation (its timeline), a PNG the timeline's first frame.
+FrameRange frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
+  if (request.frames_given) return request.frames;
+  const Timeline& t = loaded.graph.timeline;
+  if (request.kind != OutputKind::kPng && loaded.graph.animated) return FrameRange{t.first_frame, t.last_frame};
+  return FrameRange{loaded.frame, loaded.frame};
+}
+
 std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const RenderRequest& request,
                                            const FrameRange& frames, const std::vector<std::string>& inputs) {
   RenderOutputs out;
@@ -161,7 +170,8 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
 
 // The size limit on what the command line asks for, and a word about renders that will be slow
 // or show one picture many times.
-bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames, bool animated) {
+bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
+                    const SceneGraph& graph) {
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
@@ -176,9 +186,14 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
                    "rtcli: warning: this render can trace up to %llu camera rays; expect it to take a long time\n",
                    static_cast<unsigned long long>(max_camera_rays_per_frame(settings)));
   }
-  if (frames.count() > 1 && !animated)
+  const Timeline& t = graph.timeline;
+  if (frames.count() > 1 && !graph.animated)
     std::fprintf(stderr, "rtcli: warning: %s has no animation: all %d frames will show the same picture\n",
                  cmd.scene.c_str(), frames.count());
+  else if (graph.animated && (frames.first < t.first_frame || frames.last > t.last_frame))
+    std::fprintf(stderr,
+                 "rtcli: warning: --frames %d-%d goes beyond the scene's animation, frames %d-%d (at %g fps)\n",
+                 frames.first, frames.last, t.first_frame, t.last_frame, static_cast<double>(t.fps));
   return true;
 }
 
@@ -292,12 +307,12 @@ int run_render(const RenderCommand& cmd) {
   const std::optional<LoadedScene> loaded = load_scene(cmd.scene, options, diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
-  const FrameRange frames = request->frames_given ? request->frames : FrameRange{loaded->frame, loaded->frame};
+  const FrameRange frames = frames_to_render(*request, *loaded);
   const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, loaded->inputs);
   if (!outputs) return kExitBadInput;
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   const RenderSettings settings = with_overrides(loaded->settings, cmd);
-  if (!check_settings(cmd, settings, frames, loaded->graph.animated)) return kExitBadInput;
+  if (!check_settings(cmd, settings, frames, loaded->graph)) return kExitBadInput;
 
   // Render the frames.
   FrameSink sink(request->kind, request->output, settings.width, settings.height, loaded->graph.timeline.fps,

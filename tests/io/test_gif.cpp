@@ -150,3 +150,39 @@ TEST_CASE("cli: --frames renders an animated GIF and numbered PNGs; bad ranges a
   r = rt::test::rtcli("render scenes/turntable.json --frame 3 --frames 0-9");
   CHECK(r.code == 2);
 }
+
+TEST_CASE("cli: a GIF without --frames shows the scene's animation; --frames beyond it warns", "[gif][cli]") {
+  const std::string scene = rt::test::write_file("spin_short.json", R"({
+    "render": {"width": 16, "height": 12},
+    "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 45},
+    "lights": [{"type": "point", "position": [2, 4, 3]}],
+    "materials": {"grey": {"kd": 0.5}},
+    "nodes": [{"name": "box", "shape": "cube", "material": "grey"}],
+    "animation": {"fps": 10, "frames": [2, 6],
+                  "tracks": [{"node": "box", "property": "rotate",
+                              "keys": [{"frame": 2, "value": {"axis": [0, 1, 0], "degrees": 0}},
+                                       {"frame": 6, "value": {"axis": [0, 1, 0], "degrees": 90}}]}]}
+  })");
+  const std::string gif = rt::test::output_path("spin_short.gif");
+  auto r = rt::test::rtcli("render '" + scene + "' -o '" + gif + "'");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("frames 2-6 (5)"));
+  GifSummary summary;
+  std::string error;
+  REQUIRE(read_gif(gif, summary, error));
+  CHECK(summary.frames == 5);
+  CHECK(summary.delays == std::vector<int>{10, 10, 10, 10, 10});
+  // Numbered PNGs too; a lone PNG is the first frame.
+  r = rt::test::rtcli("render '" + scene + "' -o '" + rt::test::output_path("spin_short_#.png") + "'");
+  CHECK_THAT(r.output, Catch::Contains("frames 2-6 (5)"));
+  r = rt::test::rtcli("render '" + scene + "' -o '" + rt::test::output_path("spin_short.png") + "'");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, !Catch::Contains("frames"));
+  // Asked for more than the animation: rendered, with a warning naming its range.
+  r = rt::test::rtcli("render '" + scene + "' --frames 0-9 -o '" + gif + "'");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("warning: --frames 0-9 goes beyond the scene's animation, frames 2-6 (at 10 fps)"));
+  r = rt::test::rtcli("render '" + scene + "' --frames 3-5 -o '" + gif + "'");
+  CHECK_THAT(r.output, !Catch::Contains("warning"));
+}
