@@ -15,7 +15,8 @@ namespace rt {
 
 struct MeshGeometry {
   TriangleMesh mesh;  // object space
-  Bvh bvh;            // over mesh's triangles, in object space
+  Bvh bvh;            // over mesh's triangles, in object space (none when io builds no BVH: validate)
+  Aabb bounds;        // of the triangles' vertices, in object space, BVH or not
 };
 
 // The coverage test of one mesh placed with one alpha-masked material.

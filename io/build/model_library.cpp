@@ -85,6 +85,7 @@ bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
   }
   MeshGeometry g;
   g.mesh = std::move(mesh);
+  for (const uint32_t i : g.mesh.indices) g.bounds.extend(g.mesh.positions[i]);
   if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
   assets_.meshes.push_back(std::move(g));
   return true;

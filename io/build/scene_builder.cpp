@@ -6,8 +6,10 @@
 #include "core/thread_count.h"
 #include "io/build/model_library.h"
 #include "io/build/placement_warnings.h"
+#include "io/build/scene_warnings.h"
 #include "io/build/texture_library.h"
 #include "io/gltf/loader.h"
+#include "io/json/locate.h"
 #include "io/json/reader.h"
 
 namespace rt {
@@ -123,16 +125,31 @@ class Builder {
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
+    const std::vector<Aabb> geometry = geometry_bounds(placed);
     // The frame a render shows first, with its BVH (validate builds none); another than the
     // timeline's first is posed anew, and the first frame's placement is not built at all.
     const int frame = options_.frame.value_or(g.timeline.first_frame);
     Scene scene = !options_.build_bvh               ? g.at(rest, PrimitiveSet{}, bvh_options_)
                   : frame == g.timeline.first_frame ? g.at(rest, placed, bvh_options_)
                                                     : g.at(g.pose(frame), bvh_options_);
+    if (!diags_.has_errors()) {  // a scene with errors (a node left out) would get false alarms
+      warn_camera_inside(g, rest, scene.camera.position, pointers_, report_);
+      warn_unlit_or_empty(scene, geometry, light_pointers(g), report_);
+    }
     return BuiltScene{std::move(g), frame, std::move(scene)};
   }
 
   std::vector<std::string> take_files() { return std::move(files_); }
+
+  // Per light of the graph, where it is described: the scene's lights, then the glTF files'
+  // (their nodes' pointers); empty for the light rtcli adds to a model on its own.
+  std::vector<std::string> light_pointers(const SceneGraph& g) const {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < desc_.lights.size(); ++i) out.push_back(pointer_child("/lights", i));
+    for (const LightPlacement& l : file_lights_) out.push_back(pointers_[static_cast<size_t>(l.node)]);
+    out.resize(g.lights.size());
+    return out;
+  }
 
  private:
   void push_node(SceneNode n, const std::string& pointer, bool from_file) {
