@@ -44,9 +44,11 @@ struct SurfaceInteraction {
   UvFrame texcoord[2];
   Vec4 tangent{0.0f};  // a mesh's interpolated TANGENT attribute (xyz, handedness w); w = 0: none
   Vec4 color{1.0f};    // a mesh's interpolated COLOR_0 (linear RGB, alpha); 1 without one
-  // The hit in the shape's (or mesh instance's) object space, for the explicit projections.
+  // The hit in the shape's canonical box [-1, 1]^3 (the cylinder's and cone's z in [0, 1]
+  // stretched to it; a mesh instance's object space), for the explicit projections.
   Vec3 object_position{0.0f};
-  Mat3 object_from_world{1.0f};  // linear part of the world-to-object transform
+  Mat3 object_from_world{1.0f};  // linear part of the world-to-box transform
+  uint8_t shape_axis = 1;        // the axis the shape runs along: 2 (z) for cylinder and cone, else 1 (y)
   uint32_t material = 0;
   bool front_face = true;  // the ray arrived from the outward side
 };

@@ -7,7 +7,7 @@
 namespace rt {
 namespace {
 
-Vec3 sample(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 uv, float footprint,
+Vec3 sample(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 uv, const UvFootprint& footprint,
             SurfaceDetailSwitches detail) {
   const TextureFilter filter = detail.override_filter ? detail.filter : slot.mapping.filter;
   return textures[slot.texture].sample(uv, slot.mapping.wrap, filter, footprint);

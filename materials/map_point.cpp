@@ -12,9 +12,25 @@ void longitude(Vec3 p, float& u, Vec3& grad) {
   grad = rho2 > 0.0f ? Vec3(p.z, 0.0f, -p.x) / (2.0f * kPi * rho2) : Vec3(0.0f);
 }
 
-}  // namespace
+// The rotation (a cyclic permutation of the axes, or one with a sign: never a mirror) that takes
+// the projection's axis to where the formulas expect it: y for spherical and cylindrical, z for
+// planar. Planar along y sees the top from above with -z up the image (as the cube's top face);
+// along x, the side from +x with +y up.
+Mat3 projection_frame(Projection projection, int axis) {
+  const Vec3 x(1.0f, 0.0f, 0.0f), y(0.0f, 1.0f, 0.0f), z(0.0f, 0.0f, 1.0f);
+  // glm is column-major: the rows of the rotation are the transposes' columns.
+  const auto rows = [](Vec3 a, Vec3 b, Vec3 c) { return glm::transpose(Mat3(a, b, c)); };
+  if (projection == Projection::kPlanar) {
+    if (axis == 0) return rows(-z, y, x);
+    if (axis == 1) return rows(x, -z, y);
+    return Mat3(1.0f);
+  }
+  if (axis == 0) return rows(z, x, y);
+  if (axis == 2) return rows(y, z, x);
+  return Mat3(1.0f);
+}
 
-Projected project(Projection projection, Vec3 p) {
+Projected project_about_y(Projection projection, Vec3 p) {
   Projected out;
   switch (projection) {
     case Projection::kPlanar:
@@ -40,6 +56,29 @@ Projected project(Projection projection, Vec3 p) {
   return out;
 }
 
+}  // namespace
+
+int projection_axis(const TextureMapping& m, int shape_axis) {
+  switch (m.axis) {
+    case ProjectionAxis::kX: return 0;
+    case ProjectionAxis::kY: return 1;
+    case ProjectionAxis::kZ: return 2;
+    case ProjectionAxis::kShape: break;
+  }
+  return m.projection == Projection::kPlanar ? 2 : shape_axis;
+}
+
+Projected project(Projection projection, int axis, Vec3 p) {
+  const bool identity = axis == (projection == Projection::kPlanar ? 2 : 1);
+  if (identity) return project_about_y(projection, p);
+  // p' = R p: u(p) = u'(R p), so grad u = R^T grad' u.
+  const Mat3 r = projection_frame(projection, axis);
+  Projected out = project_about_y(projection, r * p);
+  out.grad_u = glm::transpose(r) * out.grad_u;
+  out.grad_v = glm::transpose(r) * out.grad_v;
+  return out;
+}
+
 bool dual_basis(Vec3 a, Vec3 b, Vec3& da, Vec3& db) {
   const float aa = glm::dot(a, a), ab = glm::dot(a, b), bb = glm::dot(b, b);
   const float det = aa * bb - ab * ab;
@@ -58,7 +97,7 @@ MappedPoint map_point(const TextureMapping& m, const SurfaceInteraction& si) {
     out.uv = f.uv;
     valid = dual_basis(f.dpdu, f.dpdv, gu, gv);
   } else {
-    const Projected p = project(m.projection, si.object_position);
+    const Projected p = project(m.projection, projection_axis(m, si.shape_axis), si.object_position);
     out.uv = p.uv;
     // u(p_object(p_world)) with p_object = M p_world + c: the world gradient is M^T grad u, then
     // kept to the tangent plane (only motion along the surface moves the texture).
@@ -87,8 +126,8 @@ MappedPoint map_point(const TextureMapping& m, const SurfaceInteraction& si) {
   return out;
 }
 
-float uv_footprint(const MappedPoint& p, Vec3 normal, Vec3 direction, float width) {
-  if (!(width > 0.0f)) return 0.0f;
+UvFootprint uv_footprint(const MappedPoint& p, Vec3 normal, Vec3 direction, float width) {
+  if (!(width > 0.0f)) return {};
   const float cos_theta = std::max(std::fabs(glm::dot(direction, normal)), 1e-3f);
   Vec3 across = glm::cross(normal, direction);
   const float len = glm::length(across);
@@ -99,9 +138,8 @@ float uv_footprint(const MappedPoint& p, Vec3 normal, Vec3 direction, float widt
     along = glm::cross(normal, across);
   }
   const Vec3 a1 = width * across, a2 = (width / cos_theta) * along;
-  const float e1 = glm::length(Vec2(glm::dot(p.grad_u, a1), glm::dot(p.grad_v, a1)));
-  const float e2 = glm::length(Vec2(glm::dot(p.grad_u, a2), glm::dot(p.grad_v, a2)));
-  return std::max(e1, e2);
+  return UvFootprint(Vec2(glm::dot(p.grad_u, a1), glm::dot(p.grad_v, a1)),
+                     Vec2(glm::dot(p.grad_u, a2), glm::dot(p.grad_v, a2)));
 }
 
 }  // namespace rt

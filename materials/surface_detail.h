@@ -21,7 +21,7 @@ Vec3 blinn_bump(Vec3 n, Vec3 dpdu, Vec3 dpdv, float hu, float hv);
 // likewise Bv, times bump.strength; B is the mean of a texel's channels. E is bump.epsilon, or
 // one texel when that is 0, widened to half the footprint so that a far surface is not aliased.
 // `filter` is the mapping's, or the one --texture-filter imposes.
-Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, float footprint,
+Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, const UvFootprint& footprint,
                      TextureFilter filter);
 
 // A tangent-space normal map's texel (RGB in [0, 1]) in the frame of unit normal n: tangent t

@@ -49,33 +49,34 @@ uint64_t Texture::texels_with_mip_levels(uint64_t width, uint64_t height) {
   return total;
 }
 
-Vec3 Texture::nearest(Vec2 uv, TextureWrap wrap, int level) const {
+Vec3 Texture::nearest(Vec2 uv, WrapModes wrap, int level) const {
   const int w = width(level), h = height(level);
-  const int x = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.x, w, wrap))), w, wrap);
-  const int y = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.y, h, wrap))), h, wrap);
+  const int x = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.x, w, wrap.u))), w, wrap.u);
+  const int y = wrap_texel(static_cast<int>(std::floor(texel_coordinate(uv.y, h, wrap.v))), h, wrap.v);
   return texel(x, y, level);
 }
 
-Vec3 Texture::bilinear(Vec2 uv, TextureWrap wrap, int level) const {
+Vec3 Texture::bilinear(Vec2 uv, WrapModes wrap, int level) const {
   const int w = width(level), h = height(level);
   // Texel centres sit at half-integers: shift by half a texel so that they become integers.
-  const float x = texel_coordinate(uv.x, w, wrap) - 0.5f, y = texel_coordinate(uv.y, h, wrap) - 0.5f;
+  const float x = texel_coordinate(uv.x, w, wrap.u) - 0.5f, y = texel_coordinate(uv.y, h, wrap.v) - 0.5f;
   const float x0 = std::floor(x), y0 = std::floor(y);
   const float fx = x - x0, fy = y - y0;
-  const int i0 = wrap_texel(static_cast<int>(x0), w, wrap), i1 = wrap_texel(static_cast<int>(x0) + 1, w, wrap);
-  const int j0 = wrap_texel(static_cast<int>(y0), h, wrap), j1 = wrap_texel(static_cast<int>(y0) + 1, h, wrap);
+  const int i0 = wrap_texel(static_cast<int>(x0), w, wrap.u), i1 = wrap_texel(static_cast<int>(x0) + 1, w, wrap.u);
+  const int j0 = wrap_texel(static_cast<int>(y0), h, wrap.v), j1 = wrap_texel(static_cast<int>(y0) + 1, h, wrap.v);
   const Vec3 top = (1.0f - fx) * texel(i0, j0, level) + fx * texel(i1, j0, level);
   const Vec3 bottom = (1.0f - fx) * texel(i0, j1, level) + fx * texel(i1, j1, level);
   return (1.0f - fy) * top + fy * bottom;
 }
 
-float Texture::mip_level(float footprint) const {
-  const float texels = footprint * static_cast<float>(std::max(width(), height()));
+float Texture::mip_level(const UvFootprint& footprint) const {
+  const Vec2 size(static_cast<float>(width()), static_cast<float>(height()));
+  const float texels = std::max(glm::length(footprint.axis1 * size), glm::length(footprint.axis2 * size));
   if (!(texels > 1.0f)) return 0.0f;  // also NaN
   return std::min(std::log2(texels), static_cast<float>(level_count() - 1));
 }
 
-Vec3 Texture::sample(Vec2 uv, TextureWrap wrap, TextureFilter filter, float footprint) const {
+Vec3 Texture::sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint) const {
   switch (filter) {
     case TextureFilter::kNearest: return nearest(uv, wrap);
     case TextureFilter::kTrilinear: {

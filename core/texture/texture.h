@@ -7,6 +7,7 @@
 // its centre, where bilinear filtering returns it exactly, is ((i + 0.5) / width, (j + 0.5) / height).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -17,6 +18,27 @@ namespace rt {
 
 enum class TextureWrap : uint8_t { kRepeat, kClamp, kMirror };
 enum class TextureFilter : uint8_t { kNearest, kBilinear, kTrilinear };
+
+// The wrap mode of each axis (glTF's wrapS and wrapT); one mode serves both.
+struct WrapModes {
+  TextureWrap u = TextureWrap::kRepeat, v = TextureWrap::kRepeat;
+  WrapModes() = default;
+  WrapModes(TextureWrap both) : u(both), v(both) {}  // NOLINT: one mode for both axes reads naturally
+  WrapModes(TextureWrap u_mode, TextureWrap v_mode) : u(u_mode), v(v_mode) {}
+  bool operator==(const WrapModes& o) const { return u == o.u && v == o.v; }
+};
+
+// How much of the texture one pixel's ray covers where it meets the surface: the two axes of its
+// elliptical footprint, in (u, v) units. The mip level counts texels along each axis, so that a
+// 1000 x 100 image is not blurred along its long side for what its short side needs.
+struct UvFootprint {
+  Vec2 axis1{0.0f}, axis2{0.0f};
+  UvFootprint() = default;
+  UvFootprint(float width) : axis1(width, 0.0f), axis2(0.0f, width) {}  // NOLINT: a round footprint
+  UvFootprint(Vec2 a1, Vec2 a2) : axis1(a1), axis2(a2) {}
+  // The larger axis, in (u, v) units.
+  float width() const { return std::max(glm::length(axis1), glm::length(axis2)); }
+};
 
 // The names scene files and --texture-filter use, in enum order.
 inline std::vector<std::string> texture_filter_names() { return {"nearest", "bilinear", "trilinear"}; }
@@ -37,14 +59,16 @@ class Texture {
     return l.texels[static_cast<size_t>(y) * static_cast<size_t>(l.width) + static_cast<size_t>(x)];
   }
 
-  // The texture at (u, v). `footprint` is the width of the sampled region in (u, v) units (how
-  // much of the texture one pixel's ray covers); only trilinear filtering reads it.
-  Vec3 sample(Vec2 uv, TextureWrap wrap, TextureFilter filter, float footprint = 0.0f) const;
+  // The texture at (u, v). `footprint`: how much of the texture one pixel's ray covers; only
+  // trilinear filtering reads it.
+  Vec3 sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint = {}) const;
   // Bilinear filtering of one mip level: the four texels around (u, v), weighted by distance.
-  Vec3 bilinear(Vec2 uv, TextureWrap wrap, int level = 0) const;
-  Vec3 nearest(Vec2 uv, TextureWrap wrap, int level = 0) const;
-  // The (fractional) mip level for a footprint: log2(footprint x the larger side), clamped to the chain.
-  float mip_level(float footprint) const;
+  Vec3 bilinear(Vec2 uv, WrapModes wrap, int level = 0) const;
+  Vec3 nearest(Vec2 uv, WrapModes wrap, int level = 0) const;
+  // The (fractional) mip level for a footprint: log2 of the longer of its axes measured in texels
+  // (u in widths, v in heights), clamped to the chain. A round footprint f gives log2(f x the
+  // larger side).
+  float mip_level(const UvFootprint& footprint) const;
 
  private:
   struct Level {

@@ -10,22 +10,29 @@
 namespace rt {
 
 // Where (u, v) comes from. kUv: the shape's own coordinates (or a mesh's TEXCOORD_n). The others
-// are the proposal's projections of the object-space hit point (docs/rendering.md, "Textures"):
-//   planar       drops z: u = (x + 1) / 2, v = (1 - y) / 2 (the square [-1, 1]^2 seen from +z, upright)
-//   spherical    longitude and latitude about the object's y axis, as the sphere's own coordinates
-//   cylindrical  longitude about the y axis, v = (1 - y) / 2 as planar
+// are the proposal's projections of the hit point in the shape's canonical box [-1, 1]^3 (a
+// mesh's object space) about an axis (docs/rendering.md, "Textures"); with the axis y:
+//   planar       along the axis (default z): u = (x + 1) / 2, v = (1 - y) / 2 (the square
+//                [-1, 1]^2 seen from +z, upright)
+//   spherical    longitude and latitude about the axis, as the sphere's own coordinates
+//   cylindrical  longitude about the axis, v = (1 - y) / 2 as planar
 enum class Projection : uint8_t { kUv, kPlanar, kSpherical, kCylindrical };
+
+// The projection's axis in object space. kShape: planar's z; for spherical and cylindrical the
+// shape's own axis (SurfaceInteraction::shape_axis: z for the cylinder and cone, y otherwise).
+enum class ProjectionAxis : uint8_t { kShape, kX, kY, kZ };
 
 inline constexpr uint32_t kNoTexture = 0xffffffffu;
 
 struct TextureMapping {
   Projection projection = Projection::kUv;
+  ProjectionAxis axis = ProjectionAxis::kShape;
   uint32_t uv_set = 0;  // kUv on meshes: TEXCOORD_0 or TEXCOORD_1
   // KHR_texture_transform: uv' = offset + R(rotation) (scale * uv), see transformed_uv.
   Vec2 scale{1.0f};
   Vec2 offset{0.0f};
   float rotation_degrees = 0.0f;
-  TextureWrap wrap = TextureWrap::kRepeat;
+  WrapModes wrap;  // per axis: u (glTF's wrapS), v (wrapT)
   TextureFilter filter = TextureFilter::kTrilinear;
 };
 

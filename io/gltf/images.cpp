@@ -62,15 +62,18 @@ TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encodi
   return slot;
 }
 
-// glTF samplers (docs/scene-format.md, "glTF materials"): wrapS decides the wrap mode (ours is one for both
-// axes). Without mipmaps in minFilter, magFilter picks nearest or bilinear; with them (or no
-// sampler), trilinear, unless magFilter is NEAREST (pixel art).
+// glTF samplers (docs/scene-format.md, "glTF materials"): wrapS is u's wrap mode, wrapT v's.
+// Without mipmaps in minFilter, magFilter picks nearest or bilinear; with them (or no sampler),
+// trilinear, unless magFilter is NEAREST (pixel art).
 void ImageDecoder::read_sampler(int index, TextureMapping& mapping) {
   if (index < 0 || static_cast<size_t>(index) >= model_.samplers.size()) return;
   const tinygltf::Sampler& sampler = model_.samplers[static_cast<size_t>(index)];
-  mapping.wrap = sampler.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
-                 : sampler.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
-                                                                          : TextureWrap::kRepeat;
+  const auto wrap = [](int mode) {
+    return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::kClamp
+           : mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::kMirror
+                                                           : TextureWrap::kRepeat;
+  };
+  mapping.wrap = WrapModes(wrap(sampler.wrapS), wrap(sampler.wrapT));
   const bool nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
   const bool mipmapped =
       sampler.minFilter != TINYGLTF_TEXTURE_FILTER_NEAREST && sampler.minFilter != TINYGLTF_TEXTURE_FILTER_LINEAR;

@@ -43,8 +43,21 @@ void parse_mapping(const JsonReader& r, ObjectReader& o, TextureMapping& m) {
   }
   if (const auto deg = o.number("rotation")) m.rotation_degrees = static_cast<float>(*deg);
   if (const Json* w = o.get("wrap")) {
-    if (const auto k = read_choice(r, *w, o.child("wrap"), {"repeat", "clamp", "mirror"}))
+    // One mode for both axes, or [u, v].
+    const std::vector<std::string> modes{"repeat", "clamp", "mirror"};
+    const std::string ptr = o.child("wrap");
+    if (w->is_array() && w->size() == 2) {
+      const auto u = read_choice(r, (*w)[0], ptr + "/0", modes), v = read_choice(r, (*w)[1], ptr + "/1", modes);
+      if (u && v) m.wrap = WrapModes(static_cast<TextureWrap>(*u), static_cast<TextureWrap>(*v));
+    } else if (w->is_array()) {
+      r.expected(ptr, "one wrap mode (\"repeat\", \"clamp\" or \"mirror\") or an array of 2, [u, v]", *w);
+    } else if (const auto k = read_choice(r, *w, ptr, modes)) {
       m.wrap = static_cast<TextureWrap>(*k);
+    }
+  }
+  if (const Json* a = o.get("axis")) {
+    if (const auto k = read_choice(r, *a, o.child("axis"), {"x", "y", "z"}))
+      m.axis = static_cast<ProjectionAxis>(*k + 1);
   }
   if (const Json* f = o.get("filter")) {
     if (const auto k = read_choice(r, *f, o.child("filter"), texture_filter_names()))

@@ -86,3 +86,27 @@ TEST_CASE("mip levels average 2 x 2 texels down to 1 x 1; the level follows the 
   CHECK(half == Approx(0.5f * t.bilinear(Vec2(0.5f), TextureWrap::kClamp, 0).x +
                        0.5f * t.bilinear(Vec2(0.5f), TextureWrap::kClamp, 1).x));
 }
+
+TEST_CASE("wrap modes apply per axis", "[texture]") {
+  const Texture t = numbered();
+  // u = 1.125 + 1 texel: repeat reads column 1 (u wraps to 0.375 = column 1's centre); v = 1.75
+  // clamped reads row 1, mirrored reads row 0 (1.75 mirrors to 0.25).
+  const Vec2 uv(1.375f, 1.75f);
+  CHECK(t.nearest(uv, WrapModes(TextureWrap::kRepeat, TextureWrap::kClamp)).x == Approx(11));
+  CHECK(t.nearest(uv, WrapModes(TextureWrap::kRepeat, TextureWrap::kMirror)).x == Approx(10));
+  CHECK(t.nearest(uv, WrapModes(TextureWrap::kClamp, TextureWrap::kRepeat)).x == Approx(31));
+  CHECK(t.bilinear(uv, WrapModes(TextureWrap::kRepeat, TextureWrap::kClamp)).x == Approx(11));
+}
+
+TEST_CASE("the mip level counts texels along each axis of the footprint", "[texture]") {
+  // A 1024 x 64 label: a footprint of one texel each way (1/1024 across u, 1/64 along v) is the
+  // finest level, where measuring both by the longer side took level 4 (16 texels).
+  const Texture label(1024, 64, std::vector<Vec3>(1024 * 64, Vec3(0.5f)));
+  CHECK(label.mip_level(UvFootprint(Vec2(1.0f / 1024, 0.0f), Vec2(0.0f, 1.0f / 64))) == Approx(0.0f));
+  CHECK(label.mip_level(UvFootprint(Vec2(4.0f / 1024, 0.0f), Vec2(0.0f, 1.0f / 64))) == Approx(2.0f));
+  CHECK(label.mip_level(UvFootprint(Vec2(1.0f / 1024, 0.0f), Vec2(0.0f, 8.0f / 64))) == Approx(3.0f));
+  // A round footprint is what it was: log2(footprint x the larger side).
+  CHECK(label.mip_level(UvFootprint(8.0f / 1024)) == Approx(3.0f));
+  const Texture square(256, 256, std::vector<Vec3>(256 * 256, Vec3(0.5f)));
+  CHECK(square.mip_level(UvFootprint(Vec2(0.0f, 0.0f), Vec2(3.0f / 256, 4.0f / 256))) == Approx(std::log2(5.0f)));
+}

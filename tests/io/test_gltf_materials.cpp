@@ -26,7 +26,8 @@ const char* kMetalRoughPng =
     "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAFklEQVR4nGNkaPjPwMDAxMDAwMDAAAARHwGDXcgNqQAAAABJRU5ErkJggg==";
 
 // The unit square in z = 0 with u = x, v = 1 - y, one material, the two images above as textures
-// 0 (nearest sampler) and 1 (no sampler); with `colours`, COLOR_0 as normalised bytes.
+// 0 (nearest sampler, mirrored in u and clamped in v) and 1 (no sampler); with `colours`, COLOR_0
+// as normalised bytes.
 std::string quad_file(const std::string& name, const Json& material, const std::vector<uint8_t>& colors = {}) {
   std::string buffer = rt::test::square_positions();  // view 0: 48 bytes
   append<float>(buffer, {0, 1, 1, 1, 1, 0, 0, 0});    // view 1: 32 bytes
@@ -52,7 +53,7 @@ std::string quad_file(const std::string& name, const Json& material, const std::
               {"meshes", {{{"primitives", {{{"attributes", attributes}, {"indices", 2}, {"material", 0}}}}}}},
               {"materials", {material}},
               {"textures", {{{"source", 0}, {"sampler", 0}}, {{"source", 1}}}},
-              {"samplers", {{{"magFilter", 9728}, {"minFilter", 9728}}}},
+              {"samplers", {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33648}, {"wrapT", 33071}}}},
               {"images",
                {{{"uri", std::string("data:image/png;base64,") + kHalfAlphaPng}},
                 {{"uri", std::string("data:image/png;base64,") + kMetalRoughPng}}}},
@@ -163,6 +164,9 @@ TEST_CASE("glTF materials: KHR_texture_transform and sampler filters on texture 
   CHECK(t.filter == TextureFilter::kNearest);  // magFilter NEAREST
   CHECK(m.pbr.texture.mapping.filter == TextureFilter::kTrilinear);  // no sampler: mipmapped
   CHECK(m.texture.texture != m.pbr.texture.texture);
+  // wrapS and wrapT each their own axis; no sampler: repeat both ways.
+  CHECK(t.wrap == WrapModes(TextureWrap::kMirror, TextureWrap::kClamp));
+  CHECK(m.pbr.texture.mapping.wrap == WrapModes(TextureWrap::kRepeat));
 }
 
 TEST_CASE("glTF materials: metallicRoughness texture and COLOR_0 at the shading point", "[gltf][materials]") {

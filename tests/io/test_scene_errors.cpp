@@ -305,3 +305,36 @@ TEST_CASE("the nesting scan skips comments", "[io][errors]") {
   CHECK_FALSE(json_nesting_within("[[ /* ] */ ]]", 1));
   CHECK(json_nesting_within("[\"/* [[[ */\"]", 1));
 }
+
+TEST_CASE("texture mappings: wrap per axis and the projection axis", "[io][uv]") {
+  const std::string folder = rt::test::source_path("scenes/textures/");
+  const auto scene_with = [&](const std::string& mapping) {
+    return R"({
+      "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 45},
+      "materials": {"label": {"texture": {"file": ")" + folder + R"(checker.png", )" + mapping + R"(}}},
+      "lights": [{"type": "point", "position": [2, 4, 3]}],
+      "nodes": [{"name": "can", "shape": "cylinder", "material": "label"}]
+    })";
+  };
+  const LoadedScene s = rt::test::load_scene_text(
+      "mapping_axes.json", scene_with(R"("projection": "cylindrical", "axis": "x", "wrap": ["repeat", "clamp"])"));
+  const TextureMapping& m = s.scene.materials().at(0).texture.mapping;
+  CHECK(m.axis == ProjectionAxis::kX);
+  CHECK(m.wrap == WrapModes(TextureWrap::kRepeat, TextureWrap::kClamp));
+  CHECK(rt::test::load_scene_text("mapping_one.json", scene_with(R"("wrap": "mirror")"))
+            .scene.materials()
+            .at(0)
+            .texture.mapping.wrap == WrapModes(TextureWrap::kMirror));
+
+  Attempt a = load_text("mapping_bad_wrap.json", scene_with(R"("wrap": ["repeat"])"));
+  REQUIRE_FALSE(a.loaded);
+  CHECK(a.first().pointer == "/materials/label/texture/wrap");
+  CHECK_THAT(a.first().message, Catch::Contains("or an array of 2, [u, v]"));
+  a = load_text("mapping_bad_wrap_v.json", scene_with(R"("wrap": ["repeat", "clmap"])"));
+  REQUIRE_FALSE(a.loaded);
+  CHECK(a.first().pointer == "/materials/label/texture/wrap/1");
+  CHECK_THAT(a.first().message, Catch::Contains("did you mean \"clamp\""));
+  a = load_text("mapping_bad_axis.json", scene_with(R"("axis": "w")"));
+  REQUIRE_FALSE(a.loaded);
+  CHECK(a.first().pointer == "/materials/label/texture/axis");
+}

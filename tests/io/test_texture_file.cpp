@@ -150,3 +150,36 @@ TEST_CASE("make_textures: the checked-in example textures are exactly what the g
     CHECK(stored->rgb == generated.rgb);
   }
 }
+
+TEST_CASE("make_textures: the tiled example textures have no seam where they repeat", "[texture][tools]") {
+  // Across the wrap (last column to first, last row to first) a texture that tiles changes no
+  // more than between neighbours inside it; a seam shows as a jump several times larger.
+  for (const char* file : {"wood.png", "checker.png", "bricks.png", "bricks_colour.png", "bricks_normal.png"}) {
+    INFO(file);
+    std::string error;
+    const auto img = read_png(rt::test::source_path(std::string("scenes/textures/") + file), error);
+    REQUIRE(img);
+    const int w = static_cast<int>(img->width), h = static_cast<int>(img->height);
+    const auto at = [&](int x, int y, int c) {
+      return static_cast<double>(img->rgb[(static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * 3 +
+                                          static_cast<size_t>(c)]);
+    };
+    const auto column_step = [&](int x0, int x1) {
+      double sum = 0;
+      for (int y = 0; y < h; ++y)
+        for (int c = 0; c < 3; ++c) sum += std::fabs(at(x0, y, c) - at(x1, y, c));
+      return sum / (3.0 * h);
+    };
+    const auto row_step = [&](int y0, int y1) {
+      double sum = 0;
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) sum += std::fabs(at(x, y0, c) - at(x, y1, c));
+      return sum / (3.0 * w);
+    };
+    double inside_x = 0, inside_y = 0;
+    for (int x = 0; x + 1 < w; ++x) inside_x = std::max(inside_x, column_step(x, x + 1));
+    for (int y = 0; y + 1 < h; ++y) inside_y = std::max(inside_y, row_step(y, y + 1));
+    CHECK(column_step(w - 1, 0) <= inside_x + 0.5);
+    CHECK(row_step(h - 1, 0) <= inside_y + 0.5);
+  }
+}

@@ -40,32 +40,72 @@ float degrees_between(Vec3 a, Vec3 b) {
 }  // namespace
 
 TEST_CASE("projections: (u, v) at known points", "[materials][uv]") {
-  CHECK(project(Projection::kPlanar, {-1, 1, 7}).uv == Vec2(0, 0));  // z dropped; top left
-  CHECK(project(Projection::kPlanar, {1, -1, 0}).uv == Vec2(1, 1));
-  const Projected px = project(Projection::kSpherical, {2, 0, 0});
+  CHECK(project(Projection::kPlanar, 2, {-1, 1, 7}).uv == Vec2(0, 0));  // z dropped; top left
+  CHECK(project(Projection::kPlanar, 2, {1, -1, 0}).uv == Vec2(1, 1));
+  const Projected px = project(Projection::kSpherical, 1, {2, 0, 0});
   CHECK(px.uv.x == Approx(0.25f));
   CHECK(px.uv.y == Approx(0.5f));
-  CHECK(project(Projection::kSpherical, {0, 3, 0}).uv.y == Approx(0.0f));  // north pole
-  CHECK(project(Projection::kSpherical, {0, -3, 0}).uv.y == Approx(1.0f));
-  const Projected c = project(Projection::kCylindrical, {0, 0.5f, -4});
+  CHECK(project(Projection::kSpherical, 1, {0, 3, 0}).uv.y == Approx(0.0f));  // north pole
+  CHECK(project(Projection::kSpherical, 1, {0, -3, 0}).uv.y == Approx(1.0f));
+  const Projected c = project(Projection::kCylindrical, 1, {0, 0.5f, -4});
   CHECK(c.uv.x == Approx(0.5f));  // -Z: half a turn
   CHECK(c.uv.y == Approx(0.25f));
 }
 
-TEST_CASE("projections: gradients equal central differences", "[materials][uv]") {
+TEST_CASE("projections: gradients equal central differences, about every axis", "[materials][uv]") {
   const Vec3 points[] = {{0.3f, 0.4f, 0.8f}, {-0.7f, -0.2f, 0.5f}, {0.1f, 0.9f, -0.3f}};
   for (Projection proj : {Projection::kPlanar, Projection::kSpherical, Projection::kCylindrical}) {
-    for (const Vec3 p : points) {
-      const Projected at = project(proj, p);
-      for (int axis = 0; axis < 3; ++axis) {
-        Vec3 e(0.0f);
-        e[axis] = 1e-3f;
-        const Vec2 d = (project(proj, p + e).uv - project(proj, p - e).uv) / 2e-3f;
-        CHECK(d.x == Approx(at.grad_u[axis]).margin(1e-3));
-        CHECK(d.y == Approx(at.grad_v[axis]).margin(1e-3));
+    for (int about = 0; about < 3; ++about) {
+      for (const Vec3 p : points) {
+        const Projected at = project(proj, about, p);
+        for (int axis = 0; axis < 3; ++axis) {
+          Vec3 e(0.0f);
+          e[axis] = 1e-3f;
+          const Vec2 d = (project(proj, about, p + e).uv - project(proj, about, p - e).uv) / 2e-3f;
+          CHECK(d.x == Approx(at.grad_u[axis]).margin(1e-3));
+          CHECK(d.y == Approx(at.grad_v[axis]).margin(1e-3));
+        }
       }
     }
   }
+}
+
+TEST_CASE("projections: the axis, and a label on a cylinder", "[materials][uv]") {
+  // About z, cylindrical turns from +x towards +y, v running down z; about x, from +y towards +z.
+  CHECK(project(Projection::kCylindrical, 2, {0, 1, 0.5f}).uv.x == Approx(0.25f));
+  CHECK(project(Projection::kCylindrical, 2, {0, 1, 0.5f}).uv.y == Approx(0.25f));
+  CHECK(project(Projection::kCylindrical, 0, {0.5f, 0, 1}).uv.x == Approx(0.25f));
+  CHECK(project(Projection::kSpherical, 2, {0, 0, 3}).uv.y == Approx(0.0f));  // the pole on +z
+  // Planar along y: the top seen from above, -z up the image (the cube's top face); along x: the
+  // side seen from +x, y up and -z to the right. Both unmirrored.
+  CHECK(project(Projection::kPlanar, 1, {-1, 5, -1}).uv == Vec2(0, 0));
+  CHECK(project(Projection::kPlanar, 1, {1, 5, 1}).uv == Vec2(1, 1));
+  CHECK(project(Projection::kPlanar, 0, {5, 1, 1}).uv == Vec2(0, 0));
+  CHECK(project(Projection::kPlanar, 0, {5, -1, -1}).uv == Vec2(1, 1));
+  // A cylinder's default axis is its own (z), and its z in [0, 1] spans the whole image: a
+  // label's cylindrical (u, v) is the cylinder's own, at every point of its side.
+  TextureMapping label;
+  label.projection = Projection::kCylindrical;
+  const AnalyticShape can{ShapeKind::kCylinder, 0, *make_transform(compose_trs(Vec3(1, 2, 3), Vec3(-90, 0, 0), Vec3(0.5f, 0.5f, 2)))};
+  for (const Vec2 aim : {Vec2(0.1f, 0.3f), Vec2(-0.2f, 0.8f), Vec2(0.15f, 1.7f)}) {
+    Ray ray(Vec3(1 + aim.x, 2 + aim.y, 10), Vec3(0, 0, -1));
+    Hit hit;
+    REQUIRE(intersect_shape(can, ray, hit));
+    const SurfaceInteraction si = shape_surface(can, ray, hit);
+    CHECK(si.shape_axis == 2);
+    const MappedPoint p = map_point(label, si);
+    CHECK(p.uv.x == Approx(si.texcoord[0].uv.x).margin(1e-5));
+    CHECK(p.uv.y == Approx(si.texcoord[0].uv.y).margin(1e-5));
+  }
+  // On a sphere the default stays y; asked for, z.
+  const AnalyticShape ball{ShapeKind::kSphere, 0, Transform{}};
+  Ray down(Vec3(0, 5, 0.01f), Vec3(0, -1, 0));
+  Hit hit;
+  REQUIRE(intersect_shape(ball, down, hit));
+  const SurfaceInteraction top = shape_surface(ball, down, hit);
+  CHECK(map_point(label, top).uv.y == Approx(0.0f).margin(1e-3));  // y = 1: the top of the image
+  label.axis = ProjectionAxis::kZ;
+  CHECK(map_point(label, top).uv.y == Approx(0.5f).margin(1e-2));  // z ~ 0: halfway
 }
 
 TEST_CASE("mapping: scale, rotation and offset in KHR_texture_transform's order", "[materials][uv]") {
@@ -122,11 +162,11 @@ TEST_CASE("mapping: planar projection on a scaled sphere works in object space",
 TEST_CASE("footprint: a ray cone's width in texture units", "[materials][mip]") {
   const SurfaceInteraction si = plane_hit(0.2f, 0.1f);  // u spans the plane's 2 units
   const MappedPoint p = map_point(TextureMapping{}, si);
-  CHECK(uv_footprint(p, si.geometric_normal, {0, -1, 0}, 0.1f) == Approx(0.05f));
+  CHECK(uv_footprint(p, si.geometric_normal, {0, -1, 0}, 0.1f).width() == Approx(0.05f));
   // At 60 degrees from the normal the footprint stretches by 1 / cos 60 = 2 along the surface.
   const Vec3 slanted = glm::normalize(Vec3(std::sin(radians(60.0f)), -std::cos(radians(60.0f)), 0.0f));
-  CHECK(uv_footprint(p, si.geometric_normal, slanted, 0.1f) == Approx(0.1f));
-  CHECK(uv_footprint(p, si.geometric_normal, slanted, 0.0f) == 0.0f);
+  CHECK(uv_footprint(p, si.geometric_normal, slanted, 0.1f).width() == Approx(0.1f));
+  CHECK(uv_footprint(p, si.geometric_normal, slanted, 0.0f).width() == 0.0f);
   // 0.05 of a 256-texel texture is 12.8 texels: mip level log2(12.8) = 3.68.
   CHECK(Texture(256, 256, std::vector<Vec3>(256 * 256)).mip_level(0.05f) == Approx(std::log2(12.8f)));
 }

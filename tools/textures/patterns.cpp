@@ -43,14 +43,17 @@ Vec3 uv_grid(float x, float y) {
 }
 
 // Planks of flat-sawn wood: rings around a pith below the board, stretched along the grain, with
-// a little noise to break them up; the board runs along x.
+// a little noise to break them up; the board runs along x. Everything repeats with period 1 in x
+// and y, so the image tiles without seams: the noise has whole periods across the image, and the
+// rings' arch uses (1 - cos 2 pi x) / (2 pi^2), which is x^2 near the arch's centre but periodic.
 Vec3 wood(float x, float y) {
   const float plank = std::floor(y * 4.0f);
   const float py = y * 4.0f - plank;
   const float shift = hash(static_cast<int>(plank), 7) * 3.0f;
   const float wobble =
       0.35f * value_noise(x * 6.0f + shift, py * 2.0f, 6) + 0.08f * value_noise(x * 40.0f, py * 9.0f, 40);
-  const float rings = 7.0f * std::sqrt((py - 1.8f) * (py - 1.8f) + 0.04f * (x + shift) * (x + shift)) + wobble * 2.0f;
+  const float arch = (1.0f - std::cos(2.0f * kPi * (x + shift))) / (2.0f * kPi * kPi);
+  const float rings = 7.0f * std::sqrt((py - 1.8f) * (py - 1.8f) + 3.0f * arch) + wobble * 2.0f;
   const float ring = rings - std::floor(rings);
   const float dark = smooth(0.55f, 0.95f, ring) * 0.8f + 0.2f * value_noise(x * 90.0f, py * 30.0f, 90);
   Vec3 c = glm::mix(Vec3(0.80f, 0.58f, 0.34f), Vec3(0.52f, 0.31f, 0.15f), dark);
