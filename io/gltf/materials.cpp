@@ -81,7 +81,9 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
     out.transmission = Vec3(std::clamp(gltf_number(*t, "transmissionFactor").value_or(0.0f), 0.0f, 1.0f));
     if (t->Has("transmissionTexture"))
       report.warning(at + "/extensions/KHR_materials_transmission/transmissionTexture",
-                     where + ": KHR_materials_transmission's transmissionTexture is not used; the factor is");
+                     where +
+                         ": KHR_materials_transmission's transmissionTexture is ignored; transmissionFactor alone "
+                         "sets how much light passes, over the whole material");
   }
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
     const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);

@@ -7,6 +7,7 @@
 
 #include "core/render/renderer.h"
 #include "io/gltf/loader.h"
+#include "io/gltf/supported_extensions.h"
 #include "materials/evaluated_surface.h"
 #include "materials/pbr_to_phong.h"
 #include "tests/support/gltf_files.h"
@@ -309,4 +310,35 @@ TEST_CASE("glTF samples: BoxTextured's image from a file and from the GLB's buff
   CHECK(std::any_of(external.files.begin(), external.files.end(),
                     [](const std::string& f) { return f.find("CesiumLogoFlat.png") != std::string::npos; }));
   CHECK(embedded.files.size() == 1);
+}
+
+TEST_CASE("glTF materials: an ignored transmissionTexture is said in a whole sentence", "[gltf][materials]") {
+  const Json material = {
+      {"extensions",
+       {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", {{"index", 0}}}}}}}};
+  const std::string path = quad_file("transmission-texture.gltf", material);
+  rt::test::ImportProblems problems;
+  const auto model = import_gltf(path, std::nullopt, LoadLimits{}, problems);
+  REQUIRE(model);
+  CHECK(model->materials[0].transmission == Vec3(0.8f));
+  REQUIRE(problems.warnings.size() == 1);
+  CHECK_THAT(problems.warnings[0],
+             Catch::EndsWith("transmissionTexture is ignored; transmissionFactor alone sets how much light passes, "
+                             "over the whole material"));
+}
+
+TEST_CASE("glTF extensions: the documented list of supported extensions is the code's", "[gltf][docs]") {
+  const std::string limits = rt::test::read_file(rt::test::source_path("docs/errors-and-limits.md"));
+  const size_t start = limits.find("`extensionsRequired` names only extensions rtcli implements (");
+  REQUIRE(start != std::string::npos);
+  const std::string sentence = limits.substr(start, limits.find(')', start) - start);
+  // As many names as the code supports, and each of them.
+  size_t listed = 0;
+  for (const char* prefix : {"`KHR_", "`EXT_"})
+    for (size_t at = sentence.find(prefix); at != std::string::npos; at = sentence.find(prefix, at + 1)) ++listed;
+  CHECK(listed == supported_gltf_extensions().size());
+  for (const std::string& name : supported_gltf_extensions()) {
+    INFO(name);
+    CHECK_THAT(sentence, Catch::Contains("`" + name + "`"));
+  }
 }
