@@ -13,6 +13,7 @@ inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::str
   LoadOptions options{threads, integrator_names(), pixel_sampler_names(), LoadLimits{},
                       true,    std::move(camera),  std::nullopt};
   options.limits.outside_files = outside_files;
+  options.limits.decode_threads = threads;
   return options;
 }
 

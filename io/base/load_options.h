@@ -27,6 +27,9 @@ struct LoadLimits {
   // A glTF file's image and buffer URIs may leave its folder (`--allow-outside-files`). A scene
   // file's own paths are never restricted: the user wrote them.
   bool outside_files = false;
+  // Not a limit but a share of the machine: how many threads decode a glTF file's images
+  // (0: all hardware threads; rtcli passes --threads).
+  unsigned decode_threads = 0;
 };
 
 // What a scene has taken of its limits so far, counted as it loads: a model, an image or a track

@@ -8,6 +8,8 @@
 
 #include <tiny_gltf.h>
 
+#include "core/parallel_for.h"
+#include "core/thread_count.h"
 #include "io/base/input_file.h"
 #include "io/gltf/file.h"
 #include "io/gltf/values.h"
@@ -169,9 +171,9 @@ uint32_t ImageDecoder::decode(const Source& source, TextureEncoding encoding, co
   if (source.path.empty() && source.bytes.empty()) {
     report_.warning(source.pointer, where + ": " + source.name + " holds no image; ignored");
   } else if (source.path.empty()) {
-    texture = decode_bytes(source.bytes, source, encoding, where);
-  } else if (const auto file = read_file(source, where)) {
-    texture = decode_bytes(*file, source, encoding, where);
+    texture = claim({}, source.bytes, source, encoding, where);
+  } else if (auto file = read_file(source, where)) {
+    texture = claim(std::move(*file), {}, source, encoding, where);
   }
   if (!failed_) decoded_.emplace(key, texture);
   return texture;
@@ -202,22 +204,50 @@ std::optional<std::vector<unsigned char>> ImageDecoder::read_file(const Source& 
   return file;
 }
 
-uint32_t ImageDecoder::decode_bytes(std::span<const unsigned char> bytes, const Source& source,
-                                    TextureEncoding encoding, const std::string& where) {
-  const std::string& source_pointer = source.pointer;
+uint32_t ImageDecoder::claim(std::vector<unsigned char> file, std::span<const unsigned char> bytes,
+                             const Source& source, TextureEncoding encoding, const std::string& where) {
+  Claimed c{std::move(file), bytes, ImageHeader{}, source, encoding, where};
+  if (!c.file.empty()) c.bytes = c.file;
   TextureError error;
-  auto texture = decode_texture(bytes, source.name, encoding, limits_, usage_, error);
-  if (!texture) {
+  const auto header = claim_texture(c.bytes, source.name, limits_, usage_, error);
+  if (!header) {
     if (error.over_budget) {
-      report_.over_limit(source_pointer, where + ": " + error.message);
+      report_.over_limit(source.pointer, where + ": " + error.message);
       failed_ = true;
     } else {
-      report_.warning(source_pointer, where + ": " + error.message + "; ignored");
+      report_.warning(source.pointer, where + ": " + error.message + "; ignored");
     }
     return kNoTexture;
   }
-  out_.textures.push_back(std::move(*texture));
-  return static_cast<uint32_t>(out_.textures.size() - 1);
+  c.header = *header;
+  claimed_.push_back(std::move(c));
+  return static_cast<uint32_t>(claimed_.size() - 1);
+}
+
+void ImageDecoder::finish(std::vector<Material>& materials, unsigned threads) {
+  std::vector<std::optional<Texture>> textures(claimed_.size());
+  std::vector<TextureError> errors(claimed_.size());
+  parallel_for(claimed_.size(), resolve_thread_count(threads), 1, [&](unsigned, size_t i) {
+    const Claimed& c = claimed_[i];
+    textures[i] = decode_claimed_texture(c.bytes, c.header, c.source.name, c.encoding, errors[i]);
+  });
+  // In the order they were claimed, as decoding them one by one would have numbered them.
+  std::vector<uint32_t> place(claimed_.size(), kNoTexture);
+  for (size_t i = 0; i < claimed_.size(); ++i) {
+    const Claimed& c = claimed_[i];
+    if (!textures[i]) {
+      report_.warning(c.source.pointer, c.where + ": " + errors[i].message + "; ignored");
+      usage_.texels -= Texture::texels_with_mip_levels(c.header.width, c.header.height);
+      continue;
+    }
+    place[i] = static_cast<uint32_t>(out_.textures.size());
+    out_.textures.push_back(std::move(*textures[i]));
+  }
+  for (Material& m : materials)
+    for (TextureSlot* slot : m.texture_slots())
+      if (slot->present()) slot->texture = slot->texture < place.size() ? place[slot->texture] : kNoTexture;
+  claimed_.clear();
+  decoded_.clear();
 }
 
 }  // namespace rt

@@ -315,6 +315,7 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     out.material_names.push_back(m.name);
     if (images.failed()) return std::nullopt;
   }
+  images.finish(out.materials, limits.decode_threads);
   const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
   if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, report)) return std::nullopt;
   Importer importer(model, limits, usage, out, report);

@@ -47,9 +47,8 @@ std::optional<Texture> load_texture(const std::string& path, TextureEncoding enc
   return decode_texture(*bytes, "\"" + path + "\"", encoding, limits, usage, error);
 }
 
-std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, const std::string& name,
-                                      TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
-                                      TextureError& error) {
+std::optional<ImageHeader> claim_texture(std::span<const unsigned char> bytes, const std::string& name,
+                                         const LoadLimits& limits, LimitUsage& usage, TextureError& error) {
   if (bytes.size() > kMaxTextureFileBytes) {
     error.message = "cannot read " + name + " as an image: it is larger than " + format_bytes(kMaxTextureFileBytes);
     return std::nullopt;
@@ -61,15 +60,22 @@ std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, cons
     return std::nullopt;
   }
   if (!fits(*header, name, limits, usage, error)) return std::nullopt;
+  usage.texels += Texture::texels_with_mip_levels(header->width, header->height);
+  return header;
+}
 
+std::optional<Texture> decode_claimed_texture(std::span<const unsigned char> bytes, const ImageHeader& header,
+                                              const std::string& name, TextureEncoding encoding,
+                                              TextureError& error) {
+  std::string why;
   // The decoder converts any layout to the channels asked for (alpha 1 where the file has none).
   const bool alpha = encoding == TextureEncoding::kAlpha;
-  auto image = decode_png_jpeg(bytes.data(), bytes.size(), *header, alpha ? 4 : 3, why);
+  auto image = decode_png_jpeg(bytes.data(), bytes.size(), header, alpha ? 4 : 3, why);
   if (!image) {
     error.message = "cannot decode " + name + ": " + why;
     return std::nullopt;
   }
-  std::vector<Vec3> linear(static_cast<size_t>(header->width) * header->height);
+  std::vector<Vec3> linear(static_cast<size_t>(header.width) * header.height);
   const auto channel = [&](int c) { return alpha ? 3 : c; };
   if (image->sixteen_bit) {
     for (size_t i = 0; i < linear.size(); ++i)
@@ -89,8 +95,15 @@ std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, cons
       for (int c = 0; c < 3; ++c) linear[i][c] = decode[samples[step * i + static_cast<size_t>(channel(c))]];
   }
   image.reset();  // the decoder's pixels go before the mip levels are made: a lower peak
-  usage.texels += Texture::texels_with_mip_levels(header->width, header->height);
-  return Texture(static_cast<int>(header->width), static_cast<int>(header->height), std::move(linear));
+  return Texture(static_cast<int>(header.width), static_cast<int>(header.height), std::move(linear));
+}
+
+std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, const std::string& name,
+                                      TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
+                                      TextureError& error) {
+  const auto header = claim_texture(bytes, name, limits, usage, error);
+  if (!header) return std::nullopt;
+  return decode_claimed_texture(bytes, *header, name, encoding, error);
 }
 
 }  // namespace rt

@@ -13,6 +13,7 @@
 
 #include "core/texture/texture.h"
 #include "io/base/load_options.h"
+#include "io/image/image_header.h"
 
 namespace rt {
 
@@ -34,9 +35,17 @@ std::optional<Texture> load_texture(const std::string& path, TextureEncoding enc
                                     LimitUsage& usage, TextureError& error);
 
 // The same from an image already in memory (a glTF buffer view or data URI); `name` names it
-// in errors.
+// in errors. It is claim_texture, then decode_claimed_texture.
 std::optional<Texture> decode_texture(std::span<const unsigned char> bytes, const std::string& name,
                                       TextureEncoding encoding, const LoadLimits& limits, LimitUsage& usage,
                                       TextureError& error);
+
+// In two steps, so that images can be decoded on many threads: the header read and its texels
+// counted against the limits and taken from them (in order, on one thread), ...
+std::optional<ImageHeader> claim_texture(std::span<const unsigned char> bytes, const std::string& name,
+                                         const LoadLimits& limits, LimitUsage& usage, TextureError& error);
+// ... then the decoding, which touches nothing shared.
+std::optional<Texture> decode_claimed_texture(std::span<const unsigned char> bytes, const ImageHeader& header,
+                                              const std::string& name, TextureEncoding encoding, TextureError& error);
 
 }  // namespace rt
