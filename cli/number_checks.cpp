@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace rt {
 namespace {
@@ -55,6 +56,40 @@ CLI::Validator real_number(double min, double max) {
         return std::string();
       },
       "FLOAT in [" + format(min) + " - " + format(max) + "]");
+}
+
+std::array<float, 3> parse_color(const std::string& text) {
+  std::array<float, 3> c{};
+  size_t start = 0;
+  for (size_t k = 0; k < 3; ++k) {
+    const size_t comma = text.find(',', start);
+    c[k] = std::strtof(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start).c_str(),
+                       nullptr);
+    if (comma == std::string::npos) {
+      if (k == 0) c = {c[0], c[0], c[0]};  // one number: grey
+      break;
+    }
+    start = comma + 1;
+  }
+  return c;
+}
+
+CLI::Validator color_value() {
+  const std::string expected = "expected a linear RGB colour, R,G,B or one number for grey, each from 0 to 1000";
+  const CLI::Validator number = real_number(0.0, 1000.0);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        std::vector<std::string> parts{""};
+        for (const char ch : text) {
+          if (ch == ',') parts.emplace_back();
+          else parts.back() += ch;
+        }
+        if (parts.size() != 1 && parts.size() != 3) return expected + ", found \"" + text + "\"";
+        for (std::string part : parts)
+          if (!number(part).empty()) return expected + ", found \"" + text + "\"";
+        return std::string();
+      },
+      "R,G,B");
 }
 
 }  // namespace rt

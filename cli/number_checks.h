@@ -3,7 +3,9 @@
 // "1e3" "not in range"; these accept decimal numbers only and name what they expected.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -13,5 +15,10 @@ namespace rt {
 CLI::Validator whole_number(int64_t min, uint64_t max);
 // A finite number from min to max ("nan" and "inf" are not numbers here).
 CLI::Validator real_number(double min, double max);
+
+// A linear RGB colour, "R,G,B" or one number for grey, each finite and from 0 to 1000.
+CLI::Validator color_value();
+// The colour a text color_value() accepted.
+std::array<float, 3> parse_color(const std::string& text);
 
 }  // namespace rt

@@ -10,6 +10,7 @@
 #include "cli/exit_codes.h"
 #include "cli/frame_output.h"
 #include "cli/interrupt.h"
+#include "cli/number_checks.h"
 #include "cli/output_checks.h"
 #include "cli/progress_bar.h"
 #include "cli/report.h"
@@ -111,6 +112,13 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   if (cmd.texture_filter &&
       !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
     return std::nullopt;
+  if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
+    std::fprintf(stderr,
+                 "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
+                 cmd.fps ? "--fps" : "--animation",
+                 cmd.fps ? "\"animation\": {\"fps\": ...}" : "\"animation\" on its glTF reference (\"mesh\")");
+    return std::nullopt;
+  }
   const std::optional<FrameRange> asked = requested_frames(cmd);
   if (!asked) return std::nullopt;
   RenderRequest r{*asked, cmd.frames.has_value(), "", OutputKind::kPng};
@@ -303,6 +311,10 @@ int run_render(const RenderCommand& cmd) {
   const auto load_start = std::chrono::steady_clock::now();
   LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files);
   if (request->frames_given) options.frame = request->frames.first;
+  options.animation = cmd.animation;
+  options.fps = cmd.fps;
+  if (cmd.background) options.background = parse_color(*cmd.background);
+  if (cmd.ambient) options.ambient = parse_color(*cmd.ambient);
   Diagnostics diags;
   const std::optional<LoadedScene> loaded = load_scene(cmd.scene, options, diags);
   print_diagnostics(stderr, diags);

@@ -2,7 +2,8 @@
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
 //   [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
-//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME] [--dither] [--allow-outside-files]
+//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
+//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--dither] [--allow-outside-files]
 //   [--quiet]`
 #pragma once
 
@@ -33,6 +34,9 @@ struct RenderCommand {
   std::optional<std::string> texture_filter;
   std::optional<std::string> frames;  // "A-B" or "N" (--frames), or "N" (--frame)
   std::optional<std::string> camera;  // a glTF camera by name
+  std::optional<std::string> animation;  // a model on its own: one of its animations, by name or index
+  std::optional<float> fps;              // a model on its own: its timeline's frame rate (default 24)
+  std::optional<std::string> background, ambient;  // "R,G,B" or one number: replace the scene's
   bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
   bool allow_outside_files = false;   // glTF files may read images and buffers outside their folder
   bool quiet = false;

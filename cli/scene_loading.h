@@ -10,8 +10,11 @@ namespace rt {
 // outside_files: --allow-outside-files (LoadLimits::outside_files).
 inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt,
                                     bool outside_files = false) {
-  LoadOptions options{threads, integrator_names(), pixel_sampler_names(), LoadLimits{},
-                      true,    std::move(camera),  std::nullopt};
+  LoadOptions options;
+  options.threads = threads;
+  options.integrators = integrator_names();
+  options.pixel_samplers = pixel_sampler_names();
+  options.camera = std::move(camera);
   options.limits.outside_files = outside_files;
   options.limits.decode_threads = threads;
   return options;

@@ -14,7 +14,7 @@ enum class SamplePositions { kCorners, kCentres };
 
 // render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
 struct AntialiasSettings {
-  std::string mode = "none";  // a name in the pixel sampler table: none, uniform, adaptive
+  std::string mode = "adaptive";  // a name in the pixel sampler table: none, uniform, adaptive
   int samples = 1;            // uniform: samples x samples rays per pixel
   bool jitter = false;        // uniform: a keyed random point in each cell, not its centre
   float threshold = 0.1f;     // adaptive: split a cell whose corners differ by more (displayed values)

@@ -56,6 +56,10 @@ Pose SceneGraph::pose_at(float seconds) const {
   return Pose{seconds, std::move(world)};
 }
 
+Camera SceneGraph::camera_at(const Pose& pose) const {
+  return camera.node >= 0 ? placed_camera(camera.camera, pose.world[static_cast<size_t>(camera.node)]) : camera.camera;
+}
+
 PrimitiveSet SceneGraph::place(const Pose& pose, std::vector<PlacementIssue>* issues) const {
   const std::vector<Mat4>& world = pose.world;
   const auto issue = [&](PlacementIssue::Kind kind, size_t node) {
@@ -100,8 +104,7 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.assets = assets;
   scene.background = background;
   scene.ambient = ambient;
-  scene.camera =
-      camera.node >= 0 ? placed_camera(camera.camera, world[static_cast<size_t>(camera.node)]) : camera.camera;
+  scene.camera = camera_at(pose);
   for (const LightPlacement& l : lights)
     scene.lights.push_back(l.node >= 0 ? transform_light(l.light, world[static_cast<size_t>(l.node)]) : l.light);
   scene.bvh = Bvh(placed, options);

@@ -90,6 +90,8 @@ struct SceneGraph {
   // Geometry whose world transform is singular (animated to a zero scale: glTF's way of hiding
   // a part) or that reaches beyond the float range is left out, and said in `issues` when given.
   PrimitiveSet place(const Pose& pose, std::vector<PlacementIssue>* issues = nullptr) const;
+  // The camera where the pose puts it.
+  Camera camera_at(const Pose& pose) const;
   // The frame: the placed primitives in a BVH, the camera and lights where the pose puts them.
   Scene at(const Pose& pose, const PrimitiveSet& placed, const BvhBuildOptions& options) const;
   Scene at(const Pose& pose, const BvhBuildOptions& options) const { return at(pose, place(pose), options); }

@@ -25,11 +25,11 @@ std::string lower_extension(const std::string& path) {
 std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
   SceneDescription desc;
   desc.path = path;
-  desc.background = Vec3(0.05f);
-  desc.ambient = Vec3(0.1f);
+  desc.background = Vec3(kModelBackground);
+  desc.ambient = Vec3(0.0f);
   desc.frame_the_model = true;
   NodeDescription node;
-  node.mesh = MeshReference{path, path, std::nullopt, {}, ""};
+  node.mesh = MeshReference{path, path, std::nullopt, {}, "", options.animation};
   desc.nodes.push_back(std::move(node));
   std::vector<std::string> files;
   std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);

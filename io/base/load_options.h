@@ -6,6 +6,7 @@
 // the defaults; the fuzzers run with smaller ones.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -52,6 +53,17 @@ struct LoadOptions {
   // The frame whose Scene the loader builds (LoadedScene::scene): the first a render will show.
   // Default: the timeline's first frame.
   std::optional<int> frame;
+  // A model on its own: which of its animations plays (--animation; default: all), and the
+  // frame rate its timeline is sampled at (--fps; default kModelFps, Blender's).
+  std::optional<std::string> animation;
+  std::optional<float> fps;
+  // The scene's background and ambient colours replaced (--background, --ambient), linear RGB.
+  std::optional<std::array<float, 3>> background, ambient;
 };
+
+// A model on its own: its frame rate without --fps, and its world (Blender's default world
+// colour, which lights nothing in Whitted tracing). No ambient light, as in Blender.
+inline constexpr float kModelFps = 24.0f;
+inline constexpr float kModelBackground = 0.0509f;
 
 }  // namespace rt

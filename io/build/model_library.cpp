@@ -28,13 +28,14 @@ ModelLibrary::ModelLibrary(SceneAssets& assets, TextureLibrary& textures, const 
       report_(report) {}
 
 const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
-  const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("");
+  const std::string key = ref.resolved_path + '\n' + ref.mesh_name.value_or("") + '\n' + ref.animation.value_or("");
   if (const auto it = models_.find(key); it != models_.end()) return it->second ? &*it->second : nullptr;
   std::optional<LoadedModel>& slot = models_[key];
   Diagnostics found;
   Reporter in_file(found, ref.resolved_path);
   ImportError why;
-  auto model = import_gltf(ref.resolved_path, ref.mesh_name, options_.limits, usage_, in_file, why);
+  auto model = import_gltf(ref.resolved_path, GltfSelection{ref.mesh_name, ref.animation}, options_.limits, usage_,
+                           in_file, why);
   if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
   const std::string quoted = "\"" + ref.file + "\"";
   const std::string unreadable = "expected a readable glTF 2.0 file, found " + quoted +
@@ -48,6 +49,14 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   if (!model && why.unknown_mesh) {
     report_.error(ref.pointer + "/name", "expected the name of a mesh in " + quoted + " (" + why.message +
                                              "), found \"" + *ref.mesh_name + "\"");
+    return nullptr;
+  }
+  if (!model && why.unknown_animation) {
+    // A model on its own was asked for it by --animation; a scene file by its "animation" key.
+    const std::string expected = "expected the name or index of an animation in " + quoted + " (" + why.message +
+                                 "), found \"" + *ref.animation + "\"";
+    if (ref.pointer.empty()) report_.error("", "--animation: " + expected);
+    else report_.error(ref.pointer + "/animation", expected);
     return nullptr;
   }
   if (!model && in_file.errors() == 0) report_.error(ref.pointer + "/file", unreadable + "not a readable glTF file");

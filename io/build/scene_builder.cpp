@@ -15,6 +15,9 @@
 namespace rt {
 namespace {
 
+// Poses a model's default camera frames at most, spread over its animation.
+constexpr int kFramingPoses = 240;
+
 class Builder {
  public:
   // The scene's own materials come first, so their indices stay those of the description;
@@ -90,8 +93,11 @@ class Builder {
     SceneGraph g;
     g.nodes = std::move(nodes_);
     g.tracks = std::move(tracks_);
-    g.background = desc_.background;
-    g.ambient = desc_.ambient;
+    const auto color = [](const std::optional<std::array<float, 3>>& c, Vec3 otherwise) {
+      return c ? Vec3((*c)[0], (*c)[1], (*c)[2]) : otherwise;
+    };
+    g.background = color(options_.background, desc_.background);
+    g.ambient = color(options_.ambient, desc_.ambient);
     set_timeline(g);
     const CameraDescription& c = desc_.camera;
     g.camera.camera = Camera::look_at(c.position, c.look_at, c.up, c.fov_degrees);
@@ -123,7 +129,6 @@ class Builder {
     }
     warn_stacked_copies(g, rest, pointers_, report_);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
-    if (desc_.frame_the_model && !options_.camera && !cameras_.empty()) g.camera = cameras_.front();
     if (diags_.error_count() > errors_before_) return std::nullopt;
     const std::vector<Aabb> geometry = geometry_bounds(placed);
     // The frame a render shows first, with its BVH (validate builds none); another than the
@@ -160,7 +165,8 @@ class Builder {
 
   void set_timeline(SceneGraph& g) const {
     const AnimationDescription* a = desc_.animation ? &*desc_.animation : nullptr;
-    g.timeline.fps = a ? a->fps : 30.0f;
+    // A scene file's animation.fps (default 30); a model on its own, --fps (default 24, Blender's).
+    g.timeline.fps = a ? a->fps : desc_.frame_the_model ? options_.fps.value_or(kModelFps) : 30.0f;
     float end = 0.0f;
     for (const Track& t : g.tracks) end = std::max(end, t.end());
     g.animated = !g.tracks.empty() || a;
@@ -189,18 +195,34 @@ class Builder {
     return false;
   }
 
-  // The camera framing the model's first frame from the front and above, and a point light up
-  // and to the right of it, so that shading shows the form and shadows fall behind.
+  // The camera framing the model from the front and above, over its whole animation (so that
+  // nothing moving leaves the image), and a point light up and to the right of it, so that
+  // shading shows the form and shadows fall behind.
   bool frame_model(SceneGraph& g, const PrimitiveSet& placed) {
     Aabb bounds;
     for (uint32_t id = 0; id < placed.size(); ++id) bounds.extend(placed.bounds(id));
+    if (g.animated) {
+      // Every frame of the timeline, or kFramingPoses spread over a long one.
+      const int frames = g.timeline.frame_count();
+      const int poses = std::min(frames, kFramingPoses);
+      for (int k = 1; k < poses; ++k) {
+        const int frame = g.timeline.first_frame +
+                          static_cast<int>(static_cast<int64_t>(k) * (frames - 1) / std::max(1, poses - 1));
+        const PrimitiveSet at = g.place(g.pose(frame));
+        for (uint32_t id = 0; id < at.size(); ++id) bounds.extend(at.bounds(id));
+      }
+    }
     if (bounds.empty()) bounds = Aabb{Vec3(-1.0f), Vec3(1.0f)};  // nothing to see: still a camera and a light
     const float aspect = static_cast<float>(desc_.render.width) / static_cast<float>(desc_.render.height);
-    const Camera camera = Camera::framing(bounds, 40.0f, aspect);
+    const Camera framing = Camera::framing(bounds, 40.0f, aspect);
+    // The camera: --camera's (chosen already), else the file's first, else the framing one. The
+    // light goes beside the camera in use, where it was, so that the side the camera sees is lit.
+    if (!options_.camera) g.camera = cameras_.empty() ? CameraPlacement{"", framing, -1} : cameras_.front();
+    const Camera camera = g.camera_at(g.pose(g.timeline.first_frame));
     const float reach = glm::length(camera.position - bounds.centre());
     PointLight light;
     light.position = camera.position + reach * (0.5f * camera.right + 0.6f * camera.up);
-    if (!is_finite(camera.position) || !is_finite(light.position) || !(reach > 0.0f)) {
+    if (!is_finite(framing.position) || !is_finite(light.position) || !(reach > 0.0f)) {
       diags_.file_error(desc_.path,
                         "expected a model small enough to frame in single precision, found one whose "
                         "extent (from " +
@@ -208,7 +230,6 @@ class Builder {
                             " in x) puts the camera at infinity");
       return false;
     }
-    g.camera = CameraPlacement{"", camera, -1};
     if (g.lights.empty()) g.lights = {LightPlacement{light, -1}};
     return true;
   }

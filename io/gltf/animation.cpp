@@ -80,21 +80,29 @@ std::shared_ptr<const Keyframes> read_keys(const tinygltf::Model& model, const t
   return std::make_shared<const Keyframes>(std::move(keys));
 }
 
-}  // namespace
 
-bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map, const LoadLimits& limits,
-                       LimitUsage& usage, ImportedModel& out, Reporter& report) {
-  if (model.animations.empty()) return true;
-  if (model.animations.size() > 1)
-    report.warning("/animations", "the file has " + to_string(model.animations.size()) + " animations; the first (\"" +
-                                      model.animations[0].name + "\") plays");
-  const tinygltf::Animation& animation = model.animations[0];
+// The animation `which` names: by name first, then as an index ("2"); -1 if none.
+int find_animation(const tinygltf::Model& model, const std::string& which) {
+  for (size_t i = 0; i < model.animations.size(); ++i)
+    if (model.animations[i].name == which) return static_cast<int>(i);
+  if (!which.empty() && which.size() <= 9 && which.find_first_not_of("0123456789") == std::string::npos) {
+    const size_t index = std::stoul(which);
+    if (index < model.animations.size()) return static_cast<int>(index);
+  }
+  return -1;
+}
+
+// One animation's channels as tracks.
+bool import_animation(const tinygltf::Model& model, size_t index, const std::vector<int32_t>& node_map,
+                      const LoadLimits& limits, LimitUsage& usage, ImportedModel& out, Reporter& report) {
+  const tinygltf::Animation& animation = model.animations[index];
+  const std::string prefix = "/animations/" + to_string(index);
   // Per sampler and channel kind (a sampler may serve translation and scale alike): its keys.
   std::map<std::pair<int, TrsPart>, std::shared_ptr<const Keyframes>> shared;
   for (size_t c = 0; c < animation.channels.size(); ++c) {
     const tinygltf::AnimationChannel& channel = animation.channels[c];
-    const std::string where = "animation 0 channel " + to_string(c);
-    const std::string at = "/animations/0/channels/" + to_string(c);
+    const std::string where = "animation " + to_string(index) + " channel " + to_string(c);
+    const std::string at = prefix + "/channels/" + to_string(c);
     Track track;
     if (channel.target_path == "translation") track.part = TrsPart::kTranslation;
     else if (channel.target_path == "rotation") track.part = TrsPart::kRotation;
@@ -120,7 +128,7 @@ bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>&
     if (channel.sampler < 0 || static_cast<size_t>(channel.sampler) >= animation.samplers.size())
       return fail(report, at + "/sampler", where + ": sampler " + to_string(channel.sampler) + " does not exist");
     const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<size_t>(channel.sampler)];
-    const std::string sampler_at = "/animations/0/samplers/" + to_string(channel.sampler);
+    const std::string sampler_at = prefix + "/samplers/" + to_string(channel.sampler);
     if (sampler.interpolation == "STEP") track.interpolation = Interpolation::kStep;
     else if (sampler.interpolation == "CUBICSPLINE") track.interpolation = Interpolation::kCubicSpline;
     else if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty())
@@ -149,6 +157,30 @@ bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>&
     out.animation_end = std::max(out.animation_end, track.end());
     out.tracks.push_back(std::move(track));
   }
+  return true;
+}
+
+}  // namespace
+
+bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map,
+                       const std::optional<std::string>& which, const LoadLimits& limits, LimitUsage& usage,
+                       ImportedModel& out, Reporter& report, ImportError& error) {
+  if (which) {
+    const int index = find_animation(model, *which);
+    if (index < 0) {
+      std::string names;
+      for (size_t i = 0; i < model.animations.size() && i < 20; ++i)
+        names += (i ? ", \"" : "\"") + model.animations[i].name + "\" (" + to_string(i) + ")";
+      if (model.animations.size() > 20) names += ", ...";
+      error.unknown_animation = true;
+      error.message = "its animations are " + (names.empty() ? std::string("none") : names);
+      return false;
+    }
+    return import_animation(model, static_cast<size_t>(index), node_map, limits, usage, out, report);
+  }
+  // All of them together, as the Khronos sample viewer plays a file.
+  for (size_t i = 0; i < model.animations.size(); ++i)
+    if (!import_animation(model, i, node_map, limits, usage, out, report)) return false;
   return true;
 }
 

@@ -19,10 +19,13 @@ class Model;
 
 namespace rt {
 
-// node_map: per file node, its index in out.nodes (-1 if the scene does not use it). Appends to
-// out.tracks and sets out.animation_end; false for a broken channel or one past the key limit
-// (report.over_limit), each reported at its pointer.
-bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map, const LoadLimits& limits,
-                       LimitUsage& usage, ImportedModel& out, Reporter& report);
+// node_map: per file node, its index in out.nodes (-1 if the scene does not use it). Appends the
+// tracks of every animation (played together, as the Khronos sample viewer plays a file), or of
+// the one `which` names (its name, or its index), to out.tracks and sets out.animation_end. False
+// for a broken channel or one past the key limit (report.over_limit), each reported at its
+// pointer, and for an unknown `which` (error.unknown_animation, with the names there are).
+bool import_animations(const tinygltf::Model& model, const std::vector<int32_t>& node_map,
+                       const std::optional<std::string>& which, const LoadLimits& limits, LimitUsage& usage,
+                       ImportedModel& out, Reporter& report, ImportError& error);
 
 }  // namespace rt

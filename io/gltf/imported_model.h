@@ -49,11 +49,23 @@ struct ImportedModel {
   std::vector<std::string> files;           // every file read: the model and its external buffers
 };
 
-// Not a problem in the file but in the request: the file has no mesh of the name asked for.
-// (Problems in the file go to the import's Reporter.)
+// What of a file to import. The constructors let a mesh name (or nothing) stand for a selection.
+struct GltfSelection {
+  std::optional<std::string> mesh;       // one mesh by name, on one node with an identity transform
+  std::optional<std::string> animation;  // one animation by name or index; default: all of them together
+  GltfSelection() = default;
+  GltfSelection(std::nullopt_t) {}                                           // NOLINT: the whole file
+  GltfSelection(std::optional<std::string> mesh_name) : mesh(std::move(mesh_name)) {}  // NOLINT
+  GltfSelection(std::optional<std::string> mesh_name, std::optional<std::string> animation_name)
+      : mesh(std::move(mesh_name)), animation(std::move(animation_name)) {}
+};
+
+// Not a problem in the file but in the request: the file has no mesh, or no animation, of the
+// name asked for. (Problems in the file go to the import's Reporter.)
 struct ImportError {
   bool unknown_mesh = false;
-  std::string message;  // "its meshes are "a", "b""
+  bool unknown_animation = false;
+  std::string message;  // the names there are: "\"a\", \"b\"" (the first 20)
 };
 
 }  // namespace rt

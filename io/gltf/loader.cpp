@@ -297,7 +297,7 @@ bool place_scene(const tinygltf::Model& model, const tinygltf::Scene& scene, con
 }  // namespace
 
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
-                                               const std::optional<std::string>& mesh_name, const LoadLimits& limits,
+                                               const GltfSelection& selection, const LoadLimits& limits,
                                                LimitUsage& usage, Reporter& report, ImportError& import_error) {
   GltfFile file = parse_gltf(bytes, base_dir, limits, report);
   ImportedModel out;
@@ -317,13 +317,13 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   }
   images.finish(out.materials, limits.decode_threads);
   const int scene = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
-  if (!meshes_fit(model, meshes_used(model, mesh_name, scene), limits, usage, report)) return std::nullopt;
+  if (!meshes_fit(model, meshes_used(model, selection.mesh, scene), limits, usage, report)) return std::nullopt;
   Importer importer(model, limits, usage, out, report);
 
-  if (mesh_name) {
+  if (selection.mesh) {
     std::string names;
     for (size_t i = 0; i < model.meshes.size(); ++i) {
-      if (model.meshes[i].name == *mesh_name) {
+      if (model.meshes[i].name == *selection.mesh) {
         if (!importer.add_mesh_node(i)) return std::nullopt;
         return out;
       }
@@ -348,7 +348,8 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
   if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, "/scenes/" + to_string(scene), importer,
                    out, node_map, report))
     return std::nullopt;
-  if (!import_animations(model, node_map, limits, usage, out, report)) return std::nullopt;
+  if (!import_animations(model, node_map, selection.animation, limits, usage, out, report, import_error))
+    return std::nullopt;
   return out;
 }
 
@@ -366,7 +367,7 @@ std::vector<ModelPlacement> placements(const ImportedModel& model) {
   return out;
 }
 
-std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
+std::optional<ImportedModel> import_gltf(const std::string& path, const GltfSelection& selection,
                                          const LoadLimits& limits, LimitUsage& usage, Reporter& report,
                                          ImportError& error) {
   std::string why;
@@ -376,7 +377,7 @@ std::optional<ImportedModel> import_gltf(const std::string& path, const std::opt
     return std::nullopt;
   }
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, mesh_name, limits, usage, report, error);
+  auto model = import_gltf_bytes(*bytes, base_dir.empty() ? "." : base_dir, selection, limits, usage, report, error);
   if (model) model->files.insert(model->files.begin(), path);
   return model;
 }

@@ -19,19 +19,20 @@ namespace rt {
 // Every node with a mesh, at rest (the tracks not applied).
 std::vector<ModelPlacement> placements(const ImportedModel& model);
 
-// With mesh_name: that mesh only, on one node with an identity transform. Without: every mesh the file's
-// default scene places, at its node transforms (or every mesh once if the file has no scene).
+// With selection.mesh: that mesh only, on one node with an identity transform. Without: every mesh
+// the file's default scene places, at its node transforms (or every mesh once if the file has no
+// scene), and its animations: all of them, played together, or selection.animation alone.
 // Vertices, triangles, texels and animation keys are checked against what `usage` says the scene
 // has left of `limits` before they are read or decoded, and added to it. Every problem and
 // warning goes to `report` (a reporter on the glTF file: its pointers, and a .gltf's
 // line:column); one past a limit stops the import (report.stopped_by_limit()).
-std::optional<ImportedModel> import_gltf(const std::string& path, const std::optional<std::string>& mesh_name,
+std::optional<ImportedModel> import_gltf(const std::string& path, const GltfSelection& selection,
                                          const LoadLimits& limits, LimitUsage& usage, Reporter& report,
                                          ImportError& error);
 
 // The same from the file's bytes already in memory; external buffers resolve against base_dir.
 std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>& bytes, const std::string& base_dir,
-                                               const std::optional<std::string>& mesh_name, const LoadLimits& limits,
+                                               const GltfSelection& selection, const LoadLimits& limits,
                                                LimitUsage& usage, Reporter& report, ImportError& error);
 
 }  // namespace rt

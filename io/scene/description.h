@@ -45,7 +45,8 @@ struct MeshReference {
   std::string resolved_path;  // relative paths resolved against the scene file's folder
   std::optional<std::string> mesh_name;
   std::vector<MaterialOverride> materials;
-  std::string pointer;  // of the "mesh" object
+  std::string pointer;                   // of the "mesh" object
+  std::optional<std::string> animation;  // one of the file's animations, by name or index; default: all
 };
 
 // A node's parent-from-node transform as written: translate / rotate / scale, or a fixed matrix.

@@ -84,6 +84,12 @@ std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const J
   ref.pointer = ptr;
   const auto file = o.string("file", true);
   const auto name = o.string("name");
+  // One of the file's animations, by name or index (default: all of them).
+  if (const Json* a = o.get("animation")) {
+    if (a->is_string() && !a->get<std::string>().empty()) ref.animation = a->get<std::string>();
+    else if (a->is_number_unsigned() && a->get<uint64_t>() < 1000000) ref.animation = std::to_string(a->get<uint64_t>());
+    else ctx.reader.expected(o.child("animation"), "the name of one of the file's animations, or its index", *a);
+  }
   if (const Json* overrides = o.get("materials")) {
     const std::string at = o.child("materials");
     if (!overrides->is_object()) {

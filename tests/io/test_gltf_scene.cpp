@@ -90,6 +90,26 @@ TEST_CASE("glTF scene: a file's own camera and lights are used, on their nodes",
   r = rt::test::rtcli("render '" + path + "' --camera eye --width 32 --height 24 -o '" +
                       rt::test::output_path("eye.png") + "'");
   CHECK(r.code == 0);
+  // --camera on a model on its own looks through that camera, not the framing one.
+  LoadOptions eye = rt::test::load_options();
+  eye.camera = "eye";
+  const auto through = load_scene(path, eye, diags);
+  REQUIRE(through);
+  CHECK(through->scene.camera.position == Vec3(0.5f, 0.5f, 4.0f));
+}
+
+TEST_CASE("glTF scene: the light rtcli adds to a model stands beside the camera in use", "[gltf][lights]") {
+  if (!rt::test::have_sample_models()) return;
+  Diagnostics diags;
+  const auto loaded = load_scene(rt::test::sample_model("Cameras/glTF/Cameras.gltf"), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  REQUIRE(loaded->scene.lights.size() == 1);
+  const Camera& c = loaded->scene.camera;
+  CHECK(c.position.z == Approx(3.0f));  // the file's first camera
+  const Vec3 offset = std::get<PointLight>(loaded->scene.lights[0]).position - c.position;
+  CHECK(std::fabs(glm::dot(offset, c.forward)) < 1e-3f * glm::length(offset));  // up and to the right of it
+  CHECK(glm::dot(offset, c.right) > 0.0f);
+  CHECK(glm::dot(offset, c.up) > 0.0f);
 }
 
 TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][animation]") {
@@ -117,7 +137,8 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
       load_scene(rt::test::sample_model("BoxAnimated/glTF-Binary/BoxAnimated.glb"), rt::test::load_options(), diags);
   REQUIRE(loaded);
   CHECK(loaded->graph.animated);
-  CHECK(loaded->graph.timeline.last_frame == 112);  // ceil(3.708 s * 30 fps)
+  CHECK(loaded->graph.timeline.fps == 24.0f);  // a model on its own: Blender's rate unless --fps
+  CHECK(loaded->graph.timeline.last_frame == 89);  // ceil(3.708 s * 24 fps)
   const std::vector<Mat4> at0 = loaded->graph.pose_at(0.0f).world, at1 = loaded->graph.pose_at(1.0f).world;
   // The file hangs under the one node the loader makes for it: its nodes start at graph index 1.
   CHECK(at0[moved + 1][3] != at1[moved + 1][3]);  // the translated node moved
@@ -127,6 +148,11 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
   // One rotation channel, keys at 0, 1, 2 s: at 0.5 s between the first two keys.
   REQUIRE(loaded->graph.tracks.size() == 1);
   CHECK(loaded->graph.tracks[0].part == TrsPart::kRotation);
+  CHECK(loaded->graph.timeline.last_frame == 48);
+  LoadOptions at30 = rt::test::load_options();
+  at30.fps = 30.0f;  // --fps 30
+  loaded = load_scene(rt::test::sample_model("AnimatedCube/glTF/AnimatedCube.gltf"), at30, diags);
+  REQUIRE(loaded);
   CHECK(loaded->graph.timeline.last_frame == 60);
 
   loaded = load_scene(rt::test::sample_model("Cameras/glTF/Cameras.gltf"), rt::test::load_options(), diags);
@@ -204,4 +230,126 @@ TEST_CASE("JSON scenes: a glTF file's materials replaced by name, its nodes anim
     const MeshInstance& before = i.bounds.centre().x < 0 ? left : right;
     CHECK(i.bounds.centre().y - before.bounds.centre().y == Approx(3.0f).epsilon(1e-4));
   }
+}
+
+namespace {
+
+// Two squares, each moved by its own animation ("Left" moves node 0 up, "Right" node 1 down),
+// over 2 s and 4 s.
+std::string two_animations() {
+  std::string buffer = rt::test::square_positions();       // view 0: 48 bytes
+  rt::test::append<float>(buffer, {0, 2});                  // view 1: times, 8 bytes
+  rt::test::append<float>(buffer, {0, 0, 0, 0, 2, 0});      // view 2: translations up, 24 bytes
+  rt::test::append<float>(buffer, {0, 4});                  // view 3: times, 8 bytes
+  rt::test::append<float>(buffer, {3, 0, 0, 3, -2, 0});     // view 4: translations down, 24 bytes
+  const auto channel = [](int node) {
+    return Json{{"channels", {{{"sampler", 0}, {"target", {{"node", node}, {"path", "translation"}}}}}}};
+  };
+  Json left = channel(0), right = channel(1);
+  left["name"] = "Left";
+  left["samplers"] = {{{"input", 1}, {"output", 2}}};
+  right["name"] = "Right";
+  right["samplers"] = {{{"input", 3}, {"output", 4}}};
+  const Json doc = {
+      {"scenes", {{{"nodes", {0, 1}}}}},
+      {"nodes", {{{"mesh", 0}}, {{"mesh", 0}, {"translation", {3, 0, 0}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}}}}}}},
+      {"animations", {left, right}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"}, {"min", {0}}, {"max", {2}}},
+        {{"bufferView", 2}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}},
+        {{"bufferView", 3}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"}, {"min", {0}}, {"max", {4}}},
+        {{"bufferView", 4}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteLength", 48}},
+        {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 8}},
+        {{"buffer", 0}, {"byteOffset", 56}, {"byteLength", 24}},
+        {{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 8}},
+        {{"buffer", 0}, {"byteOffset", 88}, {"byteLength", 24}}}}};
+  return rt::test::write_gltf("two-animations.gltf", buffer, doc);
+}
+
+}  // namespace
+
+TEST_CASE("glTF animations: all play together; --animation or \"animation\" picks one", "[gltf][animation]") {
+  const std::string path = two_animations();
+  Diagnostics diags;
+  auto all = load_scene(path, rt::test::load_options(), diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(all);
+  CHECK(all->graph.tracks.size() == 2);
+  CHECK(all->graph.timeline.last_frame == 96);  // the longer one, 4 s at 24 fps
+  // Node 0 (graph node 1) moved up at 2 s, node 1 (graph node 2) down at 4 s.
+  const std::vector<Mat4> end = all->graph.pose_at(4.0f).world;
+  CHECK(end[1][3].y == Approx(2.0f));
+  CHECK(end[2][3].y == Approx(-2.0f));
+  // The default camera frames the whole animation: both squares at their highest and lowest.
+  const Camera& camera = all->scene.camera;
+  for (const Vec3 corner : {Vec3(0, 3, 0), Vec3(4, -2, 0), Vec3(0, 0, 0), Vec3(4, 1, 0)}) {
+    const Vec3 d = glm::normalize(corner - camera.position);
+    const float up = glm::dot(d, camera.up) / glm::dot(d, camera.forward);
+    CHECK(std::fabs(up) <= std::tan(glm::radians(camera.vertical_fov_degrees / 2)) + 1e-4f);
+  }
+
+  for (const std::string which : {"Right", "1"}) {
+    LoadOptions options = rt::test::load_options();
+    options.animation = which;
+    auto one = load_scene(path, options, diags);
+    REQUIRE(one);
+    REQUIRE(one->graph.tracks.size() == 1);
+    CHECK(one->graph.timeline.last_frame == 96);
+    CHECK(one->graph.pose_at(4.0f).world[1][3].y == Approx(0.0f));  // "Left" does not play
+  }
+  LoadOptions unknown = rt::test::load_options();
+  unknown.animation = "Middle";
+  Diagnostics said;
+  CHECK_FALSE(load_scene(path, unknown, said));
+  REQUIRE(said.has_errors());
+  CHECK_THAT(said.all().front().message,
+             Catch::Contains("--animation: expected the name or index of an animation in") &&
+                 Catch::Contains("(its animations are \"Left\" (0), \"Right\" (1)), found \"Middle\""));
+
+  // A scene file picks one with the glTF reference's "animation".
+  const LoadedScene left = rt::test::load_scene_text("pick-animation.json", R"({
+    "camera": {"position": [0, 0, 9], "look_at": [0, 0, 0]},
+    "nodes": [{"mesh": {"file": ")" + path + R"(", "animation": "Left"}}]})");
+  REQUIRE(left.graph.tracks.size() == 1);
+  CHECK(left.graph.timeline.last_frame == 60);  // 2 s at a scene file's 30 fps
+
+}
+
+TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's world; both overridable",
+          "[gltf][defaults]") {
+  const std::string path = rt::test::write_gltf("lit_square_defaults.gltf", rt::test::square_positions(), lit_square());
+  Diagnostics diags;
+  const auto model = load_scene(path, rt::test::load_options(), diags);
+  REQUIRE(model);
+  CHECK(model->settings.antialias.mode == "adaptive");  // as a scene file without "antialias"
+  CHECK(model->scene.ambient == Vec3(0.0f));
+  CHECK(model->scene.background == Vec3(kModelBackground));
+  CHECK(rt::test::load_scene_text("no_aa_block.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "materials": {"m": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "m"}]})")
+            .settings.antialias.mode == "adaptive");
+  // --ambient and --background replace either, for a model or a scene file.
+  LoadOptions options = rt::test::load_options();
+  options.ambient = std::array<float, 3>{0.1f, 0.2f, 0.3f};
+  options.background = std::array<float, 3>{0.5f, 0.5f, 0.5f};
+  const auto lifted = load_scene(path, options, diags);
+  REQUIRE(lifted);
+  CHECK(lifted->scene.ambient == Vec3(0.1f, 0.2f, 0.3f));
+  CHECK(lifted->scene.background == Vec3(0.5f));
+  const auto scene = load_scene(rt::test::source_path("scenes/default.json"), options, diags);
+  REQUIRE(scene);
+  CHECK(scene->scene.ambient == Vec3(0.1f, 0.2f, 0.3f));
+
+  auto r = rt::test::rtcli("render '" + path + "' --background 0.2,0.3 -o x.png");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("expected a linear RGB colour, R,G,B or one number"));
+  r = rt::test::rtcli("render scenes/default.json --fps 30 -o x.png");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--fps applies to a glTF file rendered on its own"));
+  r = rt::test::rtcli("render '" + path + "' --ambient 0.1 --background 0.4 --width 16 --height 12 -o '" +
+                      rt::test::output_path("lifted.png") + "'");
+  CHECK(r.code == 0);
 }

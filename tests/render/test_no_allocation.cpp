@@ -142,7 +142,9 @@ TEST_CASE(
     "metallic-roughness) allocate nothing per "
     "ray",
     "[bvh][alloc]") {
-  OneTile t{AntialiasSettings{}};
+  AntialiasSettings one_ray;  // one ray a pixel: the tracing alone
+  one_ray.mode = "none";
+  OneTile t{one_ray};
   const Scene& scene = t.scene;
   const RayCounters& counters = t.counters;
 

@@ -165,7 +165,7 @@ TEST_CASE("golden image: bump maps on sphere, cube, cylinder and cone", "[render
 TEST_CASE("emission: camera and mirror rays see an emissive surface's own radiance", "[render][emission]") {
   // No lights: all there is to see is emission, directly and in a mirror.
   const LoadedScene s = rt::test::load_scene_text("emission.json", R"({
-    "render": {"width": 21, "height": 21, "max_depth": 3},
+    "render": {"width": 21, "height": 21, "max_depth": 3, "antialias": {"mode": "none"}},
     "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 30},
     "lights": [],
     "materials": {"lamp": {"kd": 0, "emission": [2, 1, 0.5]},

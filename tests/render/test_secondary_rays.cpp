@@ -119,7 +119,7 @@ TEST_CASE("ior 1 with transmission 1 and no absorption leaves the image behind u
 
 TEST_CASE("max_depth bounds the rays traced between two facing mirrors", "[reflection]") {
   const LoadedScene s = rt::test::load_scene_text("mirrors.json", R"({
-    "render": { "width": 1, "height": 1 },
+    "render": { "width": 1, "height": 1, "antialias": { "mode": "none" } },
     "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 10 },
     "materials": { "mirror": { "kd": 0, "reflectivity": 1 } },
     "lights": [ { "type": "point", "position": [0, 0.5, 0] } ],

@@ -15,8 +15,11 @@
 namespace rt::test {
 
 inline LoadOptions load_options(unsigned threads = 1) {
-  return LoadOptions{threads, integrator_names(), pixel_sampler_names(), LoadLimits{},
-                     true,    std::nullopt,       std::nullopt};
+  LoadOptions options;
+  options.threads = threads;
+  options.integrators = integrator_names();
+  options.pixel_samplers = pixel_sampler_names();
+  return options;
 }
 
 // Writes `json` to the scratch folder as `name` and loads it; the test stops (showing every
