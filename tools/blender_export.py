@@ -6,7 +6,9 @@
 #     from a Bump node fed by an Image Texture (glTF has no height maps); the image is copied
 #     beside the exported file.
 # Settings: Y up (glTF's), cameras, punctual lights in physical units ("SPEC": W -> cd with
-# 683 lm/W), extras, animation, modifiers applied.
+# 683 lm/W), extras, animation, modifiers applied. The custom properties are set for the export
+# only: afterwards (even if the export fails) each is removed, or given back the value it had, so
+# that they are not saved into the user's .blend.
 #
 # Usage (docs/scene-format.md, "From Blender"):
 #   blender scene.blend --background --python tools/blender_export.py -- out.glb
@@ -46,7 +48,26 @@ def bump_source(material):
     return None
 
 
-def mark_area_lights(scene):
+def set_property(block, key, value, marked):
+    """block[key] = value, remembering what was there (marked) so that restore() can undo it."""
+    previous = block.get(key)
+    if hasattr(previous, 'to_dict'):  # an IDPropertyGroup: copy it before it is replaced
+        previous = previous.to_dict()
+    marked.append((block, key, key in block, previous))
+    block[key] = value
+
+
+def restore(marked):
+    """Undoes set_property, last first: each key removed, or given back its earlier value."""
+    for block, key, existed, previous in reversed(marked):
+        if existed:
+            block[key] = previous
+        elif key in block:
+            del block[key]
+    marked.clear()
+
+
+def mark_area_lights(scene, marked):
     """rtcli_area_light extras on every area light's object."""
     count = 0
     for obj in scene.objects:
@@ -55,18 +76,18 @@ def mark_area_lights(scene):
         light = obj.data
         square = light.shape in ('SQUARE', 'DISK')
         size_y = light.size if square else light.size_y
-        obj['rtcli_area_light'] = {
+        set_property(obj, 'rtcli_area_light', {
             'shape': light.shape,
             'size': [light.size, size_y],
             'color': list(light.color),
             'power': light.energy,
             'two_sided': False,
-        }
+        }, marked)
         count += 1
     return count
 
 
-def mark_bump_maps(scene, out_dir):
+def mark_bump_maps(scene, out_dir, marked):
     """rtcli_bump extras on bump-mapped materials; their height images copied beside the export."""
     count = 0
     for material in bpy.data.materials:
@@ -84,7 +105,8 @@ def mark_bump_maps(scene, out_dir):
             image_node.image.save_render(target)
         # Blender's bump height is the texel value times Distance, scaled by Strength.
         strength = bump.inputs['Strength'].default_value * bump.inputs['Distance'].default_value
-        material['rtcli_bump'] = {'image': name, 'strength': -strength if bump.invert else strength}
+        set_property(material, 'rtcli_bump', {'image': name, 'strength': -strength if bump.invert else strength},
+                     marked)
         count += 1
     return count
 
@@ -94,19 +116,23 @@ def export_for_rtcli(path):
     out_dir = os.path.dirname(path)
     os.makedirs(out_dir, exist_ok=True)
     scene = bpy.context.scene
-    areas = mark_area_lights(scene)
-    bumps = mark_bump_maps(scene, out_dir)
-    bpy.ops.export_scene.gltf(
-        filepath=path,
-        export_format='GLB' if path.lower().endswith('.glb') else 'GLTF_SEPARATE',
-        export_yup=True,
-        export_cameras=True,
-        export_lights=True,
-        convert_lighting_mode='SPEC',
-        export_extras=True,
-        export_apply=True,
-        export_animations=True,
-    )
+    marked = []
+    try:
+        areas = mark_area_lights(scene, marked)
+        bumps = mark_bump_maps(scene, out_dir, marked)
+        bpy.ops.export_scene.gltf(
+            filepath=path,
+            export_format='GLB' if path.lower().endswith('.glb') else 'GLTF_SEPARATE',
+            export_yup=True,
+            export_cameras=True,
+            export_lights=True,
+            convert_lighting_mode='SPEC',
+            export_extras=True,
+            export_apply=True,
+            export_animations=True,
+        )
+    finally:
+        restore(marked)  # the user's objects and materials as they were
     print('rtcli: wrote %s (%d area lights, %d bump maps as extras)' % (path, areas, bumps))
 
 

@@ -16,9 +16,8 @@ struct Run {
   std::string output;  // stdout and stderr together
 };
 
-// Runs rtcli with `args` (shell syntax) from `cwd`; `prefix` goes before the binary (`timeout 10`).
-inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_DIR, const std::string& prefix = "") {
-  const std::string command = "cd '" + cwd + "' && " + prefix + " '" + RTCLI_BINARY + "' " + args + " 2>&1";
+// Runs a shell command line, its output and exit code.
+inline Run run_shell(const std::string& command) {
   Run run;
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe);
@@ -27,6 +26,11 @@ inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_
   const int status = pclose(pipe);
   run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;
+}
+
+// Runs rtcli with `args` (shell syntax) from `cwd`; `prefix` goes before the binary (`timeout 10`).
+inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_DIR, const std::string& prefix = "") {
+  return run_shell("cd '" + cwd + "' && " + prefix + " '" + RTCLI_BINARY + "' " + args + " 2>&1");
 }
 
 // A render sent SIGINT (Ctrl-C) once it has loaded: a Ctrl-C while loading ends the process at
