@@ -51,6 +51,10 @@ struct Material {
   Vec3 emission{0.0f};
   TextureSlot emission_texture;  // multiplies `emission`
   // KHR_materials_unlit: the (textured) base colour is shown as it is, without lighting.
+  // glTF's doubleSided false: the back of a triangle is not there for camera, reflection,
+  // refraction and glossy rays (they pass through it); shadow rays still stop at it. Ignored for
+  // transmissive materials, whose back faces are where rays leave the glass.
+  bool single_sided = false;
   bool unlit = false;
   MetallicRoughness pbr;
   AlphaCutoutParams cutout;

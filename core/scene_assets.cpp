@@ -4,13 +4,17 @@ namespace rt {
 
 void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
   const Material& m = materials[material];
-  if (!m.cutout.enabled || mask(mesh, material)) return;
+  if (mask(mesh, material)) return;
   // Coverage that cannot vary and reaches the cutoff everywhere needs no test: drawn solid.
   const bool varies = m.cutout.texture.present() || !meshes[mesh].mesh.colors.empty();
-  if (!varies && m.cutout.factor >= m.cutout.cutoff) return;
+  const bool masked = m.cutout.enabled && (varies || m.cutout.factor < m.cutout.cutoff);
+  const bool single_sided = m.single_sided && !m.transmissive();
+  if (!masked && !single_sided) return;
   MaskedPlacement p;
   p.mesh = mesh;
   p.material = material;
+  p.cutout.masked = masked;
+  p.cutout.single_sided = single_sided;
   p.cutout.mesh = &meshes[mesh].mesh;
   if (m.cutout.texture.present()) {
     p.cutout.texture = &textures[m.cutout.texture.texture];

@@ -41,7 +41,7 @@ def torus_knot(p=2, q=3, segments=240, sides=16, radius=0.28):
     for i in range(segments):
         for j in range(sides):
             a, b = i * (sides + 1) + j, (i + 1) * (sides + 1) + j
-            indices += [a, a + 1, b, a + 1, b + 1, b]  # counter-clockwise seen from outside
+            indices += [a, b, a + 1, a + 1, b, b + 1]  # counter-clockwise seen from outside
     return positions, normals, uvs, indices
 
 

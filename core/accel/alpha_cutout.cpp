@@ -2,7 +2,17 @@
 
 namespace rt {
 
+bool AlphaCutout::front_facing(uint32_t triangle, Vec3 direction) const {
+  if (!single_sided) return true;
+  const Vec3& p0 = mesh->positions[mesh->indices[3 * triangle]];
+  const Vec3& p1 = mesh->positions[mesh->indices[3 * triangle + 1]];
+  const Vec3& p2 = mesh->positions[mesh->indices[3 * triangle + 2]];
+  const float facing = glm::dot(glm::cross(p1 - p0, p2 - p0), direction);
+  return facing < 0.0f;
+}
+
 bool AlphaCutout::covers(uint32_t triangle, float b1, float b2) const {
+  if (!masked) return true;
   const uint32_t i0 = mesh->indices[3 * triangle], i1 = mesh->indices[3 * triangle + 1],
                  i2 = mesh->indices[3 * triangle + 2];
   const float b0 = 1.0f - b1 - b2;

@@ -1,7 +1,10 @@
-// glTF's alpha MASK where rays are traced: a mesh placed with a cut-out material is not there
-// where its coverage falls below the cutoff, so closest-hit and any-hit both skip that point and
-// camera, reflection and shadow rays all see through it. Traversal asks covers() for each
-// triangle crossing of such an instance, and only of such instances.
+// Where a mesh placed with a material is not there, tested while rays are traced, only for the
+// instances that need it:
+//  - glTF's alpha MASK: where coverage falls below the cutoff, closest-hit and any-hit both skip
+//    the point, so camera, reflection and shadow rays all see through it (covers());
+//  - glTF's doubleSided false: the back of each triangle is skipped by closest-hit queries (camera,
+//    reflection, refraction, glossy rays), not by shadow rays, so a single-sided closed mesh
+//    still casts its whole shadow (front_facing()).
 #pragma once
 
 #include <cstdint>
@@ -18,10 +21,16 @@ struct AlphaCutout {
   TextureMapping mapping;            // its UV set, KHR_texture_transform and wrap mode
   float factor = 1.0f;               // baseColorFactor's alpha
   float cutoff = 0.5f;
+  bool masked = false;        // the alpha test applies
+  bool single_sided = false;  // closest-hit queries skip back faces
 
   // Whether the surface is there at barycentrics (b1, b2) of `triangle`: factor x texture
   // (bilinear on the finest level, or nearest) x the COLOR_0 alpha >= cutoff.
   bool covers(uint32_t triangle, float b1, float b2) const;
+  // Whether a ray along object-space `direction` meets the front of `triangle`, the side its
+  // vertices run counter-clockwise seen from. In object space, so a mirroring transform (which
+  // glTF says turns the world's winding) changes nothing. True unless single_sided.
+  bool front_facing(uint32_t triangle, Vec3 direction) const;
 };
 
 }  // namespace rt

@@ -45,7 +45,7 @@ bool Bvh::intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
       const Slot& s = slots_[slot];
       Hit candidate;
       if (s.id < triangle_count_ && intersect_triangle(s.triangle, r, candidate) &&
-          cutout.covers(s.id, candidate.b1, candidate.b2)) {
+          cutout.front_facing(s.id, r.direction) && cutout.covers(s.id, candidate.b1, candidate.b2)) {
         hit = candidate;
         hit.prim = s.id;
         r.tmax = hit.t;

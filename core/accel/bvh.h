@@ -58,7 +58,8 @@ class Bvh {
 
   // Closest hit in (ray.tmin, ray.tmax); narrows ray.tmax to it.
   bool intersect(Ray& ray, Hit& hit) const;
-  // Closest hit among the triangles `cutout` covers (a mesh BVH with an alpha mask).
+  // Closest hit among the triangles `cutout` covers and whose front the ray meets if it is
+  // single-sided (a mesh BVH with an alpha mask or a single-sided material).
   bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const;
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const;

@@ -21,7 +21,7 @@ struct MeshInstance {
   Aabb bounds;                          // world space: the BVH's box through the transform
   uint32_t mesh = 0;                    // which mesh of the scene's assets, for surface records
   uint32_t material = 0;                // the placement's material (a mesh can be placed with several)
-  const AlphaCutout* cutout = nullptr;  // an alpha-masked material's coverage test; null: solid
+  const AlphaCutout* cutout = nullptr;  // an alpha-masked or single-sided material's test; null: solid
 };
 
 }  // namespace rt

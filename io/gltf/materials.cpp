@@ -111,6 +111,7 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   }
 
   if (extension(m.extensions, "KHR_materials_unlit")) out.unlit = true;
+  out.single_sided = !m.doubleSided;  // glTF's default: single-sided
   return out;
 }
 

@@ -13,7 +13,7 @@
 //   KHR_materials_ior                                    -> ior (default 1.5)
 //   KHR_materials_volume attenuation                     -> absorption = -ln(colour) / distance
 //   KHR_materials_unlit                                  -> unlit
-//   doubleSided                                          -> always: both sides are shaded
+//   doubleSided false                                    -> single_sided: back faces let rays through
 #pragma once
 
 #include <string>

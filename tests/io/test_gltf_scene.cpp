@@ -353,3 +353,39 @@ TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's wor
                       rt::test::output_path("lifted.png") + "'");
   CHECK(r.code == 0);
 }
+
+TEST_CASE("glTF doubleSided false: rays pass through the back, shadows still fall", "[gltf][materials]") {
+  // The unit square in z = 0, counter-clockwise seen from +z: its front faces +z.
+  const auto square_with = [](const std::string& name, bool double_sided) {
+    Json doc = lit_square();
+    doc["materials"] = {{{"doubleSided", double_sided}}};
+    doc["meshes"][0]["primitives"][0]["material"] = 0;
+    return rt::test::write_gltf(name, rt::test::square_positions(), doc);
+  };
+  const auto scene = [](const std::string& name, const std::string& gltf, const std::string& scale) {
+    return rt::test::load_scene_text(name, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+        "nodes": [{"mesh": {"file": ")" + gltf + R"("}, "transform": {"scale": )" + scale + "}}]}");
+  };
+  const auto hits = [](const Scene& s, float z, float dz) {
+    Ray r(Vec3(0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz));
+    Hit hit;
+    return s.intersect(r, hit);
+  };
+  const LoadedScene single = scene("single.json", square_with("single-sided.gltf", false), "1");
+  CHECK(hits(single.scene, 5.0f, -1.0f));        // from the front: there
+  CHECK_FALSE(hits(single.scene, -5.0f, 1.0f));  // from behind: camera and secondary rays pass
+  CHECK(single.scene.occluded(Ray(Vec3(0.5f, 0.5f, -5.0f), Vec3(0.0f, 0.0f, 1.0f))));  // shadows fall
+  // Mirrored (a negative scale), the front still faces +z: glTF turns the winding with the determinant.
+  const LoadedScene mirrored = scene("mirrored.json", square_with("single-sided-m.gltf", false), "[-1, 1, 1]");
+  const auto hits_at = [](const Scene& s, float z, float dz) {
+    Ray r(Vec3(-0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz));
+    Hit hit;
+    return s.intersect(r, hit);
+  };
+  CHECK(hits_at(mirrored.scene, 5.0f, -1.0f));
+  CHECK_FALSE(hits_at(mirrored.scene, -5.0f, 1.0f));
+  // Double-sided: there from both sides.
+  const LoadedScene both = scene("double.json", square_with("double-sided.gltf", true), "1");
+  CHECK(hits(both.scene, 5.0f, -1.0f));
+  CHECK(hits(both.scene, -5.0f, 1.0f));
+}
