@@ -15,16 +15,12 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
   const bool blocked = scene.bvh.for_each_hit(ray, [&](const Hit& hit) {
     const Material& m = scene.materials()[scene.material_of(hit.prim)];
     if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
-    // What passes the interface: transmission times (1 - Fresnel), the interface taken between
-    // the material and air (shadow rays do not track nested media).
-    const SurfaceInteraction si = scene.surface(ray, hit);
-    const float speed = glm::length(ray.direction);
-    const float cos_i = std::fabs(glm::dot(ray.direction, si.geometric_normal)) / speed;
-    const float fresnel =
-        si.front_face ? schlick_reflectance(cos_i, 1.0f, m.ior) : schlick_reflectance(cos_i, m.ior, 1.0f);
-    through *= m.transmission * (1.0f - fresnel);
+    // What passes the interface: transmission times (1 - F0), the interface taken between the
+    // material and air (shadow rays do not track nested media).
+    through *= m.transmission * (1.0f - schlick_reflectance(1.0f, 1.0f, m.ior));
     if (m.absorbing()) {
-      depth += (si.front_face ? -hit.t : hit.t) * speed * m.absorption;
+      const SurfaceInteraction si = scene.surface(ray, hit);  // which way it crosses
+      depth += (si.front_face ? -hit.t : hit.t) * glm::length(ray.direction) * m.absorption;
       absorbed = true;
     }
     return max_component(through) <= 0.0f;

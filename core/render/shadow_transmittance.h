@@ -6,11 +6,14 @@
 namespace rt {
 
 // The fraction of light that passes along a shadow ray, per channel: 0 when anything opaque is
-// in the way; otherwise, for every transmissive surface crossed, its transmission times the
-// Fresnel transmittance 1 - F (Schlick, against air), times Beer-Lambert absorption over the
-// distance inside each absorbing object. So glass casts a lighter, tinted shadow, darker at
-// the rim. Shadow rays are not bent (no caustics). Any-hit traversal with a visitor: it stops
-// at the first opaque surface.
+// in the way; otherwise, for every transmissive surface crossed, a filter of its transmission
+// times 1 - F0, F0 = ((n - 1) / (n + 1))^2 its Fresnel reflectance at normal incidence, times
+// Beer-Lambert absorption over the distance inside each absorbing object. So glass casts a
+// light, tinted shadow all over (a clear sphere of n = 1.5, two surfaces: 0.92), as POV-Ray's
+// filter does. Shadow rays are not bent (no caustics), so the angle at which one meets a surface
+// means nothing physical: Fresnel at that angle made the unbent ray meet total internal
+// reflection on the way out, and a glass sphere's shadow had a black outer ring. Any-hit
+// traversal with a visitor: it stops at the first opaque surface.
 Vec3 shadow_transmittance(const Scene& scene, const Ray& ray);
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
+#include "core/render/shadow_transmittance.h"
 #include "io/image/rgb8_image.h"
 #include "io/scene_loader.h"
 #include "materials/evaluated_surface.h"
@@ -267,4 +268,29 @@ TEST_CASE("a ray that escapes inside an absorbing medium keeps its non-absorbed 
   CHECK(centre.x == 0.0f);
   CHECK(centre.y == Approx(0.5f));
   CHECK(centre.z == Approx(0.5f));
+}
+
+TEST_CASE("a glass sphere's shadow is light all over: each surface filters by transmission x (1 - F0)",
+          "[refraction][shadow]") {
+  // Unbent shadow rays through a clear sphere (n = 1.5) at growing distances from its centre. Near
+  // the rim the unbent ray would leave beyond the critical angle (sin > 1 / 1.5): Fresnel at that
+  // angle made it total internal reflection, a black outer ring. Each crossing now passes
+  // 1 - F0 = 1 - 0.04, whatever the angle: 0.9216 for the two.
+  const LoadedScene s = rt::test::load_scene_text("glass_filter.json", R"({
+    "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+    "materials": { "glass": { "kd": 0, "transmission": 1, "ior": 1.5 },
+                   "amber": { "kd": 0, "transmission": [1, 0.5, 0.25], "ior": 1.5 } },
+    "nodes": [ { "shape": "sphere", "material": "glass" },
+               { "shape": "sphere", "material": "amber", "transform": { "translate": [0, 5, 0] } } ] })");
+  for (const float x : {0.0f, 0.5f, 0.8f, 0.95f, 0.999f}) {
+    INFO("x " << x);
+    const Vec3 t = shadow_transmittance(s.scene, Ray(Vec3(x, 0.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f));
+    CHECK(t.x == Approx(0.9216f));
+    CHECK(t.y == Approx(0.9216f));
+  }
+  // Tinted glass filters each channel by its transmission, at each surface.
+  const Vec3 amber = shadow_transmittance(s.scene, Ray(Vec3(0.9f, 5.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f));
+  CHECK(amber.x == Approx(0.9216f));
+  CHECK(amber.y == Approx(0.9216f * 0.25f));
+  CHECK(amber.z == Approx(0.9216f * 0.0625f));
 }
