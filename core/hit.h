@@ -51,6 +51,11 @@ struct SurfaceInteraction {
   uint8_t shape_axis = 1;        // the axis the shape runs along: 2 (z) for cylinder and cone, else 1 (y)
   uint32_t material = 0;
   bool front_face = true;  // the ray arrived from the outward side
+  // Where shadow rays start, from `position`: on a smooth-shaded mesh, the point lifted off the
+  // flat triangle towards the curved surface its vertex normals describe (Hanika, "Hacking the
+  // Shadow Terminator", Ray Tracing Gems II, 2021), so that a coarse mesh's own facets do not
+  // shadow points its shading normals say are lit. Zero elsewhere.
+  Vec3 shadow_lift{0.0f};
 };
 
 }  // namespace rt

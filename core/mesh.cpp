@@ -52,6 +52,17 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
     }
   }
   const Vec3 object_normal = glm::normalize(geometric);
+  // Hanika's lift: each vertex's tangent plane, where it lies above the flat triangle's point,
+  // raises it (by the barycentric share of that vertex); planes below it change nothing.
+  Vec3 lift(0.0f);
+  if (!mesh.normals.empty() && shading != geometric) {
+    const auto raise = [&](const Vec3& vertex, const Vec3& normal, float weight) {
+      lift += weight * std::max(0.0f, glm::dot(vertex - position, normal)) * normal;
+    };
+    raise(p0, mesh.normals[i0], b0);
+    raise(p1, mesh.normals[i1], hit.b1);
+    raise(p2, mesh.normals[i2], hit.b2);
+  }
   SurfaceInteraction si;
   si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, object_normal);
   si.texcoord[1] =
@@ -76,6 +87,7 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
     si.tangent =
         len > 0.0f && std::isfinite(len) ? Vec4(t / len, mirrors == (si.tangent.w < 0.0f) ? 1.0f : -1.0f) : Vec4(0.0f);
   }
+  si.shadow_lift = placement.vector_to_world(lift);
   si.object_position = position;
   si.object_from_world = Mat3(placement.to_object);
   si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;

@@ -21,11 +21,17 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, TraceContext& ctx
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
       const LightSample ls = sample_light(light, s.position, u);
-      // A light behind the geometric surface cannot reach it, whatever the shading normal says.
-      if (glm::dot(s.ng, ls.direction) <= 0.0f || glm::dot(s.n, ls.direction) <= 0.0f) continue;
+      // A light behind the geometric surface cannot reach it, whatever the shading normal says;
+      // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
+      // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
+      // follows the normals rather than the facets' edges.
+      if (glm::dot(s.n, ls.direction) <= 0.0f) continue;
+      if (glm::dot(s.ng, ls.direction) <= 0.0f && s.shadow_lift == Vec3(0.0f)) continue;
       if (max_component(ls.radiance) <= 0.0f) continue;  // the dark back of an area light
       Ray shadow;
-      shadow.origin = offset_ray_origin(s.position, s.ng, ls.direction);
+      // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
+      // far beside a lift of a fraction of a facet.
+      shadow.origin = offset_ray_origin(s.position + s.shadow_lift, s.ng, ls.direction);
       shadow.direction = ls.direction;
       // Stop just short of the light so a surface the light sits on does not shadow it.
       shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
