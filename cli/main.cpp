@@ -72,11 +72,13 @@ int main(int argc, char** argv) {
                          "A glTF file on its own: play one of its animations, by name or index (default: all of them)");
   render_cmd->add_option("--fps", render.fps, "A glTF file on its own: frames per second of its animation (default 24)")
       ->check(real_number(0.001, 1000.0));
-  render_cmd->add_option("--background", render.background,
-                         "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
+  render_cmd
+      ->add_option("--background", render.background,
+                   "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
       ->check(color_value());
-  render_cmd->add_option("--ambient", render.ambient,
-                         "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
+  render_cmd
+      ->add_option("--ambient", render.ambient,
+                   "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   const char* outside_help =

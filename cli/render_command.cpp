@@ -113,8 +113,7 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
       !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
     return std::nullopt;
   if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
-    std::fprintf(stderr,
-                 "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
+    std::fprintf(stderr, "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
                  cmd.fps ? "--fps" : "--animation",
                  cmd.fps ? "\"animation\": {\"fps\": ...}" : "\"animation\" on its glTF reference (\"mesh\")");
     return std::nullopt;
@@ -199,8 +198,7 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
     std::fprintf(stderr, "rtcli: warning: %s has no animation: all %d frames will show the same picture\n",
                  cmd.scene.c_str(), frames.count());
   else if (graph.animated && (frames.first < t.first_frame || frames.last > t.last_frame))
-    std::fprintf(stderr,
-                 "rtcli: warning: --frames %d-%d goes beyond the scene's animation, frames %d-%d (at %g fps)\n",
+    std::fprintf(stderr, "rtcli: warning: --frames %d-%d goes beyond the scene's animation, frames %d-%d (at %g fps)\n",
                  frames.first, frames.last, t.first_frame, t.last_frame, static_cast<double>(t.fps));
   return true;
 }

@@ -32,13 +32,13 @@ struct RenderCommand {
   bool no_textures = false;
   bool no_bumps = false;
   std::optional<std::string> texture_filter;
-  std::optional<std::string> frames;  // "A-B" or "N" (--frames), or "N" (--frame)
-  std::optional<std::string> camera;  // a glTF camera by name
-  std::optional<std::string> animation;  // a model on its own: one of its animations, by name or index
-  std::optional<float> fps;              // a model on its own: its timeline's frame rate (default 24)
+  std::optional<std::string> frames;               // "A-B" or "N" (--frames), or "N" (--frame)
+  std::optional<std::string> camera;               // a glTF camera by name
+  std::optional<std::string> animation;            // a model on its own: one of its animations, by name or index
+  std::optional<float> fps;                        // a model on its own: its timeline's frame rate (default 24)
   std::optional<std::string> background, ambient;  // "R,G,B" or one number: replace the scene's
-  bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
-  bool allow_outside_files = false;   // glTF files may read images and buffers outside their folder
+  bool dither = false;                             // GIF frames: Floyd-Steinberg error diffusion
+  bool allow_outside_files = false;                // glTF files may read images and buffers outside their folder
   bool quiet = false;
 };
 

@@ -15,17 +15,17 @@ enum class SamplePositions { kCorners, kCentres };
 // render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
 struct AntialiasSettings {
   std::string mode = "adaptive";  // a name in the pixel sampler table: none, uniform, adaptive
-  int samples = 1;            // uniform: samples x samples rays per pixel
-  bool jitter = false;        // uniform: a keyed random point in each cell, not its centre
-  float threshold = 0.1f;     // adaptive: split a cell whose corners differ by more (displayed values)
-  int max_depth = 3;          // adaptive: splits at most; a pixel becomes up to 2^d x 2^d cells
+  int samples = 1;                // uniform: samples x samples rays per pixel
+  bool jitter = false;            // uniform: a keyed random point in each cell, not its centre
+  float threshold = 0.1f;         // adaptive: split a cell whose corners differ by more (displayed values)
+  int max_depth = 3;              // adaptive: splits at most; a pixel becomes up to 2^d x 2^d cells
   SamplePositions positions = SamplePositions::kCorners;
 };
 
 // Switches for comparisons (README shows the bump scene both ways; --no-textures measures their cost).
 struct SurfaceDetailSwitches {
-  bool textures = true;  // false (--no-textures): colour and specular textures are not read
-  bool bumps = true;     // false (--no-bumps): bump and normal maps leave the normal as it is
+  bool textures = true;          // false (--no-textures): colour and specular textures are not read
+  bool bumps = true;             // false (--no-bumps): bump and normal maps leave the normal as it is
   bool override_filter = false;  // --texture-filter: every texture uses `filter` instead of its own
   TextureFilter filter = TextureFilter::kTrilinear;
 };

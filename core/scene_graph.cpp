@@ -88,7 +88,8 @@ PrimitiveSet SceneGraph::place(const Pose& pose, std::vector<PlacementIssue>* is
         // Without a BVH (validate), the instance only says where the mesh is (warnings, framing).
         const MeshInstance inst =
             g.bvh.primitive_count() == 0
-                ? MeshInstance{&g.bvh, *transform, transform_bounds(transform->to_world, g.bounds), nm.mesh, nm.material}
+                ? MeshInstance{&g.bvh, *transform, transform_bounds(transform->to_world, g.bounds), nm.mesh,
+                               nm.material}
                 : place_mesh(g.bvh, *transform, nm.mesh, nm.material, assets->mask(nm.mesh, nm.material));
         if (finite_box(inst.bounds)) top.instances.push_back(inst);
         else issue(PlacementIssue::kBeyondRange, i);

@@ -12,18 +12,18 @@ Vec3 blinn_bump(Vec3 n, Vec3 dpdu, Vec3 dpdv, float hu, float hv) {
   return len > 0.0f && std::isfinite(len) ? tilted / len : n;
 }
 
-Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv,
-                     const UvFootprint& footprint, TextureFilter filter) {
+Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, Vec2 uv, const UvFootprint& footprint,
+                     TextureFilter filter) {
   const Texture& map = textures[bump.height.texture];
   const TextureMapping& m = bump.height.mapping;
   const auto height = [&](Vec2 at) {
     const Vec3 t = map.sample(at, m.wrap, filter, footprint);
     return (t.x + t.y + t.z) / 3.0f;
   };
-  const float eu = std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.width()),
-                            0.5f * footprint.width());
-  const float ev = std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.height()),
-                            0.5f * footprint.width());
+  const float eu =
+      std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.width()), 0.5f * footprint.width());
+  const float ev =
+      std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.height()), 0.5f * footprint.width());
   const float bu = (height(uv + Vec2(eu, 0.0f)) - height(uv - Vec2(eu, 0.0f))) / (2.0f * eu);
   const float bv = (height(uv + Vec2(0.0f, ev)) - height(uv - Vec2(0.0f, ev))) / (2.0f * ev);
   return bump.strength * Vec2(bu, bv);

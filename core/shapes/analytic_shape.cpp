@@ -53,16 +53,16 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
   si.position = shape.transform.point_to_world(p_object);
   si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
   si.shading_normal = si.geometric_normal;
-  si.texcoord[0] = UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu),
-                           shape.transform.vector_to_world(patch.dpdv)};
+  si.texcoord[0] =
+      UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu), shape.transform.vector_to_world(patch.dpdv)};
   si.texcoord[1] = si.texcoord[0];
   si.object_position = p_object;
   si.object_from_world = Mat3(shape.transform.to_object);
   if (shape.kind == ShapeKind::kCylinder || shape.kind == ShapeKind::kCone) {
     // Their z runs over [0, 1]: stretched to [-1, 1] like every other shape's box.
     si.object_position.z = 2.0f * p_object.z - 1.0f;
-    si.object_from_world = Mat3(Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 2.0f)) *
-                           si.object_from_world;
+    si.object_from_world =
+        Mat3(Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 2.0f)) * si.object_from_world;
     si.shape_axis = 2;
   }
   si.material = shape.material;

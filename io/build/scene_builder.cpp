@@ -206,8 +206,8 @@ class Builder {
       const int frames = g.timeline.frame_count();
       const int poses = std::min(frames, kFramingPoses);
       for (int k = 1; k < poses; ++k) {
-        const int frame = g.timeline.first_frame +
-                          static_cast<int>(static_cast<int64_t>(k) * (frames - 1) / std::max(1, poses - 1));
+        const int frame =
+            g.timeline.first_frame + static_cast<int>(static_cast<int64_t>(k) * (frames - 1) / std::max(1, poses - 1));
         const PrimitiveSet at = g.place(g.pose(frame));
         for (uint32_t id = 0; id < at.size(); ++id) bounds.extend(at.bounds(id));
       }

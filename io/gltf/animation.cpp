@@ -80,7 +80,6 @@ std::shared_ptr<const Keyframes> read_keys(const tinygltf::Model& model, const t
   return std::make_shared<const Keyframes>(std::move(keys));
 }
 
-
 // The animation `which` names: by name first, then as an index ("2"); -1 if none.
 int find_animation(const tinygltf::Model& model, const std::string& which) {
   for (size_t i = 0; i < model.animations.size(); ++i)

@@ -54,7 +54,7 @@ struct GltfSelection {
   std::optional<std::string> mesh;       // one mesh by name, on one node with an identity transform
   std::optional<std::string> animation;  // one animation by name or index; default: all of them together
   GltfSelection() = default;
-  GltfSelection(std::nullopt_t) {}                                           // NOLINT: the whole file
+  GltfSelection(std::nullopt_t) {}                                                     // NOLINT: the whole file
   GltfSelection(std::optional<std::string> mesh_name) : mesh(std::move(mesh_name)) {}  // NOLINT
   GltfSelection(std::optional<std::string> mesh_name, std::optional<std::string> animation_name)
       : mesh(std::move(mesh_name)), animation(std::move(animation_name)) {}

@@ -65,8 +65,7 @@ std::optional<ImageHeader> claim_texture(std::span<const unsigned char> bytes, c
 }
 
 std::optional<Texture> decode_claimed_texture(std::span<const unsigned char> bytes, const ImageHeader& header,
-                                              const std::string& name, TextureEncoding encoding,
-                                              TextureError& error) {
+                                              const std::string& name, TextureEncoding encoding, TextureError& error) {
   std::string why;
   // The decoder converts any layout to the channels asked for (alpha 1 where the file has none).
   const bool alpha = encoding == TextureEncoding::kAlpha;

@@ -87,7 +87,8 @@ std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const J
   // One of the file's animations, by name or index (default: all of them).
   if (const Json* a = o.get("animation")) {
     if (a->is_string() && !a->get<std::string>().empty()) ref.animation = a->get<std::string>();
-    else if (a->is_number_unsigned() && a->get<uint64_t>() < 1000000) ref.animation = std::to_string(a->get<uint64_t>());
+    else if (a->is_number_unsigned() && a->get<uint64_t>() < 1000000)
+      ref.animation = std::to_string(a->get<uint64_t>());
     else ctx.reader.expected(o.child("animation"), "the name of one of the file's animations, or its index", *a);
   }
   if (const Json* overrides = o.get("materials")) {
@@ -199,8 +200,9 @@ std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& valu
   }
   for (size_t i = 0; i < value.size() && ctx.nodes <= ctx.max_nodes; ++i) {
     if (++ctx.nodes > ctx.max_nodes) {
-      ctx.reader.error(pointer_child(pointer, i), "expected at most " + std::to_string(ctx.max_nodes) +
-                                                      " nodes in a scene, found more (docs/errors-and-limits.md, \"Limits\")");
+      ctx.reader.error(pointer_child(pointer, i),
+                       "expected at most " + std::to_string(ctx.max_nodes) +
+                           " nodes in a scene, found more (docs/errors-and-limits.md, \"Limits\")");
       break;
     }
     nodes.push_back(parse_node(ctx, value[i], pointer_child(pointer, i), depth));

@@ -182,7 +182,8 @@ TEST_CASE("cli: a GIF without --frames shows the scene's animation; --frames bey
   // Asked for more than the animation: rendered, with a warning naming its range.
   r = rt::test::rtcli("render '" + scene + "' --frames 0-9 -o '" + gif + "'");
   CHECK(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("warning: --frames 0-9 goes beyond the scene's animation, frames 2-6 (at 10 fps)"));
+  CHECK_THAT(r.output,
+             Catch::Contains("warning: --frames 0-9 goes beyond the scene's animation, frames 2-6 (at 10 fps)"));
   r = rt::test::rtcli("render '" + scene + "' --frames 3-5 -o '" + gif + "'");
   CHECK_THAT(r.output, !Catch::Contains("warning"));
 }

@@ -137,7 +137,7 @@ TEST_CASE("glTF samples: node trees, animation channels and cameras", "[gltf][an
       load_scene(rt::test::sample_model("BoxAnimated/glTF-Binary/BoxAnimated.glb"), rt::test::load_options(), diags);
   REQUIRE(loaded);
   CHECK(loaded->graph.animated);
-  CHECK(loaded->graph.timeline.fps == 24.0f);  // a model on its own: Blender's rate unless --fps
+  CHECK(loaded->graph.timeline.fps == 24.0f);      // a model on its own: Blender's rate unless --fps
   CHECK(loaded->graph.timeline.last_frame == 89);  // ceil(3.708 s * 24 fps)
   const std::vector<Mat4> at0 = loaded->graph.pose_at(0.0f).world, at1 = loaded->graph.pose_at(1.0f).world;
   // The file hangs under the one node the loader makes for it: its nodes start at graph index 1.
@@ -237,11 +237,11 @@ namespace {
 // Two squares, each moved by its own animation ("Left" moves node 0 up, "Right" node 1 down),
 // over 2 s and 4 s.
 std::string two_animations() {
-  std::string buffer = rt::test::square_positions();       // view 0: 48 bytes
-  rt::test::append<float>(buffer, {0, 2});                  // view 1: times, 8 bytes
-  rt::test::append<float>(buffer, {0, 0, 0, 0, 2, 0});      // view 2: translations up, 24 bytes
-  rt::test::append<float>(buffer, {0, 4});                  // view 3: times, 8 bytes
-  rt::test::append<float>(buffer, {3, 0, 0, 3, -2, 0});     // view 4: translations down, 24 bytes
+  std::string buffer = rt::test::square_positions();     // view 0: 48 bytes
+  rt::test::append<float>(buffer, {0, 2});               // view 1: times, 8 bytes
+  rt::test::append<float>(buffer, {0, 0, 0, 0, 2, 0});   // view 2: translations up, 24 bytes
+  rt::test::append<float>(buffer, {0, 4});               // view 3: times, 8 bytes
+  rt::test::append<float>(buffer, {3, 0, 0, 3, -2, 0});  // view 4: translations down, 24 bytes
   const auto channel = [](int node) {
     return Json{{"channels", {{{"sampler", 0}, {"target", {{"node", node}, {"path", "translation"}}}}}}};
   };
@@ -316,7 +316,6 @@ TEST_CASE("glTF animations: all play together; --animation or \"animation\" pick
     "nodes": [{"mesh": {"file": ")" + path + R"(", "animation": "Left"}}]})");
   REQUIRE(left.graph.tracks.size() == 1);
   CHECK(left.graph.timeline.last_frame == 60);  // 2 s at a scene file's 30 fps
-
 }
 
 TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's world; both overridable",
@@ -364,7 +363,8 @@ TEST_CASE("glTF doubleSided false: rays pass through the back, shadows still fal
   };
   const auto scene = [](const std::string& name, const std::string& gltf, const std::string& scale) {
     return rt::test::load_scene_text(name, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
-        "nodes": [{"mesh": {"file": ")" + gltf + R"("}, "transform": {"scale": )" + scale + "}}]}");
+        "nodes": [{"mesh": {"file": ")" + gltf +
+                                               R"("}, "transform": {"scale": )" + scale + "}}]}");
   };
   const auto hits = [](const Scene& s, float z, float dz) {
     Ray r(Vec3(0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz));

@@ -311,7 +311,8 @@ TEST_CASE("texture mappings: wrap per axis and the projection axis", "[io][uv]")
   const auto scene_with = [&](const std::string& mapping) {
     return R"({
       "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 45},
-      "materials": {"label": {"texture": {"file": ")" + folder + R"(checker.png", )" + mapping + R"(}}},
+      "materials": {"label": {"texture": {"file": ")" +
+           folder + R"(checker.png", )" + mapping + R"(}}},
       "lights": [{"type": "point", "position": [2, 4, 3]}],
       "nodes": [{"name": "can", "shape": "cylinder", "material": "label"}]
     })";

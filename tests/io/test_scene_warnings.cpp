@@ -16,9 +16,12 @@ std::string scene(const std::string& lights, const std::string& nodes, const std
   return R"({
   "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 45},
   "materials": {"grey": {"kd": 0.6}},
-)" + extra + R"(
-  "lights": )" + lights + R"(,
-  "nodes": )" + nodes + "\n}\n";
+)" + extra +
+         R"(
+  "lights": )" +
+         lights + R"(,
+  "nodes": )" +
+         nodes + "\n}\n";
 }
 
 const char* kNodes = R"([{"name": "floor", "shape": "plane", "material": "grey", "transform": {"scale": 5}},

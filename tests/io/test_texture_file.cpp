@@ -161,8 +161,9 @@ TEST_CASE("make_textures: the tiled example textures have no seam where they rep
     REQUIRE(img);
     const int w = static_cast<int>(img->width), h = static_cast<int>(img->height);
     const auto at = [&](int x, int y, int c) {
-      return static_cast<double>(img->rgb[(static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * 3 +
-                                          static_cast<size_t>(c)]);
+      return static_cast<double>(
+          img->rgb[(static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * 3 +
+                   static_cast<size_t>(c)]);
     };
     const auto column_step = [&](int x0, int x1) {
       double sum = 0;

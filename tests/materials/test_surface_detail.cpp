@@ -86,7 +86,8 @@ TEST_CASE("projections: the axis, and a label on a cylinder", "[materials][uv]")
   // label's cylindrical (u, v) is the cylinder's own, at every point of its side.
   TextureMapping label;
   label.projection = Projection::kCylindrical;
-  const AnalyticShape can{ShapeKind::kCylinder, 0, *make_transform(compose_trs(Vec3(1, 2, 3), Vec3(-90, 0, 0), Vec3(0.5f, 0.5f, 2)))};
+  const AnalyticShape can{ShapeKind::kCylinder, 0,
+                          *make_transform(compose_trs(Vec3(1, 2, 3), Vec3(-90, 0, 0), Vec3(0.5f, 0.5f, 2)))};
   for (const Vec2 aim : {Vec2(0.1f, 0.3f), Vec2(-0.2f, 0.8f), Vec2(0.15f, 1.7f)}) {
     Ray ray(Vec3(1 + aim.x, 2 + aim.y, 10), Vec3(0, 0, -1));
     Hit hit;

@@ -30,8 +30,8 @@ std::string coarse_sphere(int segments, int rings) {
   for (int r = 0; r < rings; ++r)
     for (int s = 0; s < segments; ++s) {
       const auto a = static_cast<uint16_t>(r * (segments + 1) + s), b = static_cast<uint16_t>(a + segments + 1);
-      rt::test::append<uint16_t>(indices, {a, b, static_cast<uint16_t>(a + 1), static_cast<uint16_t>(a + 1), b,
-                                           static_cast<uint16_t>(b + 1)});
+      rt::test::append<uint16_t>(
+          indices, {a, b, static_cast<uint16_t>(a + 1), static_cast<uint16_t>(a + 1), b, static_cast<uint16_t>(b + 1)});
     }
   const size_t bytes = positions.size();
   const std::string buffer = positions + positions + indices;  // unit sphere: normals = positions

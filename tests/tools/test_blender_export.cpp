@@ -7,8 +7,9 @@
 #include "tests/support/test_paths.h"
 
 TEST_CASE("blender_export.py removes its custom properties after the export, even a failed one", "[tools][blender]") {
-  const rt::test::Run r = rt::test::run_shell("python3 '" + rt::test::source_path("tests/data/blender/check_cleanup.py") +
-                                              "' '" + rt::test::output_path("") + "' 2>&1");
+  const rt::test::Run r =
+      rt::test::run_shell("python3 '" + rt::test::source_path("tests/data/blender/check_cleanup.py") + "' '" +
+                          rt::test::output_path("") + "' 2>&1");
   INFO(r.output);
   CHECK(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("blender_export cleanup: ok"));
