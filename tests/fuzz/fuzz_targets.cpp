@@ -30,7 +30,10 @@ namespace {
 
 // Small limits keep each input fast, so the fuzzer explores instead of allocating.
 LoadOptions fuzz_options() {
-  LoadOptions options{1, integrator_names(), pixel_sampler_names(), LoadLimits{}, true, std::nullopt, std::nullopt};
+  LoadOptions options;
+  options.threads = 1;
+  options.integrators = integrator_names();
+  options.pixel_samplers = pixel_sampler_names();
   options.limits.scene_file_bytes = 1 << 20;
   options.limits.gltf_json_bytes = 1 << 20;
   options.limits.gltf_total_bytes = 4 << 20;
