@@ -43,10 +43,12 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
   const Vec3 position = b0 * p0 + hit.b1 * p1 + hit.b2 * p2;
   Vec3 geometric = glm::cross(e1, e2);
   Vec3 shading = geometric;
+  bool smooth = false;  // shaded by the vertex normals
   if (!mesh.normals.empty()) {
     const Vec3 n = b0 * mesh.normals[i0] + hit.b1 * mesh.normals[i1] + hit.b2 * mesh.normals[i2];
     if (glm::length(n) > 1e-8f) {
       shading = n;
+      smooth = true;
       // Vertex normals state which side is outside; trust them over the winding.
       if (glm::dot(shading, geometric) < 0.0f) geometric = -geometric;
     }
@@ -55,7 +57,7 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
   // Hanika's lift: each vertex's tangent plane, where it lies above the flat triangle's point,
   // raises it (by the barycentric share of that vertex); planes below it change nothing.
   Vec3 lift(0.0f);
-  if (!mesh.normals.empty() && shading != geometric) {
+  if (smooth) {
     const auto raise = [&](const Vec3& vertex, const Vec3& normal, float weight) {
       lift += weight * std::max(0.0f, glm::dot(vertex - position, normal)) * normal;
     };
