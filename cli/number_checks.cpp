@@ -58,20 +58,25 @@ CLI::Validator real_number(double min, double max) {
       "FLOAT in [" + format(min) + " - " + format(max) + "]");
 }
 
-std::array<float, 3> parse_color(const std::string& text) {
-  std::array<float, 3> c{};
-  size_t start = 0;
-  for (size_t k = 0; k < 3; ++k) {
-    const size_t comma = text.find(',', start);
-    c[k] = std::strtof(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start).c_str(),
-                       nullptr);
-    if (comma == std::string::npos) {
-      if (k == 0) c = {c[0], c[0], c[0]};  // one number: grey
-      break;
-    }
-    start = comma + 1;
+namespace {
+
+// "a,b,c" -> {"a", "b", "c"}; "" -> {""}.
+std::vector<std::string> comma_parts(const std::string& text) {
+  std::vector<std::string> parts{""};
+  for (const char ch : text) {
+    if (ch == ',') parts.emplace_back();
+    else parts.back() += ch;
   }
-  return c;
+  return parts;
+}
+
+}  // namespace
+
+std::array<float, 3> parse_color(const std::string& text) {
+  const std::vector<std::string> parts = comma_parts(text);
+  std::array<float, 3> c{};
+  for (size_t k = 0; k < 3; ++k) c[k] = std::strtof(parts[parts.size() == 3 ? k : 0].c_str(), nullptr);
+  return c;  // one number: grey
 }
 
 CLI::Validator color_value() {
@@ -79,13 +84,9 @@ CLI::Validator color_value() {
   const CLI::Validator number = real_number(0.0, 1000.0);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
-        std::vector<std::string> parts{""};
-        for (const char ch : text) {
-          if (ch == ',') parts.emplace_back();
-          else parts.back() += ch;
-        }
+        std::vector<std::string> parts = comma_parts(text);
         if (parts.size() != 1 && parts.size() != 3) return expected + ", found \"" + text + "\"";
-        for (std::string part : parts)
+        for (std::string& part : parts)
           if (!number(part).empty()) return expected + ", found \"" + text + "\"";
         return std::string();
       },

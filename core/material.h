@@ -50,11 +50,11 @@ struct Material {
   // the units of radiance; seen by camera, reflection and refraction rays, not a light source.
   Vec3 emission{0.0f};
   TextureSlot emission_texture;  // multiplies `emission`
-  // KHR_materials_unlit: the (textured) base colour is shown as it is, without lighting.
   // glTF's doubleSided false: the back of a triangle is not there for camera, reflection,
   // refraction and glossy rays (they pass through it); shadow rays still stop at it. Ignored for
   // transmissive materials, whose back faces are where rays leave the glass.
   bool single_sided = false;
+  // KHR_materials_unlit: the (textured) base colour is shown as it is, without lighting.
   bool unlit = false;
   MetallicRoughness pbr;
   AlphaCutoutParams cutout;
