@@ -15,7 +15,11 @@ struct Hit {
   uint32_t prim = kNoPrimitive;  // primitive id (see core/accel/primitives.h)
   float b1 = 0.0f, b2 = 0.0f;    // triangle barycentrics of vertices 1 and 2
   uint32_t part = 0;             // analytic shapes: which face / cap / side; mesh instances: the triangle
+  uint32_t operand = 0;          // CSG solids: which operand surface, and whether the ray leaves there
+  uint32_t medium = 0;           // CSG solids: the material inside (core/csg/csg_object.h)
 };
+
+inline constexpr uint32_t kOwnMedium = 0xffffffffu;
 
 // Object-space local geometry of an analytic shape at a point: the outward unit normal, the
 // texture coordinates and the partial derivatives dP/du, dP/dv (the tangent frame used by
@@ -50,6 +54,9 @@ struct SurfaceInteraction {
   Mat3 object_from_world{1.0f};  // linear part of the world-to-box transform
   uint8_t shape_axis = 1;        // the axis the shape runs along: 2 (z) for cylinder and cone, else 1 (y)
   uint32_t material = 0;
+  // The material whose inside lies behind the surface, for refraction's medium stack: the
+  // material's own (kOwnMedium), except on a CSG solid, whose cut surfaces bound another's inside.
+  uint32_t medium = kOwnMedium;
   bool front_face = true;  // the ray arrived from the outward side
   // Where shadow rays start, from `position`: on a smooth-shaded mesh, the point lifted off the
   // flat triangle towards the curved surface its vertex normals describe (Hanika, "Hacking the

@@ -2,11 +2,24 @@
 
 namespace rt {
 
-SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
-  if (!bvh.is_instance(hit.prim)) return shape_surface(bvh.shape(hit.prim), ray, hit);
-  const MeshInstance& instance = bvh.instance(hit.prim);
-  SurfaceInteraction si = mesh_surface(assets->meshes[instance.mesh].mesh, hit.part, ray, hit, instance.transform);
+namespace {
+
+SurfaceInteraction instance_surface(const SceneAssets& assets, const MeshInstance& instance, const Ray& ray,
+                                    const Hit& hit) {
+  SurfaceInteraction si = mesh_surface(assets.meshes[instance.mesh].mesh, hit.part, ray, hit, instance.transform);
   si.material = instance.material;
+  return si;
+}
+
+}  // namespace
+
+SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
+  if (bvh.is_instance(hit.prim)) return instance_surface(*assets, bvh.instance(hit.prim), ray, hit);
+  if (!bvh.is_csg(hit.prim)) return shape_surface(bvh.shape(hit.prim), ray, hit);
+  // The operand surface's own record, turned to face out of the solid.
+  const CsgSurface& s = bvh.csg(hit.prim).surface(csg_surface_index(hit));
+  SurfaceInteraction si = s.is_mesh ? instance_surface(*assets, s.mesh, ray, hit) : shape_surface(s.shape, ray, hit);
+  orient_csg_surface(si, ray, hit);
   return si;
 }
 
@@ -25,8 +38,10 @@ bool Scene::intersect(Ray& ray, SceneHit& out) const {
   return out.surface || out.light;
 }
 
-uint32_t Scene::material_of(uint32_t prim) const {
-  return bvh.is_instance(prim) ? bvh.instance(prim).material : bvh.shape(prim).material;
+uint32_t Scene::material_of(const Hit& hit) const {
+  if (bvh.is_instance(hit.prim)) return bvh.instance(hit.prim).material;
+  if (bvh.is_csg(hit.prim)) return bvh.csg(hit.prim).surface(csg_surface_index(hit)).material();
+  return bvh.shape(hit.prim).material;
 }
 
 std::vector<TriangleMesh> Scene::world_meshes() const {

@@ -40,8 +40,8 @@ struct Scene {
   // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
   bool intersect(Ray& ray, SceneHit& out) const;
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
-  // The material index of primitive `prim` of the top-level BVH.
-  uint32_t material_of(uint32_t prim) const;
+  // The material index at a hit of the top-level BVH (a CSG solid's differs by operand).
+  uint32_t material_of(const Hit& hit) const;
 
   // The full surface record of a hit returned by intersect().
   SurfaceInteraction surface(const Ray& ray, const Hit& hit) const;

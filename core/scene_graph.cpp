@@ -96,6 +96,12 @@ PrimitiveSet SceneGraph::place(const Pose& pose, std::vector<PlacementIssue>* is
       }
     }
   }
+  for (const CsgTemplate& t : csgs) {
+    CsgPlacement placed = place_csg(t, world, *assets);
+    if (placed.singular_node) issue(PlacementIssue::kSingular, *placed.singular_node);
+    if (placed.beyond_range_node) issue(PlacementIssue::kBeyondRange, *placed.beyond_range_node);
+    if (placed.object) top.csgs.push_back(std::move(*placed.object));
+  }
   return top;
 }
 

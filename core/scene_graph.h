@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/animation/track.h"
+#include "core/csg/csg_template.h"
 #include "core/scene.h"
 
 namespace rt {
@@ -75,6 +76,8 @@ struct PlacementIssue {
 struct SceneGraph {
   std::shared_ptr<const SceneAssets> assets = std::make_shared<const SceneAssets>();
   std::vector<SceneNode> nodes;
+  // CSG solids; their operand nodes carry no geometry of their own in `nodes`.
+  std::vector<CsgTemplate> csgs;
   std::vector<Track> tracks;
   Timeline timeline;
   bool animated = false;  // the scene or its files define an animation
@@ -86,7 +89,7 @@ struct SceneGraph {
   // The tree at frame `frame` of the timeline (time frame / fps), or at any time.
   Pose pose(int frame) const { return pose_at(timeline.seconds(frame)); }
   Pose pose_at(float seconds) const;
-  // The shapes and mesh instances where the pose puts them (what at() builds its BVH over).
+  // The shapes, mesh instances and CSG solids where the pose puts them (what at() builds its BVH over).
   // Geometry whose world transform is singular (animated to a zero scale: glTF's way of hiding
   // a part) or that reaches beyond the float range is left out, and said in `issues` when given.
   PrimitiveSet place(const Pose& pose, std::vector<PlacementIssue>* issues = nullptr) const;

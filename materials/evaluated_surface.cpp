@@ -68,6 +68,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   }
   s.entering = si.front_face;
   s.material = si.material;
+  s.medium = si.medium == kOwnMedium ? si.material : si.medium;
   // The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
   Vec3 kd = m.kd * Vec3(si.color);
   if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, -s.wo, cone_width, detail);

@@ -20,8 +20,10 @@ struct EvaluatedSurface {
   Vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal, same side
   Vec3 wo{0.0f, 0.0f, 1.0f};  // unit, towards where the ray came from
   bool entering = true;       // the ray arrived from the outward side (for refraction)
-  // The material at this point.
+  // The material at this point, and the one whose inside lies behind it (refraction's medium:
+  // the same but on a CSG solid's cut surfaces).
   uint32_t material = 0;
+  uint32_t medium = 0;
   Vec3 diffuse{0.0f};  // kd x (1 - transmission): light that passes through is not also scattered
   Vec3 specular{0.0f};
   float shininess = 32.0f;

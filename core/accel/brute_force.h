@@ -24,8 +24,10 @@ class BruteForce {
     const uint32_t triangles = static_cast<uint32_t>(prims_->triangles.size());
     for (uint32_t id = 0; id < triangles; ++id)
       if (visit_triangle_crossing(prims_->triangles[id], id, ray, visit)) return true;
-    for (uint32_t id = triangles; id < prims_->size(); ++id)
+    for (uint32_t id = triangles; id < prims_->shape_end(); ++id)
       if (visit_shape_crossings(prims_->shape(id), id, ray, visit)) return true;
+    for (uint32_t id = prims_->instance_end(); id < prims_->size(); ++id)
+      if (visit_csg_crossings(prims_->csg(id), id, ray, visit)) return true;
     return false;
   }
 

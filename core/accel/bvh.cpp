@@ -24,9 +24,11 @@ bool Bvh::intersect(Ray& ray, Hit& hit) const {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const uint32_t id = s.id;
-      const bool got = id < triangle_count_ ? intersect_triangle(s.triangle, r, hit)
-                       : is_instance(id)    ? intersect_instance(instance(id), r, hit)
-                                            : intersect_shape(shape(id), r, hit);
+      // Shapes before instances and CSG solids: a scene without CSG pays one comparison.
+      const bool got = id < triangle_count_    ? intersect_triangle(s.triangle, r, hit)
+                       : id < instance_begin() ? intersect_shape(shape(id), r, hit)
+                       : id < csg_begin()      ? intersect_instance(instance(id), r, hit)
+                                               : intersect_csg(csg(id), r, hit);
       if (got) {
         hit.prim = id;
         r.tmax = hit.t;

@@ -72,13 +72,17 @@ class Bvh {
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
   // BVH holds its own copy in leaf order). A hit on an instance has hit.prim = the instance's
   // id here and hit.part = the triangle's index in its mesh.
-  uint32_t primitive_count() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
+  uint32_t primitive_count() const { return csg_begin() + static_cast<uint32_t>(csgs_.size()); }
   bool is_triangle(uint32_t id) const { return id < triangle_count_; }
-  bool is_instance(uint32_t id) const { return id >= instance_begin(); }
+  bool is_shape(uint32_t id) const { return id >= triangle_count_ && id < instance_begin(); }
+  bool is_instance(uint32_t id) const { return id >= instance_begin() && id < csg_begin(); }
+  bool is_csg(uint32_t id) const { return id >= csg_begin(); }
   const AnalyticShape& shape(uint32_t id) const { return shapes_[id - triangle_count_]; }
   const MeshInstance& instance(uint32_t id) const { return instances_[id - instance_begin()]; }
+  const CsgObject& csg(uint32_t id) const { return csgs_[id - csg_begin()]; }
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
   const std::vector<MeshInstance>& instances() const { return instances_; }
+  const std::vector<CsgObject>& csgs() const { return csgs_; }
   const std::vector<BvhNode4>& nodes() const { return nodes_; }
   uint32_t root() const { return root_; }
   Aabb bounds() const { return bounds_; }
@@ -101,10 +105,12 @@ class Bvh {
   template <class Visitor>
   bool for_each_primitive_hit(const Ray& ray, Visitor& visit) const;
   uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
+  uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
 
   uint32_t triangle_count_ = 0;
   std::vector<AnalyticShape> shapes_;
   std::vector<MeshInstance> instances_;
+  std::vector<CsgObject> csgs_;
   std::vector<BvhNode4> nodes_;
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;

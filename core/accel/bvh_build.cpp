@@ -332,7 +332,8 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
 Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
     : triangle_count_(static_cast<uint32_t>(prims.triangles.size())),
       shapes_(prims.shapes),
-      instances_(prims.instances) {
+      instances_(prims.instances),
+      csgs_(prims.csgs) {
   const uint32_t n = prims.size();
   if (n == 0) return;
   if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");

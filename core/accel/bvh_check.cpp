@@ -43,6 +43,7 @@ std::string Bvh::check_structure() const {
         if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
         const Aabb box = is_triangle(id)   ? slots_[slot].triangle.bounds()
                          : is_instance(id) ? instance(id).bounds
+                         : is_csg(id)      ? csg(id).bounds()
                                            : world_bounds(shape(id));
         if (!contains(item.box, box)) return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
       }

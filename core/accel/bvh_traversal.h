@@ -129,7 +129,7 @@ bool Bvh::for_each_primitive_hit(const Ray& ray, Visitor& visit) const {
 
 template <class Visitor>
 bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
-  if (instances_.empty()) return for_each_primitive_hit(ray, visit);
+  if (instances_.empty() && csgs_.empty()) return for_each_primitive_hit(ray, visit);
   Ray r = ray;
   return traverse(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
     for (uint32_t slot = first; slot < end; ++slot) {
@@ -137,8 +137,10 @@ bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
       bool stop = false;
       if (s.id < triangle_count_) {
         stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit);
-      } else if (!is_instance(s.id)) {
+      } else if (s.id < instance_begin()) {
         stop = visit_shape_crossings(shape(s.id), s.id, leaf_ray, visit);
+      } else if (is_csg(s.id)) {
+        stop = visit_csg_crossings(csg(s.id), s.id, leaf_ray, visit);
       } else {
         // The mesh's crossings, relabelled as the instance's: prim = instance id, part = triangle.
         const MeshInstance& inst = instance(s.id);

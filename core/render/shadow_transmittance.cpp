@@ -13,7 +13,7 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
   Vec3 depth(0.0f);
   bool absorbed = false;
   const bool blocked = scene.bvh.for_each_hit(ray, [&](const Hit& hit) {
-    const Material& m = scene.materials()[scene.material_of(hit.prim)];
+    const Material& m = scene.materials()[scene.material_of(hit)];
     if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
     // What passes the interface: transmission times (1 - F0), the interface taken between the
     // material and air (shadow rays do not track nested media).

@@ -68,8 +68,8 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
   if (s.transmissive()) {
     // Entering: from the innermost medium into this material. Leaving: out of it, into what
     // remains once it is removed (the medium stack's rule).
-    const MediumStack after = s.entering ? state.media.entered(s.material) : state.media.left(s.material);
-    const float n1 = s.entering ? index_of(state.media, ctx.scene) : s.ior;
+    const MediumStack after = s.entering ? state.media.entered(s.medium) : state.media.left(s.medium);
+    const float n1 = s.entering ? index_of(state.media, ctx.scene) : ctx.scene.materials()[s.medium].ior;
     const float n2 = index_of(after, ctx.scene);
     float fresnel = schlick_reflectance(glm::dot(s.wo, s.n), n1, n2);
     // Total internal reflection sends everything to the reflected ray. A shading normal can bend

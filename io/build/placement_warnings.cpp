@@ -62,4 +62,14 @@ void warn_stacked_copies(const SceneGraph& g, const Pose& pose, const std::vecto
                                      " and the render will be slow (docs/errors-and-limits.md, \"Limits\")");
 }
 
+void warn_empty_csgs(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
+                     Reporter& report) {
+  for (const CsgTemplate& t : g.csgs) {
+    const CsgPlacement placed = place_csg(t, pose.world, *g.assets);
+    if (placed.object || placed.singular_node || placed.beyond_range_node) continue;
+    report.warning(pointers[t.root_node()],
+                   "this CSG solid encloses nothing (its intersection's operands do not overlap), so it draws nothing");
+  }
+}
+
 }  // namespace rt

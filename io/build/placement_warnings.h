@@ -23,4 +23,8 @@ void warn_hidden_files(const SceneGraph& g, const std::vector<std::string>& poin
 void warn_stacked_copies(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
                          Reporter& report);
 
+// A CSG solid that encloses nothing (an intersection of operands that do not meet).
+void warn_empty_csgs(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
+                     Reporter& report);
+
 }  // namespace rt

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/thread_count.h"
+#include "io/build/csg_operands.h"
 #include "io/build/model_library.h"
 #include "io/build/placement_warnings.h"
 #include "io/build/scene_warnings.h"
@@ -49,8 +50,15 @@ class Builder {
         take_instances(1, node.pointer);
       }
       push_node(std::move(n), node.pointer, false);
+      scene_index_[&node] = static_cast<uint32_t>(index);
       if (node.mesh) add_model(*node.mesh, index, node.material);
+      in_csg_ += node.csg.has_value();
       add_nodes(node.children, index);
+      in_csg_ -= node.csg.has_value();
+      // The outermost CSG node takes its subtree's geometry into one solid.
+      if (node.csg && in_csg_ == 0 && !over_limit())
+        if (auto t = make_csg_template(CsgSource{node, scene_index_, assets_}, nodes_, report_))
+          csgs_.push_back(std::move(*t));
     }
   }
 
@@ -92,6 +100,7 @@ class Builder {
   std::optional<BuiltScene> finish() {
     SceneGraph g;
     g.nodes = std::move(nodes_);
+    g.csgs = std::move(csgs_);
     g.tracks = std::move(tracks_);
     const auto color = [](const std::optional<std::array<float, 3>>& c, Vec3 otherwise) {
       return c ? Vec3((*c)[0], (*c)[1], (*c)[2]) : otherwise;
@@ -128,6 +137,7 @@ class Builder {
                   "that reaches infinity");
     }
     warn_stacked_copies(g, rest, pointers_, report_);
+    warn_empty_csgs(g, rest, pointers_, report_);
     if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
     if (diags_.error_count() > errors_before_) return std::nullopt;
     const std::vector<Aabb> geometry = geometry_bounds(placed);
@@ -350,6 +360,9 @@ class Builder {
   std::vector<SceneNode> nodes_;
   std::vector<std::string> pointers_;  // per node: where the scene file describes it
   std::vector<bool> from_file_;        // per node: grafted from a glTF file
+  std::map<const NodeDescription*, uint32_t> scene_index_;
+  std::vector<CsgTemplate> csgs_;
+  int in_csg_ = 0;  // CSG nodes enclosing the nodes being added
   std::vector<Track> tracks_;
   std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
   std::vector<LightPlacement> file_lights_;

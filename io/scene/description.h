@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/animation/track.h"
+#include "core/csg/csg_spans.h"
 #include "core/lights/light.h"
 #include "core/material.h"
 #include "core/render_settings.h"
@@ -64,6 +65,9 @@ struct NodeDescription {
   std::optional<ShapeKind> shape;
   std::optional<MeshReference> mesh;
   std::optional<uint32_t> material;  // index into SceneDescription::materials
+  // A CSG node: its children are the operands (difference: the first minus the others), and its
+  // material is the one of the operands that have none.
+  std::optional<CsgOp> csg;
   std::vector<NodeDescription> children;
 };
 

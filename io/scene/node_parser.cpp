@@ -1,5 +1,6 @@
 #include "io/scene/node_parser.h"
 
+#include "core/csg/csg_object.h"
 #include "core/transform.h"
 #include "io/base/input_file.h"
 #include "io/json/locate.h"
@@ -11,6 +12,8 @@ constexpr int kMaxNodeDepth = 128;  // deeper trees are refused rather than risk
 const std::vector<std::string> kShapeNames = {"sphere", "cube", "plane", "cylinder", "cone"};
 constexpr ShapeKind kShapeKinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder,
                                      ShapeKind::kCone};
+const std::vector<std::string> kCsgNames = {"union", "merge", "intersection", "difference"};
+constexpr CsgOp kCsgOps[] = {CsgOp::kUnion, CsgOp::kMerge, CsgOp::kIntersection, CsgOp::kDifference};
 constexpr std::string_view kMatrixExpected = "4 rows of 4 numbers, the last row [0, 0, 0, 1]";
 
 std::optional<Mat4> read_matrix(const JsonReader& r, const Json& v, const std::string& ptr) {
@@ -115,6 +118,44 @@ std::optional<MeshReference> parse_mesh_reference(NodeParseContext& ctx, const J
   return ref;
 }
 
+// A "csg" node's own rules, and its operands' (its children, parsed already): docs/csg.md.
+void check_csg_node(const NodeParseContext& ctx, const ObjectReader& o, const NodeDescription& node) {
+  const JsonReader& r = ctx.reader;
+  for (const char* key : {"shape", "mesh"})
+    if (o.has(key))
+      r.error(o.child(key),
+              std::string("expected a \"csg\" node to take its operands from \"children\", found \"") + key +
+                  "\" on it (put the " + key + " in a child node)",
+              Anchor::kKey);
+  if (ctx.csg_depth + 1 > CsgObject::kMaxDepth)
+    r.error(o.child("csg"), "expected CSG operations nested at most " + std::to_string(CsgObject::kMaxDepth) +
+                                " deep, found deeper nesting");
+  if (!node.csg) return;
+  const size_t needed = *node.csg == CsgOp::kDifference ? 2 : 1;
+  if (node.children.size() < needed) {
+    const std::string what = *node.csg == CsgOp::kDifference
+                                 ? "at least two operands in \"children\" (the first minus the others)"
+                                 : "at least one operand in \"children\"";
+    r.error(o.has("children") ? o.child("children") : o.pointer(),
+            "expected a \"" + kCsgNames[static_cast<size_t>(*node.csg)] + "\" node to have " + what + ", found " +
+                std::to_string(node.children.size()),
+            o.has("children") ? Anchor::kValue : Anchor::kParent);
+  }
+  for (const NodeDescription& c : node.children) {
+    if (c.shape == ShapeKind::kPlane)
+      r.error(c.pointer + "/shape",
+              "expected a solid as a CSG operand, found a \"plane\" (a finite square with no inside); cut with a "
+              "flat \"cube\" instead");
+    else if (!c.shape && !c.mesh && !c.csg)
+      r.error(c.pointer,
+              "expected a CSG operand: a node with a \"shape\", a \"mesh\" or a \"csg\", found a group node");
+    if (!c.csg && !c.children.empty())
+      r.error(c.pointer + "/children",
+              "expected no children on a CSG operand (group them under a \"csg\": \"union\" node instead)",
+              Anchor::kKey);
+  }
+}
+
 NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::string& ptr, int depth) {
   const JsonReader& r = ctx.reader;
   NodeDescription node;
@@ -134,25 +175,38 @@ NodeDescription parse_node(NodeParseContext& ctx, const Json& v, const std::stri
   if (const Json* m = o.get("mesh")) node.mesh = parse_mesh_reference(ctx, *m, o.child("mesh"));
   const Json* material = o.get("material");
   if (material) node.material = resolve_material(ctx, *material, o.child("material"));
+  if (const Json* c = o.get("csg")) {
+    if (const auto k = read_choice(r, *c, o.child("csg"), kCsgNames)) node.csg = kCsgOps[*k];
+  }
   if (const Json* children = o.get("children")) {
     if (depth + 1 >= kMaxNodeDepth) {
       r.error(o.child("children"),
               "expected at most " + std::to_string(kMaxNodeDepth) + " levels of nested nodes, found deeper nesting");
     } else {
+      // A CSG node's children are its operands; any other node's children are not, even inside a CSG.
+      const int csg_depth = ctx.csg_depth;
+      const bool csg_material = ctx.csg_material;
+      ctx.csg_depth = o.has("csg") ? csg_depth + 1 : 0;
+      ctx.csg_material = o.has("csg") && (csg_material || material);
       node.children = parse_nodes(ctx, *children, o.child("children"), depth + 1);
+      ctx.csg_depth = csg_depth;
+      ctx.csg_material = csg_material;
     }
   }
   o.finish();
   if (!o.valid()) return node;
+  if (o.has("csg")) check_csg_node(ctx, o, node);
+  const bool operand = ctx.csg_depth > 0;
   if (o.has("shape") && o.has("mesh"))
     r.error(o.child("mesh"), "expected either \"shape\" or \"mesh\" on one node, found both (use child nodes)",
             Anchor::kKey);
-  if (o.has("shape") && !material)
+  if (o.has("shape") && !material && !(operand && ctx.csg_material))
     r.error(o.child("material"), "missing required key \"material\"; expected the name of a material for the shape",
             Anchor::kParent);
-  if (material && !o.has("shape") && !o.has("mesh"))
+  if (material && !o.has("shape") && !o.has("mesh") && !o.has("csg"))
     r.error(o.child("material"),
-            "expected a material only on a node with a \"shape\" or a \"mesh\", found one on a group node",
+            "expected a material only on a node with a \"shape\", a \"mesh\" or a \"csg\", found one on a group "
+            "node",
             Anchor::kKey);
   return node;
 }

@@ -17,6 +17,10 @@ struct NodeParseContext {
   std::map<std::string, std::string> names;  // node name -> pointer of its first use
   uint64_t max_nodes = 0;                    // LoadLimits::nodes
   uint64_t nodes = 0;                        // parsed so far
+  // While the operands of a CSG node are parsed: how many CSG nodes enclose them, and whether one
+  // of those gives a material (then a shape operand may go without its own).
+  int csg_depth = 0;
+  bool csg_material = false;
 };
 
 // depth: how many node levels enclose this array (0 for the top-level "nodes").

@@ -109,6 +109,28 @@ Scene small_scene() {
     s.transform = *make_transform(compose_trs({static_cast<float>(k) - 2.0f, -1, 0}, {10, 20, 30}, {0.5f, 0.7f, 0.4f}));
     prims.shapes.push_back(s);
   }
+  // A glass CSG solid: a sphere minus a cube minus the glass mesh (a closed operand in parity terms
+  // or not, its crossings go through the span lists all the same).
+  CsgObject csg;
+  const uint32_t root = csg.open(CsgOp::kDifference);
+  for (const ShapeKind k : {ShapeKind::kSphere, ShapeKind::kCube}) {
+    const uint32_t shape_leaf = csg.begin_leaf();
+    CsgSurface s;
+    s.shape = AnalyticShape{
+        k, 2, *make_transform(compose_trs({0.5f, 0.5f, 1}, {0, 30, 0}, Vec3(k == ShapeKind::kSphere ? 1.0f : 0.5f)))};
+    csg.add_surface(s);
+    csg.close(shape_leaf);
+  }
+  const uint32_t mesh_leaf = csg.begin_leaf();
+  CsgSurface m;
+  m.is_mesh = true;
+  m.mesh = place_mesh(assets->meshes[0].bvh, *make_transform(compose_trs({0.5f, 0.5f, 1}, {}, Vec3(0.3f))), 0, 2);
+  m.triangles = &assets->meshes[0].mesh;
+  csg.add_surface(m);
+  csg.close(mesh_leaf);
+  csg.close(root);
+  csg.finish();
+  prims.csgs.push_back(std::move(csg));
   scene.bvh = Bvh(prims, {});
   return scene;
 }
@@ -139,8 +161,7 @@ struct OneTile {
 
 TEST_CASE(
     "tracing and shading (reflection, refraction, glossy, shadows through glass, textures, bumps, alpha masks, "
-    "metallic-roughness) allocate nothing per "
-    "ray",
+    "metallic-roughness, CSG) allocate nothing per ray",
     "[bvh][alloc]") {
   AntialiasSettings one_ray;  // one ray a pixel: the tracing alone
   one_ray.mode = "none";
@@ -150,7 +171,7 @@ TEST_CASE(
 
   const long before = g_allocations.load();
   Rng rng(3);
-  int hits = 0, masked = 0;
+  int hits = 0, masked = 0, solid = 0;
   for (int i = 0; i < 20000; ++i) {
     Ray r;
     r.origin = Vec3(0, 0, 8);
@@ -159,6 +180,7 @@ TEST_CASE(
     const bool hit = scene.intersect(r, h);
     hits += hit;
     masked += hit && scene.bvh.is_instance(h.prim) && scene.bvh.instance(h.prim).cutout != nullptr;
+    solid += hit && scene.bvh.is_csg(h.prim);
     hits += scene.occluded(r);
   }
   t.render();
@@ -169,6 +191,7 @@ TEST_CASE(
 
   CHECK(hits > 1000);
   CHECK(masked > 0);  // the alpha-masked instance was traced
+  CHECK(solid > 0);   // and the CSG solid
   CHECK(counters[RayKind::kShadow] > 0);
   CHECK(counters[RayKind::kReflection] > 0);
   CHECK(counters[RayKind::kRefraction] > 0);

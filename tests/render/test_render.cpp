@@ -135,6 +135,10 @@ TEST_CASE("golden image: adaptive anti-aliasing", "[render][golden][antialias]")
   check_golden("antialias", "scenes/antialias.json", 200, 112);
 }
 
+TEST_CASE("golden image: CSG (a lens, a die, a hollow sphere, merge beside union, a pipe)", "[render][golden][csg]") {
+  check_golden("csg", "scenes/csg.json", 200, 112);
+}
+
 TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
   int scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path("scenes"))) {

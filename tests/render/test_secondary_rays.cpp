@@ -25,7 +25,7 @@ Ray refract_at_hit(const Scene& scene, const Ray& ray, float n1, float n2) {
   Ray r = ray;
   Hit hit;
   REQUIRE(scene.intersect(r, hit));
-  const EvaluatedSurface s = evaluate_surface(scene.materials()[scene.material_of(hit.prim)], scene.surface(r, hit),
+  const EvaluatedSurface s = evaluate_surface(scene.materials()[scene.material_of(hit)], scene.surface(r, hit),
                                               r.direction, scene.textures());
   Ray out;
   REQUIRE(refract(glm::normalize(r.direction), s.n, n1 / n2, out.direction));

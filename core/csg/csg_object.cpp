@@ -1,0 +1,233 @@
+#include "core/csg/csg_object.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/accel/bvh_traversal.h"
+
+namespace rt {
+namespace {
+
+// Whether the line meets the box at all (its interval ignored).
+bool line_meets_box(const Aabb& box, const Ray& line) {
+  if (box.empty()) return false;
+  float t0 = -kInfinity, t1 = kInfinity;
+  for (int a = 0; a < 3; ++a) {
+    const float o = line.origin[a], d = line.direction[a];
+    if (d == 0.0f) {
+      if (o < box.lo[a] || o > box.hi[a]) return false;
+      continue;
+    }
+    float ta = (box.lo[a] - o) / d, tb = (box.hi[a] - o) / d;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+// The box grown by a little more than rounding: leaf boxes are tested in world space, the
+// shapes in their own, and a box as tight as a cube's faces could otherwise lose a real span.
+Aabb padded(const Aabb& box) {
+  if (box.empty()) return box;
+  const Vec3 pad = 1e-4f * box.extent() + Vec3(1e-6f) + 1e-6f * glm::max(glm::abs(box.lo), glm::abs(box.hi));
+  return Aabb{box.lo - pad, box.hi + pad};
+}
+
+Aabb overlap(const Aabb& a, const Aabb& b) { return Aabb{glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)}; }
+
+// Crossings a closed mesh operand can report along one line before the farthest are dropped.
+constexpr int kMaxMeshCrossings = 2 * CsgSpanList::kCapacity;
+
+struct Crossing {
+  CsgBoundary at;
+  bool entering;  // along the line: the triangle faces against it (its outward winding)
+};
+
+// Whether triangle `triangle` of a mesh operand faces against object-space `direction`.
+bool faces_against(const CsgSurface& s, uint32_t triangle, Vec3 direction) {
+  if (!s.triangles) return true;
+  const TriangleMesh& m = *s.triangles;
+  const Vec3 p0 = m.positions[m.indices[3 * triangle]], p1 = m.positions[m.indices[3 * triangle + 1]],
+             p2 = m.positions[m.indices[3 * triangle + 2]];
+  return glm::dot(glm::cross(p1 - p0, p2 - p0), direction) < 0.0f;
+}
+
+}  // namespace
+
+uint32_t CsgObject::open(CsgOp op) {
+  CsgNode n;
+  n.op = op;
+  nodes_.push_back(n);
+  return static_cast<uint32_t>(nodes_.size() - 1);
+}
+
+uint32_t CsgObject::begin_leaf() {
+  CsgNode n;
+  n.leaf = true;
+  n.first_surface = static_cast<uint32_t>(surfaces_.size());
+  nodes_.push_back(n);
+  return static_cast<uint32_t>(nodes_.size() - 1);
+}
+
+void CsgObject::add_surface(const CsgSurface& s) {
+  surfaces_.push_back(s);
+  ++nodes_.back().surface_count;
+}
+
+void CsgObject::close(uint32_t node) { nodes_[node].end = static_cast<uint32_t>(nodes_.size()); }
+
+void CsgObject::finish() {
+  // Children follow their parent, so a backward pass sees every subtree before its root.
+  for (size_t i = nodes_.size(); i-- > 0;) {
+    CsgNode& n = nodes_[i];
+    n.bounds = Aabb{};
+    if (n.leaf) {
+      for (uint32_t s = 0; s < n.surface_count; ++s) n.bounds.extend(surfaces_[n.first_surface + s].bounds());
+      n.bounds = padded(n.bounds);
+      continue;
+    }
+    bool first = true;
+    for (uint32_t c = static_cast<uint32_t>(i) + 1; c < n.end; c = nodes_[c].end) {
+      const Aabb& b = nodes_[c].bounds;
+      if (first || n.op == CsgOp::kUnion || n.op == CsgOp::kMerge) n.bounds.extend(b);
+      else if (n.op == CsgOp::kIntersection) n.bounds = overlap(n.bounds, b);
+      first = false;
+    }
+    if (n.bounds.empty()) n.bounds = Aabb{};
+  }
+}
+
+void CsgObject::spans(const Ray& ray, CsgSpanList& out) const {
+  Ray line = ray;
+  line.tmin = -kInfinity;
+  line.tmax = kInfinity;
+  out.clear();
+  if (!nodes_.empty()) node_spans(0, line, out);
+}
+
+void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) const {
+  const CsgNode& n = nodes_[index];
+  out.clear();
+  if (!line_meets_box(n.bounds, line)) return;
+  if (n.leaf) {
+    leaf_spans(n, line, out);
+    return;
+  }
+  const bool cuts = n.op == CsgOp::kIntersection || n.op == CsgOp::kDifference;
+  uint32_t child = index + 1;
+  node_spans(child, line, out);
+  CsgSpanList operand, combined;
+  for (child = nodes_[child].end; child < n.end; child = nodes_[child].end) {
+    if (out.empty() && cuts) return;  // nothing left to cut
+    node_spans(child, line, operand);
+    if (operand.empty() && n.op != CsgOp::kIntersection) continue;
+    csg_combine(n.op, out, operand, combined);
+    out = combined;
+  }
+}
+
+void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& out) const {
+  if (leaf.surface_count == 0) return;
+  const CsgSurface& first = surfaces_[leaf.first_surface];
+  const uint32_t medium = first.material();
+  if (!first.is_mesh) {
+    // A convex shape: its two crossings of the line (a grazing ray's single one is no span).
+    Ray r = to_object_ray(first.shape, line);
+    Hit a, b;
+    if (!intersect_object_space(first.shape.kind, r, a)) return;
+    r.tmin = std::nextafter(a.t, kInfinity);
+    if (!intersect_object_space(first.shape.kind, r, b)) return;
+    out.add(CsgSpan{CsgBoundary{a.t, leaf.first_surface, a.part, 0.0f, 0.0f},
+                    CsgBoundary{b.t, leaf.first_surface, b.part, 0.0f, 0.0f}, medium});
+    return;
+  }
+  // A closed mesh (all its primitives together): its crossings sorted, paired by parity.
+  Crossing crossings[kMaxMeshCrossings];
+  int count = 0;
+  bool dropped = false;
+  for (uint32_t s = 0; s < leaf.surface_count; ++s) {
+    const uint32_t surface = leaf.first_surface + s;
+    const CsgSurface& operand = surfaces_[surface];
+    const MeshInstance& m = operand.mesh;
+    // The line as two rays from its origin, forwards and backwards, so that the BVH sees only
+    // positive distances (its boxes are widened for rounding on that side).
+    for (const float sign : {1.0f, -1.0f}) {
+      Ray half = object_ray(m.transform, line);
+      half.direction *= sign;
+      half.tmin = 0.0f;
+      m.bvh->for_each_hit(half, [&](const Hit& h) {
+        const Crossing c{CsgBoundary{sign * h.t, surface, h.prim, h.b1, h.b2},
+                         faces_against(operand, h.prim, half.direction) == (sign > 0.0f)};
+        if (count < kMaxMeshCrossings) {
+          crossings[count++] = c;
+        } else {  // keep the nearest
+          dropped = true;
+          Crossing* far = std::max_element(crossings, crossings + count, [](const Crossing& x, const Crossing& y) {
+            return std::fabs(x.at.t) < std::fabs(y.at.t);
+          });
+          if (std::fabs(c.at.t) < std::fabs(far->at.t)) *far = c;
+        }
+        return false;
+      });
+    }
+  }
+  std::sort(crossings, crossings + count, [](const Crossing& x, const Crossing& y) { return x.at.t < y.at.t; });
+  // A line through an edge or a vertex meets each triangle there: one crossing of the surface,
+  // reported twice or more. Such repeats (as near as rounding, the same way through) count once.
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    if (kept > 0) {
+      const Crossing& last = crossings[kept - 1];
+      const float near = 1e-5f * std::max(1.0f, std::fabs(last.at.t));
+      if (crossings[i].entering == last.entering && crossings[i].at.t - last.at.t <= near) continue;
+    }
+    crossings[kept++] = crossings[i];
+  }
+  for (int i = 0; i + 1 < kept; i += 2) out.add(CsgSpan{crossings[i].at, crossings[i + 1].at, medium});
+  if (dropped) out.mark_truncated();
+}
+
+bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
+  CsgSpanList spans;
+  csg.spans(ray, spans);
+  float best = ray.tmax;
+  const CsgBoundary* found = nullptr;
+  bool leaving = false;
+  uint32_t medium = 0;
+  for (const CsgSpan& s : spans) {
+    if (s.in.t >= best) break;  // sorted by entry: nothing nearer follows
+    if (s.in.t > ray.tmin) {
+      found = &s.in;
+      leaving = false;
+    } else if (s.out.t > ray.tmin && s.out.t < best) {
+      found = &s.out;
+      leaving = true;
+    } else {
+      continue;
+    }
+    best = found->t;
+    medium = s.medium;
+  }
+  if (!found) return false;
+  hit.t = found->t;
+  hit.part = found->part;
+  hit.b1 = found->b1;
+  hit.b2 = found->b2;
+  hit.operand = csg_operand(found->surface, leaving);
+  hit.medium = medium;
+  return true;
+}
+
+void orient_csg_surface(SurfaceInteraction& si, const Ray& ray, const Hit& hit) {
+  const bool leaving = csg_leaving(hit);
+  const bool faces_ray = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
+  if (faces_ray == leaving) {  // entering must face the ray, leaving must face away
+    si.geometric_normal = -si.geometric_normal;
+    si.shading_normal = -si.shading_normal;
+  }
+  si.front_face = !leaving;
+  si.medium = hit.medium;
+}
+
+}  // namespace rt

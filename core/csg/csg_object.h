@@ -1,0 +1,112 @@
+// One CSG solid as the top-level BVH holds it: a tree of operations over operands, flattened in
+// prefix order, and the operand surfaces (analytic shapes and placed closed meshes) in world
+// placement. The BVH sees one primitive with the tree's bound; a ray that reaches it is answered
+// by span lists along its whole line (core/csg/csg_spans.h), so a ray that starts inside the
+// solid (a refracted ray in a lens) finds the right boundary. Built per frame by the scene graph,
+// read-only afterwards; a query allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/accel/mesh_instance.h"
+#include "core/csg/csg_spans.h"
+#include "core/hit.h"
+#include "core/mesh.h"
+#include "core/shapes/analytic_shape.h"
+
+namespace rt {
+
+// An operand's surface: an analytic shape, or a closed mesh placed in the world.
+struct CsgSurface {
+  bool is_mesh = false;
+  AnalyticShape shape;                      // material and transform (used when !is_mesh)
+  MeshInstance mesh;                        // used when is_mesh: no alpha cutout (an operand is a closed solid)
+  const TriangleMesh* triangles = nullptr;  // the mesh's own, to tell entering from leaving crossings
+
+  uint32_t material() const { return is_mesh ? mesh.material : shape.material; }
+  Aabb bounds() const { return is_mesh ? mesh.bounds : world_bounds(shape); }
+};
+
+struct CsgNode {
+  bool leaf = false;
+  CsgOp op = CsgOp::kUnion;    // an operation's
+  uint32_t end = 0;            // one past the last node of this subtree
+  uint32_t first_surface = 0;  // a leaf's surfaces: [first_surface, first_surface + surface_count)
+  uint32_t surface_count = 0;  // a shape has one; a mesh operand one per primitive
+  Aabb bounds;                 // a little wider than exact, so rounding never drops a span
+};
+
+class CsgObject {
+ public:
+  // Nesting the tree may have (io refuses deeper trees): each level holds two span lists on the
+  // stack while a ray is answered.
+  static constexpr int kMaxDepth = 16;
+
+  // Building, in prefix order: open(op) ... operands ... close(index); a leaf is begin_leaf(),
+  // its surfaces, close(index). Then finish() computes the bounds.
+  uint32_t open(CsgOp op);
+  uint32_t begin_leaf();
+  void add_surface(const CsgSurface& s);
+  void close(uint32_t node);
+  void finish();
+
+  const std::vector<CsgNode>& nodes() const { return nodes_; }
+  const std::vector<CsgSurface>& surfaces() const { return surfaces_; }
+  const CsgSurface& surface(uint32_t i) const { return surfaces_[i]; }
+  // Empty when the solid is (an intersection of operands that do not meet).
+  Aabb bounds() const { return nodes_.empty() ? Aabb{} : nodes_[0].bounds; }
+
+  // The solid's spans along the whole line of `ray` (its interval ignored).
+  void spans(const Ray& ray, CsgSpanList& out) const;
+
+ private:
+  void node_spans(uint32_t node, const Ray& line, CsgSpanList& out) const;
+  void leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& out) const;
+
+  std::vector<CsgNode> nodes_;
+  std::vector<CsgSurface> surfaces_;
+};
+
+// Hit records of a CSG solid: hit.part, b1, b2 are the operand surface's own; hit.operand is
+// the surface index times two, plus one when the ray leaves the solid there; hit.medium the
+// material inside.
+inline uint32_t csg_operand(uint32_t surface, bool leaving) { return surface * 2u + (leaving ? 1u : 0u); }
+inline uint32_t csg_surface_index(const Hit& hit) { return hit.operand / 2u; }
+inline bool csg_leaving(const Hit& hit) { return (hit.operand & 1u) != 0; }
+
+// The nearest boundary of the solid in (ray.tmin, ray.tmax); on a hit fills `hit` (not its prim)
+// and leaves ray.tmax alone.
+bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit);
+
+// Calls visit(hit) for each boundary in (ray.tmin, ray.tmax), nearest first, with hit.prim = id.
+// Returns true when the visitor asked to stop.
+template <class Visitor>
+bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visitor& visit) {
+  CsgSpanList spans;
+  csg.spans(ray, spans);
+  for (const CsgSpan& s : spans) {
+    if (s.in.t >= ray.tmax) break;
+    for (int leaving = 0; leaving < 2; ++leaving) {
+      const CsgBoundary& b = leaving ? s.out : s.in;
+      if (!(b.t > ray.tmin && b.t < ray.tmax)) continue;
+      Hit hit;
+      hit.t = b.t;
+      hit.prim = id;
+      hit.part = b.part;
+      hit.b1 = b.b1;
+      hit.b2 = b.b2;
+      hit.operand = csg_operand(b.surface, leaving != 0);
+      hit.medium = s.medium;
+      if (visit(static_cast<const Hit&>(hit))) return true;
+    }
+  }
+  return false;
+}
+
+// Turns an operand surface's record at a CSG boundary to face out of the solid: towards the ray
+// where it enters, away where it leaves (a subtracted operand's surface, seen from inside the
+// result, is flipped); then sets the medium.
+void orient_csg_surface(SurfaceInteraction& si, const Ray& ray, const Hit& hit);
+
+}  // namespace rt
