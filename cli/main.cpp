@@ -80,6 +80,11 @@ int main(int argc, char** argv) {
       ->add_option("--ambient", render.ambient,
                    "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
+  render_cmd
+      ->add_option("--stereo", render.stereo,
+                   "Stereo from the camera's two eyes: anaglyph (red-cyan), side_by_side, top_bottom, pair (NAME-left "
+                   "and NAME-right), or none (replaces the scene's camera.stereo mode)")
+      ->check(CLI::IsMember({"none", "anaglyph", "side_by_side", "top_bottom", "pair"}));
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   const char* outside_help =
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "

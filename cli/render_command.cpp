@@ -1,7 +1,5 @@
 #include "cli/render_command.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -9,6 +7,7 @@
 
 #include "cli/exit_codes.h"
 #include "cli/frame_output.h"
+#include "cli/frame_renderer.h"
 #include "cli/interrupt.h"
 #include "cli/number_checks.h"
 #include "cli/output_checks.h"
@@ -16,11 +15,11 @@
 #include "cli/report.h"
 #include "cli/scene_loading.h"
 #include "cli/suggestions.h"
-#include "core/frame_scenes.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/refinement_images.h"
 #include "core/render/renderer.h"
+#include "core/render/stereo_images.h"
 #include "core/thread_count.h"
 #include "io/image/png_file.h"
 #include "io/scene_loader.h"
@@ -96,14 +95,6 @@ struct RenderOutputs {
   std::string aa_refined, aa_depth;
 };
 
-struct RenderTotals {
-  RenderStats last;  // the last frame's
-  RayCounters rays;
-  double seconds = 0.0;        // rendering, all frames
-  double place_seconds = 0.0;  // placing animated frames (top-level BVHs)
-  size_t refined = 0;          // pixels refined by adaptive anti-aliasing, all frames
-};
-
 std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   if (cmd.integrator && !check_name("--integrator", "integrator", *cmd.integrator, integrator_names()))
     return std::nullopt;
@@ -136,6 +127,10 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
                  asked->count(), r.output.c_str());
     return std::nullopt;
   }
+  if (cmd.aa_debug && cmd.stereo && *cmd.stereo != "none") {
+    std::fprintf(stderr, "rtcli: error: --aa-debug shows one image's refinement; it does not go with --stereo\n");
+    return std::nullopt;
+  }
   if (cmd.aa_debug && r.kind != OutputKind::kPng) {
     std::fprintf(stderr, "rtcli: error: --aa-debug writes images beside one PNG; it does not go with \"%s\"\n",
                  r.output.c_str());
@@ -153,12 +148,29 @@ FrameRange frames_to_render(const RenderRequest& request, const LoadedScene& loa
   return FrameRange{loaded.frame, loaded.frame};
 }
 
+// "view.png" -> "view-left.png", "out/f_####.png" -> "out/f_####-left.png": stereo mode pair's files.
+std::string eye_path(const std::string& output, const char* eye) {
+  std::filesystem::path p(output);
+  const std::string ext = p.extension().string();
+  p.replace_extension();
+  return p.string() + "-" + eye + ext;
+}
+
+// The outputs' patterns: the one asked for, or its two eyes' for stereo mode pair.
+std::vector<std::string> output_patterns(const RenderRequest& request, const StereoSettings& stereo) {
+  if (stereo.mode != StereoMode::kPair) return {request.output};
+  return {eye_path(request.output, "left"), eye_path(request.output, "right")};
+}
+
 std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const RenderRequest& request,
-                                           const FrameRange& frames, const std::vector<std::string>& inputs) {
+                                           const FrameRange& frames, const StereoSettings& stereo,
+                                           const std::vector<std::string>& inputs) {
   RenderOutputs out;
-  if (request.kind == OutputKind::kPngSequence)
-    for (int f = frames.first; f <= frames.last; ++f) out.paths.push_back(sequence_path(request.output, f));
-  else out.paths.push_back(request.output);
+  for (const std::string& pattern : output_patterns(request, stereo)) {
+    if (request.kind == OutputKind::kPngSequence)
+      for (int f = frames.first; f <= frames.last; ++f) out.paths.push_back(sequence_path(pattern, f));
+    else out.paths.push_back(pattern);
+  }
   if (cmd.aa_debug) {
     out.aa_refined = beside(request.output, ".aa-refined");
     out.aa_depth = beside(request.output, ".aa-depth");
@@ -203,57 +215,8 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
   return true;
 }
 
-// Renders each frame into `sink`, the progress bar counting frames. An exit code if it must stop
-// (Ctrl-C, a frame that cannot be written); the film holds the last frame.
-std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
-                                 const FrameRange& frames, FrameSink& sink, Film& film, RenderTotals& totals) {
-  ProgressBar bar(stderr);
-  const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
-  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads)});
-  std::string error;
-  for (int frame = frames.first; frame <= frames.last; ++frame) {
-    const int index = frame - frames.first;
-    const Scene& scene = scenes.at(frame);
-    totals.place_seconds = scenes.placing_seconds();
-    const InterruptWatch interrupt;
-    RenderControl control;
-    if (show_progress) {
-      if (frames.count() > 1)
-        bar.set_label("frame " + std::to_string(index + 1) + "/" + std::to_string(frames.count()));
-      control.progress = [&](const RenderProgress& p) {
-        RenderProgress all = p;  // the bar counts frames: done frames, plus this one's share
-        all.pixels_done += static_cast<uint64_t>(index) * p.pixels_total;
-        all.pixels_total *= static_cast<uint64_t>(frames.count());
-        all.seconds += totals.seconds + totals.place_seconds;
-        bar.update(all);
-      };
-    }
-    control.cancel = &interrupt.flag();
-    totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame));
-    bar.clear();
-    if (totals.last.cancelled) {
-      const double seconds = totals.seconds + totals.last.seconds;
-      if (frames.count() == 1) std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", seconds);
-      else
-        std::fprintf(stderr, "rtcli: interrupted in frame %d after %.2f s; %s\n", frame, seconds,
-                     sink.written().empty() ? "nothing written" : "the frames before it were written");
-      return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
-    }
-    totals.seconds += totals.last.seconds;
-    for (size_t k = 0; k < kRayKindCount; ++k) totals.rays.count[k] += totals.last.rays.count[k];
-    for (const uint8_t d : film.depth) totals.refined += d > 0;
-
-    const SignalBlock block;  // each temporary file is always renamed or removed
-    if (!sink.add(encode_srgb8(film.color), frame, error)) {
-      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-      return kExitFailure;
-    }
-  }
-  return std::nullopt;
-}
-
 // Finishes the output (the GIF is written at the end) and --aa-debug's images.
-bool finish_outputs(const RenderOutputs& outputs, FrameSink& sink, const Film& film, unsigned threads) {
+bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks, const Film& film, unsigned threads) {
   const SignalBlock block;
   std::string error;
   const auto write = [&](const std::string& path, const Image& image) {
@@ -261,9 +224,11 @@ bool finish_outputs(const RenderOutputs& outputs, FrameSink& sink, const Film& f
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return false;
   };
-  if (!sink.finish(error)) {
-    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-    return false;
+  for (FrameSink& sink : sinks) {
+    if (!sink.finish(error)) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return false;
+    }
   }
   return outputs.aa_refined.empty() ||
          (write(outputs.aa_refined, refined_pixels_in_red(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
@@ -287,15 +252,39 @@ void print_summary(const RenderCommand& cmd, const RenderSettings& settings, con
                  load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
                  threads == 1 ? "" : "s");
   }
-  const double pixels = static_cast<double>(pixel_count(settings)) * frames.count();
+  const double pixels = static_cast<double>(pixel_count(settings)) * frames.count() * t.passes;
   std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
                static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
                100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
+  if (t.passes == 2) std::fprintf(stderr, "  stereo: each eye rendered at %dx%d\n", settings.width, settings.height);
   if (written.size() <= 3) {
     for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
   } else {
     std::printf("wrote %s ... %s (%zu files)\n", written.front().c_str(), written.back().c_str(), written.size());
   }
+}
+
+// The camera's stereo settings, --stereo's mode replacing the scene's; nothing (after saying why)
+// for a camera that cannot see in stereo.
+std::optional<StereoSettings> stereo_settings(const RenderCommand& cmd, const Camera& camera) {
+  StereoSettings s = camera.stereo;
+  if (cmd.stereo) {
+    const std::vector<std::string> modes = {"none", "anaglyph", "side_by_side", "top_bottom", "pair"};
+    s.mode = static_cast<StereoMode>(std::find(modes.begin(), modes.end(), *cmd.stereo) - modes.begin());
+  }
+  if (s.enabled() && camera.projection == CameraProjection::kOrthographic) {
+    std::fprintf(stderr,
+                 "rtcli: error: --stereo needs a perspective, fisheye or equirectangular camera; %s's is orthographic "
+                 "(parallel rays see no depth)\n",
+                 cmd.scene.c_str());
+    return std::nullopt;
+  }
+  if (s.enabled() && cmd.aa_debug) {
+    std::fprintf(stderr,
+                 "rtcli: error: --aa-debug shows one image's refinement; it does not go with a stereo camera\n");
+    return std::nullopt;
+  }
+  return s;
 }
 
 }  // namespace
@@ -318,23 +307,31 @@ int run_render(const RenderCommand& cmd) {
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
   const FrameRange frames = frames_to_render(*request, *loaded);
-  const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, loaded->inputs);
+  const std::optional<StereoSettings> stereo = stereo_settings(cmd, loaded->scene.camera);
+  if (!stereo) return kExitBadInput;
+  const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, *stereo, loaded->inputs);
   if (!outputs) return kExitBadInput;
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   const RenderSettings settings = with_overrides(loaded->settings, cmd);
   if (!check_settings(cmd, settings, frames, loaded->graph)) return kExitBadInput;
 
   // Render the frames.
-  FrameSink sink(request->kind, request->output, settings.width, settings.height, loaded->graph.timeline.fps,
-                 frames.count(), cmd.dither, resolve_thread_count(settings.threads));
+  std::vector<FrameSink> sinks;
+  for (const std::string& pattern : output_patterns(*request, *stereo))
+    sinks.emplace_back(request->kind, pattern, stereo_image_width(stereo->mode, settings.width),
+                       stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps, frames.count(),
+                       cmd.dither, resolve_thread_count(settings.threads));
   RenderTotals totals;
   Film film;
-  if (const std::optional<int> stop = render_frames(cmd, *loaded, settings, frames, sink, film, totals)) return *stop;
+  if (const std::optional<int> stop = render_frames(cmd, *loaded, settings, *stereo, frames, sinks, film, totals))
+    return *stop;
 
   // Write and summarise.
-  if (!finish_outputs(*outputs, sink, film, totals.last.threads)) return kExitFailure;
+  if (!finish_outputs(*outputs, sinks, film, totals.last.threads)) return kExitFailure;
   if (!cmd.quiet) {
-    print_summary(cmd, settings, frames, totals, load_seconds, sink.written());
+    std::vector<std::string> written;
+    for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
+    print_summary(cmd, settings, frames, totals, load_seconds, written);
     if (cmd.aa_debug) {
       std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
       std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",

@@ -3,7 +3,8 @@
 //   [--shadow-samples N]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
-//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--dither] [--allow-outside-files]
+//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
+//   [--allow-outside-files]
 //   [--quiet]`
 #pragma once
 
@@ -37,6 +38,7 @@ struct RenderCommand {
   std::optional<std::string> animation;            // a model on its own: one of its animations, by name or index
   std::optional<float> fps;                        // a model on its own: its timeline's frame rate (default 24)
   std::optional<std::string> background, ambient;  // "R,G,B" or one number: replace the scene's
+  std::optional<std::string> stereo;               // none, anaglyph, side_by_side, top_bottom, pair: replaces the camera's
   bool dither = false;                             // GIF frames: Floyd-Steinberg error diffusion
   bool allow_outside_files = false;                // glTF files may read images and buffers outside their folder
   bool quiet = false;

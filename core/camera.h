@@ -1,13 +1,23 @@
-// Pinhole or thin-lens camera. Image rows run top to bottom; (x, y) are continuous pixel
-// coordinates, so the centre of pixel (i, j) is (i + 0.5, j + 0.5). With an aperture (lens radius)
-// > 0, rays start at a point of the lens disk and pass through the point that the pinhole ray meets
-// on the plane of focus, focus_distance ahead along the view direction: depth of field.
+// The camera: where it is, which way it looks, and how image positions become rays. Image rows
+// run top to bottom; (x, y) are continuous pixel coordinates, so the centre of pixel (i, j) is
+// (i + 0.5, j + 0.5). Four projections (docs/scene-format.md, "camera"):
+//  - perspective: a pinhole, or with an aperture (lens radius) > 0 a thin lens whose rays pass
+//    through the point the pinhole ray meets on the plane of focus (depth of field);
+//  - orthographic: parallel rays along the view direction from a window `ortho_width` wide;
+//  - fisheye: equidistant (the angle from the view direction grows linearly with the distance
+//    from the image centre), `fisheye_fov` across the circle inscribed in the image;
+//  - equirectangular: the full sphere, longitude across and latitude down a 2:1 image, the view
+//    direction at the centre and `up` at the top.
+// A stereo camera renders as two eyes (eye_camera), each an ordinary camera of its own.
 #pragma once
 
 #include "core/aabb.h"
 #include "core/ray.h"
+#include "core/stereo.h"
 
 namespace rt {
+
+enum class CameraProjection : uint8_t { kPerspective, kOrthographic, kFisheye, kEquirectangular };
 
 struct Camera {
   Vec3 position{0.0f};
@@ -16,68 +26,64 @@ struct Camera {
   Vec3 up{0.0f, 1.0f, 0.0f};        // unit, perpendicular to forward and right
   float vertical_fov_degrees = 45.0f;
   float tan_half_fov = 0.41421356f;  // tan(vertical_fov_degrees / 2), computed once, not per ray
-  float aperture = 0.0f;             // lens radius; 0 = pinhole
+  float aperture = 0.0f;             // lens radius; 0 = pinhole (perspective only)
   float focus_distance = 1.0f;       // from the camera to the plane in focus, along forward
+  CameraProjection projection = CameraProjection::kPerspective;
+  float ortho_width = 2.0f;  // orthographic: the window's width in scene units
+  float fisheye_fov = kPi;   // fisheye: radians across the image circle, up to 2 pi
+  // Perspective and orthographic: the window moved across the image plane, in units of the
+  // image's larger side (Blender's shift_x, shift_y); x to the right, y up.
+  Vec2 shift{0.0f};
+  // Set by eye_camera() only: the window's offset at unit distance (perspective: off-axis
+  // stereo), and the eye's offset on the viewing circle (equirectangular: omni-directional
+  // stereo), negative for the left eye.
+  float window_offset = 0.0f;
+  float ods_offset = 0.0f;
+  StereoSettings stereo;  // mode kNone: one image
 
   // Caller guarantees target != position and up not parallel to (target - position).
   static Camera look_at(Vec3 position, Vec3 target, Vec3 up, float vertical_fov_degrees) {
     Camera c;
-    c.position = position;
-    c.forward = glm::normalize(target - position);
-    c.right = glm::normalize(glm::cross(c.forward, up));
-    c.up = glm::cross(c.right, c.forward);
-    c.vertical_fov_degrees = vertical_fov_degrees;
-    c.tan_half_fov = std::tan(radians(vertical_fov_degrees) * 0.5f);
+    c.aim(position, target, up);
+    c.set_fov(vertical_fov_degrees);
     return c;
+  }
+  // Moves and turns the camera, keeping everything else (projection, lens, stereo).
+  void aim(Vec3 from, Vec3 target, Vec3 up_hint) {
+    position = from;
+    forward = glm::normalize(target - from);
+    right = glm::normalize(glm::cross(forward, up_hint));
+    up = glm::cross(right, forward);
+  }
+  void set_fov(float degrees) {
+    vertical_fov_degrees = degrees;
+    tan_half_fov = std::tan(radians(degrees) * 0.5f);
   }
 
   // A camera in front of and a little above `bounds` (towards +Z, Y up), looking at its centre,
   // just far enough back that all eight corners of the box are inside the image, plus 5 %.
-  static Camera framing(const Aabb& bounds, float vertical_fov_degrees, float aspect) {
-    const Vec3 centre = bounds.centre();
-    const Vec3 back = glm::normalize(Vec3(0.0f, 0.35f, 1.0f));  // from the centre towards the camera
-    const Camera axes = look_at(centre + back, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
-    const float tan_v = std::tan(radians(vertical_fov_degrees) * 0.5f), tan_h = tan_v * aspect;
-    float distance = 1e-6f;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 c = Vec3(corner & 1 ? bounds.hi.x : bounds.lo.x, corner & 2 ? bounds.hi.y : bounds.lo.y,
-                          corner & 4 ? bounds.hi.z : bounds.lo.z) -
-                     centre;
-      // The corner is at depth distance + c.forward; it must satisfy |c.right| <= depth * tan_h.
-      const float depth_offset = glm::dot(c, axes.forward);
-      distance = std::max({distance, std::fabs(glm::dot(c, axes.right)) / tan_h - depth_offset,
-                           std::fabs(glm::dot(c, axes.up)) / tan_v - depth_offset});
-    }
-    return look_at(centre + 1.05f * distance * back, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
-  }
+  static Camera framing(const Aabb& bounds, float vertical_fov_degrees, float aspect);
 
+  // Whether the image position sees anything: false outside a fisheye's circle (left black).
+  bool sees(float x, float y, int width, int height) const;
   // Primary ray through continuous pixel position (x, y) of a width x height image.
-  Ray generate_ray(float x, float y, int width, int height) const {
-    const float tan_half = tan_half_fov;
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const float sx = (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half * aspect;
-    const float sy = (1.0f - 2.0f * y / static_cast<float>(height)) * tan_half;
-    Ray r;
-    r.origin = position;
-    r.direction = glm::normalize(forward + sx * right + sy * up);
-    return r;
-  }
-
-  // The angle one pixel subtends at the centre of a `height`-pixel image (ray-cone spread).
-  float pixel_spread(int height) const { return 2.0f * tan_half_fov / static_cast<float>(height); }
-
+  Ray generate_ray(float x, float y, int width, int height) const;
   // The same ray through a thin lens: `lens` in [0, 1)^2 picks the point of the lens disk
-  // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0 returns the
-  // pinhole ray exactly.
-  Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const {
-    Ray r = generate_ray(x, y, width, height);
-    if (aperture <= 0.0f) return r;
-    const Vec3 focus = r.origin + r.direction * (focus_distance / glm::dot(r.direction, forward));
-    const Vec2 disk = aperture * concentric_disk(lens);
-    r.origin = position + disk.x * right + disk.y * up;
-    r.direction = glm::normalize(focus - r.origin);
-    return r;
-  }
+  // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0, or a
+  // projection other than perspective, returns the pinhole ray exactly.
+  Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const;
+
+  // The ray cone of a camera ray (textures' mip level, docs/rendering.md): the angle one pixel
+  // subtends (perspective: at the image centre; fisheye and equirectangular: everywhere, along
+  // the image's width), and the cone's width where rays start (orthographic: one pixel's width).
+  float pixel_spread(int width, int height) const;
+  float pixel_footprint(int width, int height) const;
+
+  // The camera of one eye of a stereo pair (eye -1 left, +1 right), an ordinary mono camera:
+  // perspective and fisheye move by half the eye separation along `right` with parallel axes,
+  // perspective also shifts its window so that the convergence plane has no parallax (off-axis,
+  // never toe-in); equirectangular offsets each column's origin on the viewing circle (ODS).
+  Camera eye_camera(int eye) const;
 
   // Uniform point of the unit disk from a point of the unit square.
   static Vec2 concentric_disk(Vec2 u) {

@@ -13,9 +13,7 @@ Camera placed_camera(const Camera& c, const Mat4& m) {
   Camera out = c;
   // A node's scale or shear does not distort the view: only its position and directions count.
   if (glm::length(glm::cross(forward, up)) > 0.0f && is_finite(forward) && is_finite(up))
-    out = Camera::look_at(position, position + glm::normalize(forward), glm::normalize(up), c.vertical_fov_degrees);
-  out.aperture = c.aperture;
-  out.focus_distance = c.focus_distance;
+    out.aim(position, position + glm::normalize(forward), glm::normalize(up));
   return out;
 }
 

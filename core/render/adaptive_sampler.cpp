@@ -85,7 +85,7 @@ bool AdaptiveSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile&
 LatticeSample AdaptiveSampler::trace(int64_t x, int64_t y, PixelContext& ctx) const {
   const RenderSettings& s = ctx.settings;
   const auto point = static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x);
-  const SampleStream samples(s.seed, ctx.frame, point, 0);
+  const SampleStream samples(s.seed, ctx.frame, ctx.point_key(point), 0);
   const Vec3 radiance =
       trace_camera_sample(static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, ctx);
   return LatticeSample{radiance, {srgb8(radiance.x), srgb8(radiance.y), srgb8(radiance.z)}, true};

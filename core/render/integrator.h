@@ -23,6 +23,9 @@ struct TraceContext {
   // The angle one pixel subtends at the camera: the spread of each camera ray's cone, whose width
   // where a ray meets a surface picks the mip level of its textures. 0: finest level everywhere.
   float pixel_spread = 0.0f;
+  // The cone's width where camera rays start: 0 from a point (perspective), one pixel's width
+  // for parallel rays (orthographic).
+  float pixel_footprint = 0.0f;
 };
 
 class Integrator {

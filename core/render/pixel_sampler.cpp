@@ -6,11 +6,18 @@ namespace rt {
 
 Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx, float spacing) {
   const RenderSettings& s = ctx.settings;
-  TraceContext trace{ctx.scene, s, ctx.counters, samples, spacing * ctx.scene.camera.pixel_spread(s.height)};
+  const Camera& camera = ctx.view();
+  if (!camera.sees(px, py, s.width, s.height)) return Vec3(0.0f);  // outside a fisheye's circle
+  TraceContext trace{ctx.scene,
+                     s,
+                     ctx.counters,
+                     samples,
+                     spacing * camera.pixel_spread(s.width, s.height),
+                     spacing * camera.pixel_footprint(s.width, s.height)};
   ++ctx.counters[RayKind::kCamera];
   // The lens sample is keyed like every other number: a pinhole camera ignores it.
   const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
-  return ctx.integrator.radiance(ctx.scene.camera.generate_ray(px, py, s.width, s.height, lens), 0, trace);
+  return ctx.integrator.radiance(camera.generate_ray(px, py, s.width, s.height, lens), 0, trace);
 }
 
 namespace {
@@ -19,7 +26,7 @@ namespace {
 SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  return SampleStream(s.seed, ctx.frame, pixel_index, sample);
+  return SampleStream(s.seed, ctx.frame, ctx.point_key(pixel_index), sample);
 }
 
 // A sampler whose pixels are independent of each other: the tile is its pixels in turn.

@@ -27,6 +27,14 @@ struct PixelContext {
   uint32_t frame = 0;
   const std::atomic<bool>* cancel = nullptr;
   std::atomic<uint64_t>* pixels_done = nullptr;
+  // The camera the rays come from (null: the scene's), and which eye of a stereo pair: the right
+  // eye's (1) random numbers are keyed apart; the left eye's (0) are a mono render's.
+  const Camera* camera = nullptr;
+  uint32_t eye = 0;
+
+  const Camera& view() const { return camera ? *camera : scene.camera; }
+  // A sample point's key (a pixel's index, a lattice point) with the eye in its top bits.
+  uint64_t point_key(uint64_t point) const { return point | (static_cast<uint64_t>(eye) << 62); }
 
   bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
   void row_done(int pixels) const {

@@ -12,7 +12,7 @@
 namespace rt {
 
 RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film, const RenderControl& control,
-                   uint32_t frame) {
+                   uint32_t frame, const RenderView& view) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::unique_ptr<Integrator> integrator = make_integrator(settings.integrator);
@@ -46,7 +46,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
-    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel, &pixels_done};
+    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel, &pixels_done, view.camera, view.eye};
     FilmTile tile_film;
     // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
     for (int k = next++; k < grid.count(); k = next++) {
@@ -85,9 +85,9 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
 }
 
 RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control,
-                   uint32_t frame) {
+                   uint32_t frame, const RenderView& view) {
   Film film;
-  const RenderStats stats = render(scene, settings, film, control, frame);
+  const RenderStats stats = render(scene, settings, film, control, frame, view);
   image = std::move(film.color);
   return stats;
 }

@@ -40,13 +40,20 @@ struct RenderControl {
   const std::atomic<bool>* cancel = nullptr;
 };
 
+// Whose eyes look: a camera other than the scene's (one eye of a stereo pair), and the eye's key
+// (0: the left eye or a mono render, 1: the right eye).
+struct RenderView {
+  const Camera* camera = nullptr;
+  uint32_t eye = 0;
+};
+
 // Renders frame `frame` into `film` (resized to settings.width x settings.height), with the
 // pixel sampler's channels. Throws std::invalid_argument for an unknown integrator or
 // anti-aliasing mode name.
 RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film, const RenderControl& control = {},
-                   uint32_t frame = 0);
+                   uint32_t frame = 0, const RenderView& view = {});
 // The same, keeping only the colour.
 RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control = {},
-                   uint32_t frame = 0);
+                   uint32_t frame = 0, const RenderView& view = {});
 
 }  // namespace rt

@@ -17,6 +17,7 @@ Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int depth, TraceContext&
   PathState state;
   state.depth = depth;
   state.cone_spread = ctx.pixel_spread;
+  state.cone_width = ctx.pixel_footprint;
   return trace(camera_ray, state, ctx);
 }
 

@@ -12,6 +12,7 @@
 #include "io/gltf/loader.h"
 #include "io/json/locate.h"
 #include "io/json/reader.h"
+#include "io/scene/camera_parser.h"
 
 namespace rt {
 namespace {
@@ -109,9 +110,7 @@ class Builder {
     g.ambient = color(options_.ambient, desc_.ambient);
     set_timeline(g);
     const CameraDescription& c = desc_.camera;
-    g.camera.camera = Camera::look_at(c.position, c.look_at, c.up, c.fov_degrees);
-    g.camera.camera.aperture = c.aperture;
-    g.camera.camera.focus_distance = c.focus_distance.value_or(glm::length(c.look_at - c.position));
+    g.camera.camera = make_camera(c);
     for (const Light& l : desc_.lights) g.lights.push_back(LightPlacement{l, -1});
     g.lights.insert(g.lights.end(), file_lights_.begin(), file_lights_.end());
     if (!choose_camera(g)) return std::nullopt;

@@ -35,7 +35,8 @@ void read_node_transform(const tinygltf::Node& node, ImportedNode& out) {
   if (node.scale.size() == 3) out.trs.scale = vec3(node.scale);
 }
 
-// glTF cameras look down their node's -Z with +Y up; only perspective projection is rendered.
+// glTF cameras look down their node's -Z with +Y up; perspective (yfov) or orthographic (xmag,
+// the view's half width; ymag follows from the image's aspect, as viewers do).
 bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, const std::string& at, int32_t index,
                    ImportedModel& out, Reporter& report) {
   if (node.camera < 0) return true;
@@ -46,16 +47,22 @@ bool import_camera(const tinygltf::Model& model, const tinygltf::Node& node, con
   }
   const tinygltf::Camera& c = model.cameras[static_cast<size_t>(node.camera)];
   float fov = 40.0f;
+  const bool orthographic = c.type == "orthographic" && c.orthographic.xmag > 0.0 && c.orthographic.xmag < 1e30;
   if (c.type == "perspective" && c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1)
     fov = static_cast<float>(c.perspective.yfov * 180.0 / 3.14159265358979);
-  else
+  else if (!orthographic)
     report.warning("/cameras/" + to_string(node.camera),
                    "camera " + to_string(node.camera) + " (\"" + c.name + "\") is " +
-                       (c.type == "perspective" ? "a perspective camera without a usable yfov" : "orthographic") +
+                       (c.type == "perspective" ? "a perspective camera without a usable yfov"
+                                                : "an orthographic camera without a usable xmag") +
                        "; rendered as a perspective camera with a 40 degree field of view");
   CameraPlacement placement;
   placement.name = !c.name.empty() ? c.name : !node.name.empty() ? node.name : "camera " + to_string(node.camera);
   placement.camera = Camera::look_at(Vec3(0.0f), Vec3(0.0f, 0.0f, -1.0f), Vec3(0.0f, 1.0f, 0.0f), fov);
+  if (orthographic) {
+    placement.camera.projection = CameraProjection::kOrthographic;
+    placement.camera.ortho_width = 2.0f * static_cast<float>(c.orthographic.xmag);
+  }
   placement.node = index;
   out.cameras.push_back(placement);
   return true;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/animation/track.h"
+#include "core/camera.h"
 #include "core/csg/csg_spans.h"
 #include "core/lights/light.h"
 #include "core/material.h"
@@ -22,9 +23,14 @@ struct CameraDescription {
   Vec3 position{0.0f, 0.0f, 5.0f};
   Vec3 look_at{0.0f};
   Vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_degrees = 45.0f;            // vertical
+  CameraProjection projection = CameraProjection::kPerspective;
+  float fov_degrees = 45.0f;            // vertical (perspective); across the image circle (fisheye, default 180)
   float aperture = 0.0f;                // lens radius; 0 = pinhole
   std::optional<float> focus_distance;  // default: the distance to look_at
+  float ortho_width = 2.0f;             // orthographic
+  Vec2 shift{0.0f};
+  StereoSettings stereo;
+  std::optional<float> convergence;  // default: the focus distance
 };
 
 struct MaterialDescription {

@@ -4,6 +4,7 @@
 
 #include "io/json/locate.h"
 #include "io/scene/animation_parser.h"
+#include "io/scene/camera_parser.h"
 #include "io/scene/node_parser.h"
 
 namespace rt {
@@ -13,7 +14,6 @@ constexpr NumberRule kImageSize{1, kMaxImageSide, false, false, true};
 constexpr NumberRule kMaxDepth{0, kMaxRecursionDepth, false, false, true};
 constexpr NumberRule kSeed{0, 9007199254740992.0, false, false, true};  // 2^53: exact in a double
 constexpr NumberRule kSamplesPerAxis{1, kMaxSamplesPerAxis, false, false, true};
-constexpr NumberRule kFieldOfView{0, 180, true, true, false};
 constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
 constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
 constexpr NumberRule kThreshold{0, 1, false, false, false};  // a difference of displayed values
@@ -67,32 +67,6 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
               "this render can trace up to " + std::to_string(max_camera_rays_per_frame(s)) +
                   " camera rays per frame (pixels x the most rays per pixel); expect it to take a long time",
               Anchor::kKey);
-  }
-}
-
-void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
-  ObjectReader o(r, v, "/camera");
-  const auto position = o.vec3("position", true);
-  const auto look_at = o.vec3("look_at", true);
-  const auto up = o.vec3("up");
-  const auto fov = o.number("fov", kFieldOfView);
-  const auto aperture = o.number("aperture", kNonNegative);
-  const auto focus = o.number("focus_distance", kPositive);
-  o.finish();
-  if (aperture) c.aperture = static_cast<float>(*aperture);
-  if (focus) c.focus_distance = static_cast<float>(*focus);
-  if (position) c.position = *position;
-  if (look_at) c.look_at = *look_at;
-  if (up) c.up = *up;
-  if (fov) c.fov_degrees = static_cast<float>(*fov);
-  if (!position || !look_at) return;
-  const Vec3 forward = c.look_at - c.position;
-  if (glm::length(forward) < 1e-6f * std::max(1.0f, max_abs_component(c.position))) {
-    r.error(o.child("look_at"), "expected a point away from the camera position, found the position itself");
-  } else if (!(glm::length(c.up) > 0.0f) ||
-             glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
-    r.error(up ? o.child("up") : o.child("look_at"),
-            "expected an up direction not parallel to the viewing direction, found one parallel to it");
   }
 }
 

@@ -19,6 +19,7 @@
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/renderer.h"
+#include "core/render/stereo_images.h"
 #include "io/build/scene_builder.h"
 #include "io/gltf/loader.h"
 #include "io/image/texture_file.h"
@@ -150,6 +151,13 @@ std::string scene_json(const uint8_t* data, size_t size) {
   settings.threads = 1;
   Image image;
   render(scene->scene, settings, image);
+  // A stereo camera's eyes too (off-axis windows, ODS origins), and the two images put together.
+  if (const Camera& camera = scene->scene.camera; camera.stereo.enabled()) {
+    const Camera right = camera.eye_camera(1);
+    Image second;
+    render(scene->scene, settings, second, {}, 0, RenderView{&right, 1});
+    if (camera.stereo.mode != StereoMode::kPair) compose_stereo(image, second, camera.stereo);
+  }
   return "";
 }
 

@@ -1,0 +1,88 @@
+#include "cli/frame_renderer.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "cli/exit_codes.h"
+#include "cli/interrupt.h"
+#include "cli/progress_bar.h"
+#include "core/frame_scenes.h"
+#include "core/render/stereo_images.h"
+#include "core/thread_count.h"
+
+namespace rt {
+
+std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
+                                 const StereoSettings& stereo, const FrameRange& frames, std::vector<FrameSink>& sinks,
+                                 Film& film, RenderTotals& totals) {
+  ProgressBar bar(stderr);
+  const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
+  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads)});
+  totals.passes = stereo.enabled() ? 2 : 1;
+  const int all_passes = frames.count() * totals.passes;
+  std::string error;
+  Image left;
+  for (int frame = frames.first; frame <= frames.last; ++frame) {
+    const int index = frame - frames.first;
+    const Scene& scene = scenes.at(frame);
+    totals.place_seconds = scenes.placing_seconds();
+    Camera camera = scene.camera;
+    camera.stereo = stereo;
+    const Camera eyes[2] = {camera.eye_camera(-1), camera.eye_camera(1)};
+    for (int pass = 0; pass < totals.passes; ++pass) {
+      const InterruptWatch interrupt;
+      RenderControl control;
+      const int done = index * totals.passes + pass;
+      if (show_progress) {
+        std::string label =
+            frames.count() > 1 ? "frame " + std::to_string(index + 1) + "/" + std::to_string(frames.count()) : "";
+        if (totals.passes == 2) label += std::string(label.empty() ? "" : " ") + (pass == 0 ? "left eye" : "right eye");
+        bar.set_label(label);
+        control.progress = [&, done](const RenderProgress& p) {
+          RenderProgress all = p;  // the bar counts passes: done passes, plus this one's share
+          all.pixels_done += static_cast<uint64_t>(done) * p.pixels_total;
+          all.pixels_total *= static_cast<uint64_t>(all_passes);
+          all.seconds += totals.seconds + totals.place_seconds;
+          bar.update(all);
+        };
+      }
+      control.cancel = &interrupt.flag();
+      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass)} : RenderView{};
+      totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
+      bar.clear();
+      if (totals.last.cancelled) {
+        const double seconds = totals.seconds + totals.last.seconds;
+        bool written = false;
+        for (const FrameSink& sink : sinks) written = written || !sink.written().empty();
+        if (frames.count() == 1) std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", seconds);
+        else
+          std::fprintf(stderr, "rtcli: interrupted in frame %d after %.2f s; %s\n", frame, seconds,
+                       written ? "the frames before it were written" : "nothing written");
+        return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
+      }
+      totals.seconds += totals.last.seconds;
+      for (size_t k = 0; k < kRayKindCount; ++k) totals.rays.count[k] += totals.last.rays.count[k];
+      for (const uint8_t d : film.depth) totals.refined += d > 0;
+      if (pass == 0 && totals.passes == 2) left = film.color;
+    }
+
+    const SignalBlock block;  // each temporary file is always renamed or removed
+    bool ok = true;
+    if (!stereo.enabled()) {
+      ok = sinks[0].add(encode_srgb8(film.color), frame, error);
+    } else if (stereo.mode == StereoMode::kPair) {
+      ok = sinks[0].add(encode_srgb8(left), frame, error) && sinks[1].add(encode_srgb8(film.color), frame, error);
+    } else {
+      ok = sinks[0].add(encode_srgb8(compose_stereo(left, film.color, stereo)), frame, error);
+    }
+    if (!ok) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return kExitFailure;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace rt
