@@ -32,27 +32,19 @@ Camera Camera::framing(const Aabb& bounds, float vertical_fov_degrees, float asp
   return look_at(centre + 1.05f * distance * back, centre, Vec3(0.0f, 1.0f, 0.0f), vertical_fov_degrees);
 }
 
-bool Camera::sees(float x, float y, int width, int height) const {
-  if (projection != CameraProjection::kFisheye) return true;
+bool Camera::inside_fisheye_circle(float x, float y, int width, int height) const {
   const Vec2 p = Vec2(x - 0.5f * static_cast<float>(width), 0.5f * static_cast<float>(height) - y);
   const float radius = 0.5f * static_cast<float>(std::min(width, height));
   return glm::dot(p, p) <= radius * radius;
 }
 
-Ray Camera::generate_ray(float x, float y, int width, int height) const {
+Ray Camera::generate_other_ray(float x, float y, int width, int height) const {
   const float aspect = aspect_of(width, height);
   const Vec2 c = centred(x, y, width, height);
   Ray r;
   r.origin = position;
   switch (projection) {
-    case CameraProjection::kPerspective: {
-      // At unit distance the window is 2 tan_half * aspect wide; shift is in units of its larger side.
-      const float larger = 2.0f * tan_half_fov * std::max(aspect, 1.0f);
-      const float sx = c.x * tan_half_fov * aspect + shift.x * larger + window_offset;
-      const float sy = c.y * tan_half_fov + shift.y * larger;
-      r.direction = glm::normalize(forward + sx * right + sy * up);
-      break;
-    }
+    case CameraProjection::kPerspective: return generate_ray(x, y, width, height);
     case CameraProjection::kOrthographic: {
       const float half_w = 0.5f * ortho_width, half_h = half_w / aspect;
       const float larger = 2.0f * std::max(half_w, half_h);
@@ -97,30 +89,6 @@ Ray Camera::generate_ray(float x, float y, int width, int height) const {
     }
   }
   return r;
-}
-
-Ray Camera::generate_ray(float x, float y, int width, int height, Vec2 lens) const {
-  Ray r = generate_ray(x, y, width, height);
-  if (aperture <= 0.0f || projection != CameraProjection::kPerspective) return r;
-  const Vec3 focus = r.origin + r.direction * (focus_distance / glm::dot(r.direction, forward));
-  const Vec2 disk = aperture * concentric_disk(lens);
-  r.origin = position + disk.x * right + disk.y * up;
-  r.direction = glm::normalize(focus - r.origin);
-  return r;
-}
-
-float Camera::pixel_spread(int width, int height) const {
-  switch (projection) {
-    case CameraProjection::kPerspective: return 2.0f * tan_half_fov / static_cast<float>(height);
-    case CameraProjection::kOrthographic: return 0.0f;
-    case CameraProjection::kFisheye: return fisheye_fov / static_cast<float>(std::min(width, height));
-    case CameraProjection::kEquirectangular: return 2.0f * kPi / static_cast<float>(width);
-  }
-  return 0.0f;
-}
-
-float Camera::pixel_footprint(int width, int /*height*/) const {
-  return projection == CameraProjection::kOrthographic ? ortho_width / static_cast<float>(width) : 0.0f;
 }
 
 Camera Camera::eye_camera(int eye) const {

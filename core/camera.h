@@ -11,6 +11,8 @@
 // A stereo camera renders as two eyes (eye_camera), each an ordinary camera of its own.
 #pragma once
 
+#include <algorithm>
+
 #include "core/aabb.h"
 #include "core/ray.h"
 #include "core/stereo.h"
@@ -65,19 +67,52 @@ struct Camera {
   static Camera framing(const Aabb& bounds, float vertical_fov_degrees, float aspect);
 
   // Whether the image position sees anything: false outside a fisheye's circle (left black).
-  bool sees(float x, float y, int width, int height) const;
-  // Primary ray through continuous pixel position (x, y) of a width x height image.
-  Ray generate_ray(float x, float y, int width, int height) const;
+  bool sees(float x, float y, int width, int height) const {
+    return projection != CameraProjection::kFisheye || inside_fisheye_circle(x, y, width, height);
+  }
+  // Primary ray through continuous pixel position (x, y) of a width x height image. The
+  // perspective case, by far the most common, is inline: a camera ray costs no call.
+  Ray generate_ray(float x, float y, int width, int height) const {
+    if (projection != CameraProjection::kPerspective) return generate_other_ray(x, y, width, height);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    // At unit distance the window is 2 tan_half * aspect wide; shift is in units of its larger side.
+    const float larger = 2.0f * tan_half_fov * std::max(aspect, 1.0f);
+    const float sx = (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half_fov * aspect + shift.x * larger +
+                     window_offset;
+    const float sy = (1.0f - 2.0f * y / static_cast<float>(height)) * tan_half_fov + shift.y * larger;
+    Ray r;
+    r.origin = position;
+    r.direction = glm::normalize(forward + sx * right + sy * up);
+    return r;
+  }
   // The same ray through a thin lens: `lens` in [0, 1)^2 picks the point of the lens disk
   // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0, or a
   // projection other than perspective, returns the pinhole ray exactly.
-  Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const;
+  Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const {
+    Ray r = generate_ray(x, y, width, height);
+    if (aperture <= 0.0f || projection != CameraProjection::kPerspective) return r;
+    const Vec3 focus = r.origin + r.direction * (focus_distance / glm::dot(r.direction, forward));
+    const Vec2 disk = aperture * concentric_disk(lens);
+    r.origin = position + disk.x * right + disk.y * up;
+    r.direction = glm::normalize(focus - r.origin);
+    return r;
+  }
 
   // The ray cone of a camera ray (textures' mip level, docs/rendering.md): the angle one pixel
   // subtends (perspective: at the image centre; fisheye and equirectangular: everywhere, along
   // the image's width), and the cone's width where rays start (orthographic: one pixel's width).
-  float pixel_spread(int width, int height) const;
-  float pixel_footprint(int width, int height) const;
+  float pixel_spread(int width, int height) const {
+    switch (projection) {
+      case CameraProjection::kPerspective: return 2.0f * tan_half_fov / static_cast<float>(height);
+      case CameraProjection::kOrthographic: return 0.0f;
+      case CameraProjection::kFisheye: return fisheye_fov / static_cast<float>(std::min(width, height));
+      case CameraProjection::kEquirectangular: return 2.0f * kPi / static_cast<float>(width);
+    }
+    return 0.0f;
+  }
+  float pixel_footprint(int width, int /*height*/) const {
+    return projection == CameraProjection::kOrthographic ? ortho_width / static_cast<float>(width) : 0.0f;
+  }
 
   // The camera of one eye of a stereo pair (eye -1 left, +1 right), an ordinary mono camera:
   // perspective and fisheye move by half the eye separation along `right` with parallel axes,
@@ -94,6 +129,10 @@ struct Camera {
     const float phi = wide ? (kPi / 4.0f) * (b / a) : (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
     return radius * Vec2(std::cos(phi), std::sin(phi));
   }
+
+ private:
+  bool inside_fisheye_circle(float x, float y, int width, int height) const;
+  Ray generate_other_ray(float x, float y, int width, int height) const;  // every projection but perspective
 };
 
 }  // namespace rt
