@@ -131,10 +131,13 @@ TEST_CASE("cli: a glTF model renders directly", "[cli]") {
 }
 
 TEST_CASE("cli: 1 thread and 2 threads give byte-identical PNG files", "[cli][determinism]") {
-  const std::string a = output_path("threads1.png"), b = output_path("threads2.png");
-  REQUIRE(rtcli("render scenes/primitives.json -q --width 120 --height 70 --threads 1 -o '" + a + "'").code == 0);
-  REQUIRE(rtcli("render scenes/primitives.json -q --width 120 --height 70 --threads 2 -o '" + b + "'").code == 0);
-  CHECK(read_file(a) == read_file(b));
+  for (const char* scene : {"scenes/primitives.json", "scenes/csg.json"}) {
+    INFO(scene);
+    const std::string a = output_path("threads1.png"), b = output_path("threads2.png");
+    REQUIRE(rtcli(std::string("render ") + scene + " -q --width 120 --height 70 --threads 1 -o '" + a + "'").code == 0);
+    REQUIRE(rtcli(std::string("render ") + scene + " -q --width 120 --height 70 --threads 2 -o '" + b + "'").code == 0);
+    CHECK(read_file(a) == read_file(b));
+  }
 }
 
 TEST_CASE("cli: bad scenes exit 2 and leave an existing output untouched", "[cli][errors]") {

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/shadow_transmittance.h"
+#include "materials/optics.h"
 #include "io/scene_loader.h"
 #include "tests/support/geometry.h"
 #include "tests/support/loading.h"
@@ -98,4 +99,51 @@ TEST_CASE("CSG scenes: shadow rays pass a glass lens as they pass glass, one fac
   Ray beside = make_ray({2, 0, 5}, {0, 0, -1});
   beside.tmax = 10.0f;
   CHECK(shadow_transmittance(s.scene, beside).x == Approx(1.0f));
+}
+
+TEST_CASE("CSG scenes: a lens made of two spheres focuses parallel light where the thick-lens formula says",
+          "[csg][io][refraction]") {
+  // Radius 2.5 spheres 4.4 apart: a biconvex lens 0.6 thick, ior 1.5. Thick-lens formula:
+  // 1/f = (n-1) (1/R1 - 1/R2 + (n-1) d / (n R1 R2)) = 0.384, f = 2.6042; back focal length
+  // f (1 - (n-1) d / (n R1)) = 2.3958 beyond the back vertex at z = -0.3.
+  const LoadedScene s = rt::test::load_scene_text("csg-focus.json", scene_with(R"([
+    {"csg": "intersection", "material": "glass", "children": [
+      {"shape": "sphere", "transform": {"translate": [0, 0, -2.2], "scale": 2.5}},
+      {"shape": "sphere", "transform": {"translate": [0, 0, 2.2], "scale": 2.5}}]}])"));
+  const float n = 1.5f;
+  for (const float h : {0.005f, 0.01f}) {
+    Ray r = make_ray({h, 0, 5}, {0, 0, -1});
+    Hit in;
+    REQUIRE(s.scene.intersect(r, in));
+    SurfaceInteraction a = s.scene.surface(r, in);
+    REQUIRE(a.front_face);
+    Vec3 inside;
+    REQUIRE(refract(r.direction, a.geometric_normal, 1.0f / n, inside));
+    Ray through = make_ray(offset_ray_origin(a.position, a.geometric_normal, inside), inside);
+    Hit out;
+    REQUIRE(s.scene.intersect(through, out));
+    const SurfaceInteraction b = s.scene.surface(through, out);
+    REQUIRE_FALSE(b.front_face);  // leaving, its normal turned to face out of the lens
+    Vec3 beyond;
+    REQUIRE(refract(through.direction, -b.geometric_normal, n, beyond));
+    // Where the ray crosses the axis.
+    const float t_axis = -b.position.x / beyond.x;
+    const Vec3 focus = b.position + t_axis * beyond;
+    CHECK(focus.z == Approx(-0.3f - 2.3958f).epsilon(2e-3));
+  }
+}
+
+TEST_CASE("CSG scenes: a cut surface refracts into the solid's medium, not the cutter's", "[csg][io][refraction]") {
+  const LoadedScene s = rt::test::load_scene_text("csg-medium.json", scene_with(R"([
+    {"csg": "difference", "material": "glass", "children": [
+      {"shape": "sphere"},
+      {"shape": "sphere", "material": "red", "transform": {"translate": [0, 0, 1], "scale": 0.5}}]}])"));
+  Ray r = make_ray({0, 0, 6}, {0, 0, -1});
+  Hit h;
+  REQUIRE(s.scene.intersect(r, h));
+  const SurfaceInteraction si = s.scene.surface(r, h);
+  CHECK(si.position.z == Approx(0.5f));  // the bite's floor, on the cutter
+  const auto kd = [&](uint32_t m) { return s.scene.materials()[m].kd.x; };
+  CHECK(kd(si.material) == Approx(0.8f));  // shaded with the cutter's material (red)
+  CHECK(s.scene.materials()[si.medium].transmission.x == Approx(1.0f));  // behind it: the glass
 }
