@@ -3,14 +3,13 @@
 # parallax at the middle one) and scenes/panorama.json (the same room all round, as a 360-degree
 # equirectangular image; `--stereo top_bottom` makes it omni-directional stereo for VR viewers).
 # Run from the repository root.
-import json
+import math
+import os
+import sys
 
-def T(t=None, r=None, s=None):
-    d = {}
-    if t is not None: d["translate"] = t
-    if r is not None: d["rotate"] = r
-    if s is not None: d["scale"] = s
-    return d
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_json import T, write_scene  # noqa: E402
+
 
 materials = {
     "floor": {"texture": {"file": "textures/wood.png", "scale": [4, 4]}, "ks": 0.1, "shininess": 30},
@@ -47,7 +46,7 @@ stereo = {
     "background": [0.08, 0.09, 0.12], "ambient": 0.06,
     "materials": materials, "lights": lights, "nodes": room + toys,
 }
-open("scenes/stereo.json", "w").write(json.dumps(stereo, indent=2) + "\n")
+write_scene("scenes/stereo.json", stereo)
 
 # All round: walls on every side, the toys in a ring about the camera.
 walls = [
@@ -57,7 +56,6 @@ walls = [
       "transform": T(t=t, r=r, s=[6, 1, 1.6])} for i, (t, r) in enumerate([
           ([0, 1.6, -6], [90, 0, 0]), ([0, 1.6, 6], [-90, 0, 0]), ([-6, 1.6, 0], [90, 90, 0]), ([6, 1.6, 0], [90, -90, 0])])]
 ring = []
-import math
 for i, toy in enumerate(toys):
     a = 2 * math.pi * i / len(toys)
     t = dict(toy)
@@ -80,4 +78,4 @@ panorama = {
                {"type": "point", "position": [-2, 2.5, 2], "color": [0.45, 0.45, 0.5]}],
     "nodes": walls + ring,
 }
-open("scenes/panorama.json", "w").write(json.dumps(panorama, indent=2) + "\n")
+write_scene("scenes/panorama.json", panorama)

@@ -1,13 +1,11 @@
 #!/usr/bin/env python3
 # Writes scenes/csg.json: the CSG showcase (a lens, a die with sunken pips, a hollow glass
 # sphere, a merged blob beside the same blob as a union, a pipe). Run from the repository root.
-import json
-def T(t=None, r=None, s=None):
-    d = {}
-    if t is not None: d["translate"] = t
-    if r is not None: d["rotate"] = r
-    if s is not None: d["scale"] = s
-    return d
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_json import T, write_scene  # noqa: E402
 
 half = 0.6
 pip_r = 0.12
@@ -78,4 +76,4 @@ scene = {
                       {"shape": "cylinder", "material": "copper inside", "transform": T(t=[0, 0, -0.7], s=[0.22, 0.22, 1.4])}]}
     ]
 }
-open("scenes/csg.json", "w").write(json.dumps(scene, indent=2) + "\n")
+write_scene("scenes/csg.json", scene)
