@@ -6,7 +6,10 @@
 
 #include "core/render/renderer.h"
 #include "core/render/stereo_images.h"
+#include "io/scene_loader.h"
 #include "tests/support/geometry.h"
+#include "tests/support/loading.h"
+#include "tests/support/test_paths.h"
 
 using namespace rt;
 using rt::test::check_vec;
@@ -190,4 +193,18 @@ TEST_CASE("stereo: Dubois' red-cyan matrices on known colours", "[stereo]") {
   CHECK(mix.b == Approx(0.0f).margin(1e-6));  // -0.0205 - 0.113, clamped
   // The colour anaglyph: red from the left, green and blue from the right.
   CHECK(anaglyph_pixel(Vec3(0.2f, 0.4f, 0.6f), Vec3(0.9f, 0.8f, 0.7f), AnaglyphKind::kColor) == Vec3(0.2f, 0.8f, 0.7f));
+}
+
+TEST_CASE("cameras: a glTF orthographic camera is orthographic, xmag its half width", "[camera][gltf]") {
+  if (!rt::test::have_sample_models()) return;
+  LoadOptions options = rt::test::load_options();
+  options.camera = "camera 1";  // Cameras.gltf's second camera: orthographic, xmag 1
+  Diagnostics diags;
+  const auto loaded = load_scene(rt::test::sample_model("Cameras/glTF/Cameras.gltf"), options, diags);
+  REQUIRE(loaded);
+  CHECK(diags.all().empty());  // no "rendered as a perspective camera" warning
+  const Camera& c = loaded->scene.camera;
+  CHECK(c.projection == CameraProjection::kOrthographic);
+  CHECK(c.ortho_width == Approx(2.0f));
+  check_vec(c.generate_ray(0.0f, 50.0f, 100, 100).direction, c.generate_ray(100.0f, 50.0f, 100, 100).direction);
 }
