@@ -193,6 +193,7 @@ class Builder {
     for (const CameraPlacement& c : cameras_) {
       if (c.name == *options_.camera || g.nodes[static_cast<size_t>(c.node)].name == *options_.camera) {
         g.camera = c;
+        g.camera.camera.stereo = make_camera(desc_.camera).stereo;  // the scene's stereo settings still apply
         return true;
       }
       names.push_back(c.name);
@@ -240,6 +241,8 @@ class Builder {
       return false;
     }
     if (g.lights.empty()) g.lights = {LightPlacement{light, -1}};
+    // Stereo (--stereo) converges on the model, which a glTF camera has no look-at point to say.
+    g.camera.camera.stereo.convergence = reach;
     return true;
   }
 

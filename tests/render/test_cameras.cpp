@@ -208,3 +208,13 @@ TEST_CASE("cameras: a glTF orthographic camera is orthographic, xmag its half wi
   CHECK(c.ortho_width == Approx(2.0f));
   check_vec(c.generate_ray(0.0f, 50.0f, 100, 100).direction, c.generate_ray(100.0f, 50.0f, 100, 100).direction);
 }
+
+TEST_CASE("stereo: a glTF model on its own converges on the model", "[camera][stereo][gltf]") {
+  Diagnostics diags;
+  const auto loaded = load_scene(rt::test::source_path("scenes/models/knot.glb"), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  const Camera& c = loaded->scene.camera;
+  // The framing camera looks at the model's centre: the convergence plane passes through it.
+  const Vec3 centre = loaded->scene.bvh.bounds().centre();
+  CHECK(c.stereo.convergence == Approx(glm::length(centre - c.position)).epsilon(1e-3));
+}
