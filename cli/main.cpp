@@ -90,6 +90,8 @@ int main(int argc, char** argv) {
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
       "it, so that a downloaded model cannot show other files)";
   render_cmd->add_flag("--allow-outside-files", render.allow_outside_files, outside_help);
+  render_cmd->add_option("--stats", render.stats,
+                         "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
 
   ValidateCommand validate;

@@ -12,6 +12,7 @@
 #include "cli/number_checks.h"
 #include "cli/output_checks.h"
 #include "cli/progress_bar.h"
+#include "cli/render_stats.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
 #include "cli/suggestions.h"
@@ -171,6 +172,7 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
       for (int f = frames.first; f <= frames.last; ++f) out.paths.push_back(sequence_path(pattern, f));
     else out.paths.push_back(pattern);
   }
+  if (!cmd.stats.empty()) out.paths.push_back(cmd.stats);
   if (cmd.aa_debug) {
     out.aa_refined = beside(request.output, ".aa-refined");
     out.aa_depth = beside(request.output, ".aa-depth");
@@ -328,10 +330,20 @@ int run_render(const RenderCommand& cmd) {
 
   // Write and summarise.
   if (!finish_outputs(*outputs, sinks, film, totals.last.threads)) return kExitFailure;
+  std::vector<std::string> written;
+  for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
+  if (!cmd.stats.empty()) {
+    std::string error;
+    const SignalBlock block;
+    if (!write_render_stats(
+            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, frames, totals, load_seconds}, error)) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return kExitFailure;
+    }
+  }
   if (!cmd.quiet) {
-    std::vector<std::string> written;
-    for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
     print_summary(cmd, settings, frames, totals, load_seconds, written);
+    if (!cmd.stats.empty()) std::printf("wrote %s (the render's figures)\n", cmd.stats.c_str());
     if (cmd.aa_debug) {
       std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
       std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",

@@ -4,7 +4,7 @@
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
-//   [--allow-outside-files]
+//   [--allow-outside-files] [--stats FILE.json]
 //   [--quiet]`
 #pragma once
 
@@ -41,6 +41,7 @@ struct RenderCommand {
   std::optional<std::string> stereo;               // none, anaglyph, side_by_side, top_bottom, pair: replaces the camera's
   bool dither = false;                             // GIF frames: Floyd-Steinberg error diffusion
   bool allow_outside_files = false;                // glTF files may read images and buffers outside their folder
+  std::string stats;  // --stats FILE: the render's figures as JSON (cli/render_stats.h); empty: none
   bool quiet = false;
 };
 

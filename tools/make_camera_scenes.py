@@ -34,7 +34,7 @@ room = [
     {"name": "back wall", "shape": "plane", "material": "wall", "transform": T(t=[0, 2.5, -6], r=[90, 0, 0], s=[8, 1, 2.5])},
 ]
 lights = [
-    {"type": "rect", "corner": [-1, 4, -1], "edge1": [0, 0, 2], "edge2": [2, 0, 0], "color": [1, 0.97, 0.92], "intensity": 1.1},
+    {"type": "rect", "corner": [-1, 4, -1], "edge1": [2, 0, 0], "edge2": [0, 0, 2], "color": [1, 0.97, 0.92], "intensity": 0.8},
     {"type": "point", "position": [4, 3, 6], "color": [0.3, 0.32, 0.38]},
 ]
 stereo = {

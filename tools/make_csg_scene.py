@@ -52,7 +52,7 @@ scene = {
         "copper inside": {"kd": [0.2, 0.1, 0.06], "ks": 0.2, "shininess": 20}
     },
     "lights": [
-        {"type": "rect", "corner": [-2.5, 6, 1.5], "edge1": [0, 0, 2], "edge2": [2, 0, 0], "color": [1, 0.97, 0.92], "intensity": 1.0},
+        {"type": "rect", "corner": [-2.5, 6, 1.5], "edge1": [2, 0, 0], "edge2": [0, 0, 2], "color": [1, 0.97, 0.92], "intensity": 0.75},
         {"type": "point", "position": [5, 4, 8], "color": [0.35, 0.38, 0.45]}
     ],
     "nodes": [

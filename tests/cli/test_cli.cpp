@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "io/json/document.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
 
@@ -209,4 +210,30 @@ TEST_CASE("cli: --aa picks the anti-aliasing mode; --aa-debug writes and names t
   r = rtcli("render scenes/antialias.json -o '" + out + "' " + small("--aa none"));
   CHECK(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("(1.00 camera rays), 0.0% of pixels refined (anti-aliasing none)"));
+}
+
+TEST_CASE("cli: --stats writes the render's figures as JSON", "[cli][stats]") {
+  const std::string png = output_path("stats.png"), stats = output_path("stats.json");
+  fs::remove(stats);
+  const Run r = rtcli("render scenes/soft_shadows.json --width 40 --height 24 --shadow-samples 4 -o '" + png +
+                      "' --stats '" + stats + "'");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("wrote " + stats));
+  const rt::Json j = rt::Json::parse(read_file(stats));
+  CHECK(j["width"] == 40);
+  CHECK(j["height"] == 24);
+  CHECK(j["shadow_samples"] == 4);
+  CHECK(j["outputs"][0] == png);
+  CHECK(j["stereo"] == "none");
+  uint64_t sum = 0;
+  for (const char* kind : {"camera", "shadow", "reflection", "refraction", "glossy"})
+    sum += j["rays"][kind].get<uint64_t>();
+  CHECK(j["rays"]["total"].get<uint64_t>() == sum);
+  CHECK(j["rays"]["shadow"].get<uint64_t>() > 0);
+  CHECK(j["rays_per_pixel"].get<double>() == Approx(static_cast<double>(sum) / (40.0 * 24.0)));
+  CHECK(j["seconds"]["render"].get<double>() > 0.0);
+  // A stats file that cannot be written is refused before rendering.
+  const Run bad = rtcli("render scenes/soft_shadows.json --width 40 --height 24 -o '" + png +
+                        "' --stats /nonexistent-folder/stats.json");
+  CHECK(bad.code == 2);
 }

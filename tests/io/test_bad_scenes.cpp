@@ -93,7 +93,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
   CHECK_THAT(limits, Catch::Contains("one scene per class of error (" + std::to_string(files) + " of them)"));
 }
 
-TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint", "[io][schema]") {
+TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint and no warning", "[io][schema]") {
   int checked = 0;
   for (const char* folder : {"scenes", "scenes/models", "tests/data"}) {
     for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path(folder))) {
@@ -101,7 +101,7 @@ TEST_CASE("validator: every shipped scene and model is valid, with no schema com
       if (ext != ".json" && ext != ".glb" && ext != ".gltf") continue;
       const Diagnostics diags = validate_file(entry.path().string(), rt::test::load_options());
       INFO(entry.path().string() << "\n" << all_messages(diags));
-      CHECK_FALSE(diags.has_errors());
+      CHECK(diags.all().empty());  // not even a warning (a rect light facing away, say)
       ++checked;
     }
   }
