@@ -1,6 +1,7 @@
 // Whole renders: determinism across threads and tiles, a golden image, every example scene.
 #include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -141,10 +142,14 @@ TEST_CASE("golden image: CSG (a lens, a die, a hollow sphere, merge beside union
 
 TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
   int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path("scenes"))) {
-    if (entry.path().extension() != ".json") continue;
-    INFO(entry.path().string());
-    const LoadedScene s = load(entry.path().string());
+  std::vector<std::filesystem::path> files;
+  for (const char* folder : {"scenes", "scenes/toys"})
+    for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path(folder)))
+      files.push_back(entry.path());
+  for (const std::filesystem::path& path : files) {
+    if (path.extension() != ".json") continue;
+    INFO(path.string());
+    const LoadedScene s = load(path.string());
     RenderSettings settings = s.settings;
     settings.width = 48;
     settings.height = 27;

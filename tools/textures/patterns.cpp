@@ -123,6 +123,30 @@ Vec3 brick_color(float x, float y) {
                   smooth(0.3f, 0.6f, h));
 }
 
+// A child's-room wallpaper: soft vertical stripes with a small repeating dot between them.
+Vec3 wallpaper(float x, float y) {
+  const float stripe = smooth(0.0f, 0.08f, std::fabs(std::fmod(x * 8.0f, 1.0f) - 0.5f) - 0.18f);
+  Vec3 c = glm::mix(Vec3(0.66f, 0.75f, 0.77f), Vec3(0.88f, 0.86f, 0.79f), stripe);
+  const float fx = std::fmod(x * 8.0f, 1.0f) - 0.5f, fy = std::fmod(y * 8.0f, 1.0f) - 0.5f;
+  if (fx * fx + fy * fy < 0.004f) c = Vec3(0.80f, 0.62f, 0.48f);
+  return c * (0.96f + 0.04f * value_noise(x * 128.0f, y * 128.0f, 128));
+}
+
+// Fine grain as heights, for a bump map (bone or plastic): two octaves of tiling value noise.
+Vec3 grain(float x, float y) {
+  return Vec3(0.65f * value_noise(x * 32.0f, y * 32.0f, 32) + 0.35f * value_noise(x * 96.0f, y * 96.0f, 96));
+}
+
+// A card's back: a red lattice of diamonds inside a white border.
+Vec3 card_back(float x, float y) {
+  const float w = 2.0f / 3.0f;
+  const float cx = x * w, cy = y;
+  if (cx < 0.05f || cx > w - 0.05f || cy < 0.05f || cy > 0.95f) return Vec3(0.97f, 0.96f, 0.93f);
+  const float u = (cx + cy) * 14.0f, v = (cx - cy) * 14.0f;
+  const float line = std::min(std::fabs(u - std::round(u)), std::fabs(v - std::round(v)));
+  return line < 0.12f ? Vec3(0.97f, 0.9f, 0.88f) : Vec3(0.68f, 0.08f, 0.1f);
+}
+
 }  // namespace
 
 const std::vector<Pattern>& patterns() {
@@ -135,6 +159,9 @@ const std::vector<Pattern>& patterns() {
       {"bricks.png", 256, 256, bricks, "height map: bricks with mortar joints"},
       {"bricks_normal.png", 256, 256, bricks_normal, "the same bricks as a tangent-space normal map"},
       {"bricks_colour.png", 256, 256, brick_color, "the bricks in colour"},
+      {"wallpaper.png", 512, 512, wallpaper, "a child's-room wallpaper: stripes and dots"},
+      {"grain.png", 256, 256, grain, "height map: fine grain (bone, plastic)"},
+      {"card_back.png", 256, 384, card_back, "a playing card's back: a red diamond lattice"},
   };
   return all;
 }
