@@ -117,14 +117,14 @@ TEST_CASE("CSG scenes: a lens made of two spheres focuses parallel light where t
     REQUIRE(s.scene.intersect(r, in));
     SurfaceInteraction a = s.scene.surface(r, in);
     REQUIRE(a.front_face);
-    Vec3 inside;
+    Vec3 inside(0.0f);
     REQUIRE(refract(r.direction, a.geometric_normal, 1.0f / n, inside));
     Ray through = make_ray(offset_ray_origin(a.position, a.geometric_normal, inside), inside);
     Hit out;
     REQUIRE(s.scene.intersect(through, out));
     const SurfaceInteraction b = s.scene.surface(through, out);
     REQUIRE_FALSE(b.front_face);  // leaving, its normal turned to face out of the lens
-    Vec3 beyond;
+    Vec3 beyond(0.0f);
     REQUIRE(refract(through.direction, -b.geometric_normal, n, beyond));
     // Where the ray crosses the axis.
     const float t_axis = -b.position.x / beyond.x;
