@@ -179,7 +179,7 @@ write_scene("scenes/toys/toys.json", still)
 
 panorama = copy.deepcopy(still)
 panorama["render"] = dict(render, width=2048, height=1024)
-panorama["camera"] = {"position": [0.0, 0.1, 0.1], "look_at": [-0.2, 0.1, -0.3], "projection": "equirectangular",
+panorama["camera"] = {"position": [-0.05, 0.1, 0.0], "look_at": [-0.25, 0.1, -0.4], "projection": "equirectangular",
                       "stereo": {"mode": "top_bottom", "convergence": 0.4, "eye_separation": 0.02}}
 write_scene("scenes/toys/panorama.json", panorama)
 
@@ -187,10 +187,11 @@ write_scene("scenes/toys/panorama.json", panorama)
 # at 30 fps); the lights stay put, so the shadows do too.
 spin = copy.deepcopy(still)
 spin["render"] = dict(render, width=480, height=270, antialias={"mode": "adaptive", "threshold": 0.1, "max_depth": 2})
-spin["camera"] = {"position": [0.0, 0.35, 1.05], "look_at": [0, 0.04, 0], "fov": 38}
+spin["camera"] = {"position": [0.0, 0.36, 0.95], "look_at": [0, 0.04, 0], "fov": 36}
 tray = {"name": "turntable", "children": [
-    {"name": "tray", "shape": "cylinder", "material": "box wood", "transform": T(t=[0, -0.01, 0], r=[-90, 0, 0], s=[0.55, 0.55, 0.01])},
-    {"name": "toys", "transform": T(t=[0.05, 0, 0.05]), "children": toys()}]}
+    {"name": "tray", "shape": "cylinder", "material": "box inside", "transform": T(t=[0, -0.01, 0], r=[-90, 0, 0], s=[0.55, 0.55, 0.01])},
+    # Everything but the toy box, which would hide the rest for a third of the turn.
+    {"name": "toys", "transform": T(t=[-0.05, 0, -0.05]), "children": toys()[1:]}]}
 spin["nodes"] = room() + [tray]
 spin["animation"] = {"fps": 30, "frames": [0, 119], "tracks": [{"node": "turntable", "property": "rotate", "keys": [
     {"frame": 0, "value": {"axis": [0, 1, 0], "degrees": 0}}, {"frame": 120, "value": {"axis": [0, 1, 0], "degrees": 360}}]}]}
