@@ -22,10 +22,10 @@ materials = {
     "box inside": {"texture": {"file": TEX + "wood.png", "scale": [2, 2]}, "kd": [0.6, 0.45, 0.35], "ks": 0.05},
     "brass": {"kd": [0.3, 0.22, 0.08], "ks": [0.8, 0.65, 0.3], "shininess": 120, "reflectivity": [0.6, 0.48, 0.22], "glossy": 0.05},
     "ivory": {"kd": [0.92, 0.9, 0.84], "ks": 0.35, "shininess": 80,
-              "bump": {"file": TEX + "grain.png", "strength": 0.0004, "scale": [2, 2]}},
+              "bump": {"file": TEX + "grain.png", "strength": 0.00012, "scale": [1, 1]}},
     "pip": {"kd": [0.04, 0.04, 0.05], "ks": 0.2, "shininess": 40},
     "red die": {"kd": [0.75, 0.08, 0.06], "ks": 0.4, "shininess": 90,
-                "bump": {"file": TEX + "grain.png", "strength": 0.0004, "scale": [2, 2]}},
+                "bump": {"file": TEX + "grain.png", "strength": 0.00012, "scale": [1, 1]}},
     "white pip": {"kd": 0.9, "ks": 0.2, "shininess": 40},
     "clear glass": {"kd": 0, "ks": 0.7, "shininess": 500, "transmission": 1, "ior": 1.5},
     "blue glass": {"kd": 0, "ks": 0.7, "shininess": 500, "transmission": 1, "ior": 1.52, "absorption": [40, 14, 2]},
@@ -140,8 +140,8 @@ def toys():
         {"name": "rubber ball", "shape": "sphere", "material": "rubber red", "transform": T(t=[0.2, 0.06, -0.02], s=0.06)},
         {"name": "bouncy ball", "shape": "sphere", "material": "rubber blue", "transform": T(t=[-0.36, 0.03, 0.05], s=0.03)},
         {"name": "chrome ball", "shape": "sphere", "material": "chrome", "transform": T(t=[-0.2, 0.035, 0.12], s=0.035)},
-        jack("jack 1", [-0.03, 0.008, 0.24], [20, 30, 35], 0.016, "steel"),
-        jack("jack 2", [0.1, 0.008, 0.25], [-15, 70, 30], 0.016, "steel"),
+        jack("jack 1", [-0.03, 0.011, 0.24], [20, 30, 35], 0.022, "steel"),
+        jack("jack 2", [0.1, 0.011, 0.25], [-15, 70, 30], 0.022, "steel"),
         card("card 1", [-0.17, 0.0005, 0.22], [0, -25, 0]),
         card("card 2", [-0.13, 0.0012, 0.26], [0, 12, 0], face_up=False),
     ] + blocks()
@@ -160,18 +160,18 @@ def room():
 
 
 lights = [
-    {"type": "rect", "corner": [-0.45, 1.2, -0.3], "edge1": [0.6, 0, 0], "edge2": [0, 0, 0.6], "color": [1, 0.95, 0.88], "intensity": 1.0},
+    {"type": "rect", "corner": [-0.75, 1.0, -0.55], "edge1": [0.45, 0, 0], "edge2": [0, 0, 0.45], "color": [1, 0.93, 0.82], "intensity": 1.25},
     {"type": "point", "position": [0.8, 0.6, 1.6], "color": [0.25, 0.28, 0.35]},
 ]
 
 render = {"width": 1280, "height": 720, "max_depth": 8, "seed": 1, "shadow_samples": 8, "glossy_samples": 6,
-          "antialias": {"mode": "adaptive", "threshold": 0.08, "max_depth": 2}}
+          "antialias": {"mode": "adaptive", "threshold": 0.06, "max_depth": 3}}
 
 still = {
     "$schema": "../../schemas/scene.schema.json",
     "render": render,
-    "camera": {"position": [0.1, 0.17, 0.64], "look_at": [-0.05, 0.065, -0.06], "fov": 40,
-               "aperture": 0.003, "focus_distance": 0.56},
+    "camera": {"position": [0.1, 0.17, 0.64], "look_at": [-0.05, 0.08, -0.06], "fov": 40,
+               "aperture": 0.0025, "focus_distance": 0.56},
     "background": [0.05, 0.05, 0.06], "ambient": 0.05,
     "materials": materials, "lights": lights, "nodes": room() + toys(),
 }
