@@ -186,7 +186,7 @@ write_scene("scenes/toys/panorama.json", panorama)
 # The turntable: the toys on a round tray, turned 3 degrees a frame for 120 frames (a 4-second loop
 # at 30 fps); the lights stay put, so the shadows do too.
 spin = copy.deepcopy(still)
-spin["render"] = dict(render, width=480, height=270, antialias={"mode": "adaptive", "threshold": 0.1, "max_depth": 2})
+spin["render"] = dict(render, width=320, height=180, antialias={"mode": "adaptive", "threshold": 0.1, "max_depth": 2})
 spin["camera"] = {"position": [0.0, 0.36, 0.95], "look_at": [0, 0.04, 0], "fov": 36}
 tray = {"name": "turntable", "children": [
     {"name": "tray", "shape": "cylinder", "material": "box inside", "transform": T(t=[0, -0.01, 0], r=[-90, 0, 0], s=[0.55, 0.55, 0.01])},
