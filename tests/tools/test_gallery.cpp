@@ -1,0 +1,52 @@
+// tools/gallery.sh --fast: every section rendered small into a scratch folder, the page's images
+// and links all there, and the HTML clean by Debian's tidy.
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include <catch2/catch.hpp>
+
+#include "tests/support/run_rtcli.h"
+#include "tests/support/test_paths.h"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("gallery: --fast writes a self-contained page whose images and links all resolve", "[tools][gallery]") {
+  const std::string out = rt::test::output_path("gallery-fast");
+  fs::remove_all(out);
+  const rt::test::Run r = rt::test::run_shell("'" + rt::test::source_path("tools/gallery.sh") + "' --fast --out '" +
+                                              out + "' --rtcli '" + RTCLI_BINARY + "' 2>&1");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const std::string page = rt::test::read_file(out + "/index.html");
+  CHECK(fs::exists(out + "/style.css"));
+  // Every image and link inside the page resolves; nothing comes from elsewhere.
+  const std::regex ref(R"((src|href)="([^"]+)\")");
+  std::set<std::string> ids;
+  for (std::sregex_iterator it(page.begin(), page.end(), ref), end; it != end; ++it) {
+    const std::string target = (*it)[2];
+    INFO(target);
+    CHECK(target.find("://") == std::string::npos);
+    if (target[0] == '#') ids.insert(target.substr(1));
+    else CHECK(fs::exists(out + "/" + target));
+  }
+  for (const std::string& id : ids) CHECK(page.find("id=\"" + id + "\"") != std::string::npos);
+  CHECK(ids.size() >= 15);  // a section for each objective and extra
+  // Every image has alt text, and its statistics under it.
+  const std::regex img(R"(<img [^>]*>)");
+  int images = 0;
+  for (std::sregex_iterator it(page.begin(), page.end(), img), end; it != end; ++it, ++images)
+    CHECK(it->str().find("alt=\"") != std::string::npos);
+  CHECK(images >= 25);
+  CHECK(page.find("rays a pixel") != std::string::npos);
+  // Sliders where the proposal compares two renders.
+  CHECK(page.find("data-compare") != std::string::npos);
+  // Valid HTML: tidy (tools/install-deps.sh installs it) reports neither errors nor warnings.
+  if (rt::test::run_shell("command -v tidy >/dev/null").code != 0) {
+    WARN("tidy is not installed: the HTML check is skipped");
+    return;
+  }
+  const rt::test::Run tidy = rt::test::run_shell("tidy -q -e '" + out + "/index.html' 2>&1");
+  INFO(tidy.output);
+  CHECK(tidy.code == 0);
+}

@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+"""Renders every gallery section (tools/gallery/sections.py) with build/rtcli and writes a static,
+self-contained site: index.html, style.css and the images under gallery/ (no external fonts,
+scripts or CDNs). Each image's caption carries its render statistics from `rtcli render --stats`.
+
+  gallery.py --out DIR [--fast] [--rtcli PATH]
+
+--fast renders small images (and 4 frames of each animation) for the tests; the full mode makes
+the published page in docs/.
+"""
+import argparse
+import html
+import json
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sections import SECTIONS  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def scene_size(scene):
+    with open(os.path.join(ROOT, scene)) as f:
+        render = json.load(f).get("render", {})
+    return render.get("width", 640), render.get("height", 480)
+
+
+def render(rtcli, scene, options, out, stats, fast):
+    args = [rtcli, "render", os.path.join(ROOT, scene), "-q", "-o", out, "--stats", stats] + shlex.split(options)
+    if fast:
+        w, h = scene_size(scene)
+        scale = 160.0 / w
+        args += ["--width", "160", "--height", str(max(2, round(h * scale)))]
+        if "--shadow-samples" not in args:
+            args += ["--shadow-samples", "4"]
+        if "--frames" in args:
+            args[args.index("--frames") + 1] = "0-3"
+    subprocess.run(args, check=True, cwd=ROOT)
+    with open(stats) as f:
+        return json.load(f)
+
+
+def count(n):
+    for unit, size in (("G", 1e9), ("M", 1e6), ("k", 1e3)):
+        if n >= size:
+            return "%.1f %s" % (n / size, unit)
+    return str(n)
+
+
+def stats_line(s):
+    rays = s["rays"]
+    kinds = ", ".join("%s %s" % (count(rays[k]), k) for k in ("camera", "shadow", "reflection", "refraction", "glossy")
+                      if rays[k] > 0)
+    frames = s["frames"][1] - s["frames"][0] + 1
+    size = "%d×%d" % (s["width"], s["height"]) + (", %d frames" % frames if frames > 1 else "")
+    return "%s in %.2f s on %d threads · %s rays (%s) · %.1f rays a pixel" % (
+        size, s["seconds"]["render"], s["threads"], count(rays["total"]), kinds, s["rays_per_pixel"])
+
+
+def figure(name, image, alt, caption, stats, width):
+    height = round(width * stats["height"] / stats["width"])
+    if stats.get("stereo") in ("side_by_side", "top_bottom"):
+        height *= 2 if stats["stereo"] == "top_bottom" else 1
+    return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d"></a>'
+            '<figcaption><strong>%s</strong><br><span class="stats">%s</span></figcaption></figure>') % (
+        name, image, image, html.escape(alt, quote=True), width, height, html.escape(caption),
+        html.escape(stats_line(stats)))
+
+
+def section_html(section, figures):
+    out = ['<section id="%s">' % section["id"], "<h2>%s</h2>" % html.escape(section["title"]),
+           "<p>%s</p>" % html.escape(section["what"]), '<p class="how">%s</p>' % html.escape(section["how"]),
+           '<p class="scene">Scene: <code>%s</code></p>' % html.escape(section["scene"])]
+    compare = section.get("compare")
+    if compare:
+        out.append('<div class="compare" data-compare>%s%s</div>' % (figures[compare[0]], figures[compare[1]]))
+    rest = [f for name, f in figures.items() if not compare or name not in compare]
+    if rest:
+        out.append('<div class="grid">%s</div>' % "".join(rest))
+    out.append("</section>")
+    return "\n".join(out)
+
+
+SLIDER_JS = """
+// Before/after sliders: the second image over the first, cut at the handle. Without JavaScript
+// the two figures stay side by side.
+document.querySelectorAll('[data-compare]').forEach(function (box) {
+  var figures = box.querySelectorAll('figure');
+  if (figures.length !== 2) return;
+  box.classList.add('slider');
+  var range = document.createElement('input');
+  range.type = 'range'; range.min = 0; range.max = 100; range.value = 50;
+  range.setAttribute('aria-label', 'Move to compare the two images');
+  var set = function () { figures[1].style.clipPath = 'inset(0 0 0 ' + range.value + '%)'; };
+  range.addEventListener('input', set);
+  box.appendChild(range);
+  set();
+});
+"""
+
+
+def write_site(out_dir, body_sections, nav):
+    page = """<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>rtcli: a ray tracer driven by data</title>
+<link rel="stylesheet" href="style.css">
+</head>
+<body>
+<header>
+<h1>rtcli</h1>
+<p>A ray tracer driven by data: scenes are JSON and glTF files, never code. Each objective of the
+proposal, how it is done, its test scene, and the comparisons it asks for; every image with what
+it cost to render.</p>
+<nav>%s</nav>
+</header>
+<main>
+%s
+</main>
+<footer><p>Generated by <code>tools/gallery.sh</code> from the scenes in <code>scenes/</code>.</p></footer>
+<script>%s</script>
+</body>
+</html>
+""" % (nav, "\n".join(body_sections), SLIDER_JS)
+    with open(os.path.join(out_dir, "index.html"), "w") as f:
+        f.write(page)
+    shutil.copy(os.path.join(os.path.dirname(os.path.abspath(__file__)), "style.css"), os.path.join(out_dir, "style.css"))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", required=True, help="the folder to write the site into")
+    parser.add_argument("--fast", action="store_true", help="small images and 4 frames: for tests")
+    parser.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
+    args = parser.parse_args()
+    images = os.path.join(args.out, "gallery")
+    os.makedirs(images, exist_ok=True)
+    body, nav = [], []
+    with tempfile.TemporaryDirectory() as scratch:
+        for section in SECTIONS:
+            figures = {}
+            for name, options, alt, caption in section["renders"]:
+                scene = section.get("scenes", {}).get(name, section["scene"])
+                gif = "--frames" in options
+                file = name + (".gif" if gif else ".png")
+                out = os.path.join(images, file)
+                stats = render(args.rtcli, scene, options, out, os.path.join(scratch, name + ".json"), args.fast)
+                if "--aa-debug" in options:  # show the refined pixels, drop the other two
+                    shutil.move(os.path.join(images, name + ".aa-refined.png"), out)
+                    os.remove(os.path.join(images, name + ".aa-depth.png"))
+                width = min(stats["width"], 800) if not gif else stats["width"]
+                figures[name] = figure(name, "gallery/" + file, alt, caption, stats, width)
+                print("rendered %s: %s" % (file, stats_line(stats)))
+            body.append(section_html(section, figures))
+            nav.append('<a href="#%s">%s</a>' % (section["id"], html.escape(section["title"])))
+    write_site(args.out, body, " ".join(nav))
+    print("wrote %s" % os.path.join(args.out, "index.html"))
+
+
+if __name__ == "__main__":
+    main()
