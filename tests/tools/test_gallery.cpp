@@ -50,3 +50,40 @@ TEST_CASE("gallery: --fast writes a self-contained page whose images and links a
   INFO(tidy.output);
   CHECK(tidy.code == 0);
 }
+
+TEST_CASE("gallery: in headless Chromium every image loads, every slider moves, nothing logs an error",
+          "[tools][gallery][browser]") {
+  if (rt::test::run_shell("command -v chromium >/dev/null").code != 0) {
+    WARN("chromium is not installed (tools/install-deps.sh installs it): the browser test is skipped");
+    return;
+  }
+  const std::string out = rt::test::output_path("gallery-browser");
+  fs::remove_all(out);
+  REQUIRE(rt::test::run_shell("'" + rt::test::source_path("tools/gallery.sh") + "' --fast --out '" + out +
+                              "' --rtcli '" + RTCLI_BINARY + "' >/dev/null 2>&1")
+              .code == 0);
+  const std::string chromium = "timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars ";
+  // tests/data/gallery/check.html loads the page in a frame, checks it and writes its verdict;
+  // the page's console messages (errors among them) go to stderr as "CONSOLE" lines.
+  const std::string check =
+      "file://" + rt::test::source_path("tests/data/gallery/check.html") + "?page=file://" + out + "/index.html";
+  const rt::test::Run r =
+      rt::test::run_shell(chromium + "--allow-file-access-from-files --enable-logging=stderr --v=0 --dump-dom '" +
+                          check + "' 2>'" + out + "/console.txt'");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("gallery-check: ok images="));
+  const std::string console = rt::test::read_file(out + "/console.txt");
+  INFO(console);
+  CHECK(console.find("CONSOLE") == std::string::npos);
+  // Screenshots at a desktop's width and a phone's, for a person to look at.
+  for (const auto& [name, size] :
+       {std::pair<const char*, const char*>{"desktop", "1280,2400"}, {"phone", "390,2400"}}) {
+    const std::string shot = out + "/screenshot-" + name + ".png";
+    const rt::test::Run s = rt::test::run_shell(chromium + "--window-size=" + size + " --screenshot='" + shot +
+                                                "' 'file://" + out + "/index.html' >/dev/null 2>&1");
+    CHECK(s.code == 0);
+    CHECK(fs::exists(shot));
+    CHECK(fs::file_size(shot) > 10000);
+  }
+}

@@ -99,6 +99,11 @@ document.querySelectorAll('[data-compare]').forEach(function (box) {
   var set = function () { figures[1].style.clipPath = 'inset(0 0 0 ' + range.value + '%)'; };
   range.addEventListener('input', set);
   box.appendChild(range);
+  // The two captions under the slider, left and right, instead of over each other.
+  var captions = document.createElement('div');
+  captions.className = 'slider-captions';
+  figures.forEach(function (f) { var c = f.querySelector('figcaption'); if (c) captions.appendChild(c); });
+  box.appendChild(captions);
   set();
 });
 """
