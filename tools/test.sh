@@ -15,7 +15,7 @@ case "$mode" in
   "" | --plain | --sanitize) ;;
   *) echo "usage: tools/test.sh [--plain | --sanitize]" >&2; exit 2 ;;
 esac
-"$root/tools/install-deps.sh"
+"$root/tools/install-deps.sh" --tests
 jobs="$(nproc)"
 
 plain() {
