@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "io/image/jpeg_file.h"
 #include "io/image/png_file.h"
 
 namespace rt {
@@ -37,9 +38,10 @@ std::optional<OutputKind> output_kind(const std::string& path, std::string& erro
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::string name = std::filesystem::path(path).filename().string();
   if (ext == ".gif") return OutputKind::kGif;
+  if (ext == ".jpg" || ext == ".jpeg") return OutputKind::kJpeg;
   if (ext == ".png") return name.find('#') != std::string::npos ? OutputKind::kPngSequence : OutputKind::kPng;
-  error =
-      "expected an output file name ending in .png (or frame_####.png, or .gif for animations), found \"" + path + "\"";
+  error = "expected an output file name ending in .png or .jpg (or frame_####.png, or .gif for animations), found \"" +
+          path + "\"";
   return std::nullopt;
 }
 
@@ -66,7 +68,8 @@ bool FrameSink::add(const Rgb8Image& image, int frame, std::string& error) {
   const size_t index = added_++;
   if (kind_ == OutputKind::kGif) return gif_->add_frame(image, delays_[std::min(index, delays_.size() - 1)], error);
   const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
-  if (!write_png(path, image, error, threads_)) return false;
+  if (kind_ == OutputKind::kJpeg ? !write_jpeg(path, image, error) : !write_png(path, image, error, threads_))
+    return false;
   written_.push_back(path);
   return true;
 }

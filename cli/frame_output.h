@@ -1,4 +1,4 @@
-// Where rendered frames go: one PNG, a numbered PNG sequence (Blender's convention: the run of
+// Where rendered frames go: one PNG (or JPEG), a numbered PNG sequence (Blender's convention: the run of
 // '#' in "frame_####.png" becomes the frame number, zero-padded to its length), or an animated
 // GIF. Also the command line's frame syntax.
 #pragma once
@@ -22,9 +22,9 @@ struct FrameRange {
 // "12" or "0-119" (also negative frames: "-5--1"); nothing for anything else or last < first.
 std::optional<FrameRange> parse_frame_range(const std::string& text);
 
-enum class OutputKind { kPng, kPngSequence, kGif };
+enum class OutputKind { kPng, kPngSequence, kGif, kJpeg };
 
-// What the file name asks for (.gif, or .png with or without a run of '#'), or an error.
+// What the file name asks for (.gif, .jpg or .jpeg, or .png with or without a run of '#'), or an error.
 std::optional<OutputKind> output_kind(const std::string& path, std::string& error);
 
 // "out/frame_####.png", 7 -> "out/frame_0007.png"; more digits than '#'s are written in full.

@@ -121,7 +121,7 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
     return std::nullopt;
   }
   r.kind = *kind;
-  if (asked->count() > 1 && r.kind == OutputKind::kPng) {
+  if (asked->count() > 1 && (r.kind == OutputKind::kPng || r.kind == OutputKind::kJpeg)) {
     std::fprintf(stderr,
                  "rtcli: error: %d frames need an animated GIF (-o NAME.gif) or numbered PNGs (-o NAME_####.png), "
                  "found \"%s\"\n",
@@ -145,7 +145,8 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
 FrameRange frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
   if (request.frames_given) return request.frames;
   const Timeline& t = loaded.graph.timeline;
-  if (request.kind != OutputKind::kPng && loaded.graph.animated) return FrameRange{t.first_frame, t.last_frame};
+  const bool one_image = request.kind == OutputKind::kPng || request.kind == OutputKind::kJpeg;
+  if (!one_image && loaded.graph.animated) return FrameRange{t.first_frame, t.last_frame};
   return FrameRange{loaded.frame, loaded.frame};
 }
 

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "io/image/image_header.h"
 #include "io/json/document.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
@@ -236,4 +237,22 @@ TEST_CASE("cli: --stats writes the render's figures as JSON", "[cli][stats]") {
   const Run bad = rtcli("render scenes/soft_shadows.json --width 40 --height 24 -o '" + png +
                         "' --stats /nonexistent-folder/stats.json");
   CHECK(bad.code == 2);
+}
+
+TEST_CASE("cli: -o NAME.jpg writes a JPEG of the image's size; frames need a GIF or numbered PNGs", "[cli][jpeg]") {
+  const std::string jpg = output_path("render.jpg");
+  fs::remove(jpg);
+  REQUIRE(rtcli("render scenes/primitives.json -q --width 64 --height 36 -o '" + jpg + "'").code == 0);
+  const std::string bytes = read_file(jpg);
+  REQUIRE(bytes.size() > 100);
+  std::string error;
+  const auto header = rt::read_image_header(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), error);
+  REQUIRE(header);
+  CHECK(std::string(rt::image_format_name(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) ==
+        "JPEG");
+  CHECK(header->width == 64u);
+  CHECK(header->height == 36u);
+  const Run r = rtcli("render scenes/turntable.json --frames 0-2 -o '" + output_path("frames.jpg") + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("need an animated GIF"));
 }

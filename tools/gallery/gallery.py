@@ -154,7 +154,10 @@ def main():
             for name, options, alt, caption in section["renders"]:
                 scene = section.get("scenes", {}).get(name, section["scene"])
                 gif = "--frames" in options
-                file = name + (".gif" if gif else ".png")
+                # The published page keeps large photographs as JPEG (docs/ stays small); the
+                # anti-aliasing debug image and fast renders stay PNG.
+                photo = not args.fast and "--aa-debug" not in options and scene_size(scene)[0] >= 640
+                file = name + (".gif" if gif else ".jpg" if photo else ".png")
                 out = os.path.join(images, file)
                 stats = render(args.rtcli, scene, options, out, os.path.join(scratch, name + ".json"), args.fast)
                 if "--aa-debug" in options:  # show the refined pixels, drop the other two

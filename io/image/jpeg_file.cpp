@@ -1,0 +1,72 @@
+// libjpeg reports a fatal error by calling error_exit, which must not return: it jumps back here
+// with longjmp, so nothing with a destructor is made between setjmp and the last libjpeg call.
+#include "io/image/jpeg_file.h"
+
+#include <csetjmp>
+#include <cstdio>
+#include <cstdlib>
+
+#include <jpeglib.h>
+
+#include "io/image/atomic_file.h"
+
+namespace rt {
+namespace {
+
+struct ErrorManager {
+  jpeg_error_mgr base;  // first: libjpeg sees a jpeg_error_mgr*
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+extern "C" void jump_out_of_encoder(j_common_ptr cinfo) {
+  auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
+  (*cinfo->err->format_message)(cinfo, manager->message);
+  std::longjmp(manager->jump, 1);
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_jpeg(const Rgb8Image& image, int quality, std::string& error) {
+  jpeg_compress_struct cinfo;
+  ErrorManager errors;
+  cinfo.err = jpeg_std_error(&errors.base);
+  errors.base.error_exit = jump_out_of_encoder;
+  errors.message[0] = '\0';
+  unsigned char* buffer = nullptr;  // libjpeg's, grown as it writes; freed with free()
+  unsigned long size = 0;
+  bool ok = false;
+  if (setjmp(errors.jump) == 0) {
+    jpeg_create_compress(&cinfo);
+    jpeg_mem_dest(&cinfo, &buffer, &size);
+    cinfo.image_width = static_cast<JDIMENSION>(image.width);
+    cinfo.image_height = static_cast<JDIMENSION>(image.height);
+    cinfo.input_components = 3;
+    cinfo.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&cinfo);
+    jpeg_set_quality(&cinfo, quality, TRUE);
+    jpeg_start_compress(&cinfo, TRUE);
+    const size_t stride = static_cast<size_t>(image.width) * 3;
+    while (cinfo.next_scanline < cinfo.image_height) {
+      // libjpeg takes non-const rows but only reads them.
+      JSAMPROW row = const_cast<JSAMPROW>(image.rgb.data() + cinfo.next_scanline * stride);
+      jpeg_write_scanlines(&cinfo, &row, 1);
+    }
+    jpeg_finish_compress(&cinfo);
+    ok = true;
+  }
+  jpeg_destroy_compress(&cinfo);
+  std::vector<uint8_t> out;
+  if (ok) out.assign(buffer, buffer + size);
+  else error = std::string("could not encode the JPEG: ") + errors.message;
+  std::free(buffer);
+  return out;
+}
+
+bool write_jpeg(const std::string& path, const Rgb8Image& image, std::string& error, int quality) {
+  const std::vector<uint8_t> bytes = encode_jpeg(image, quality, error);
+  if (bytes.empty()) return false;
+  return write_file_atomically(path, bytes, error);
+}
+
+}  // namespace rt
