@@ -170,9 +170,9 @@ TEST_CASE("cli: an output that cannot be written is refused before rendering", "
   Run r = rtcli("render scenes/default.json -o /no/such/folder/x.png");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("does not exist"));
-  r = rtcli("render scenes/default.json -o '" + output_path("image.jpg") + "'");
+  r = rtcli("render scenes/default.json -o '" + output_path("image.bmp") + "'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains(".png"));
+  CHECK_THAT(r.output, Catch::Contains(".png or .jpg"));
 }
 
 TEST_CASE("cli: bench runs on a small model", "[cli][bench]") {
