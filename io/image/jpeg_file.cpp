@@ -5,6 +5,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include <jpeglib.h>
 
@@ -25,20 +26,19 @@ extern "C" void jump_out_of_encoder(j_common_ptr cinfo) {
   std::longjmp(manager->jump, 1);
 }
 
-}  // namespace
-
-std::vector<uint8_t> encode_jpeg(const Rgb8Image& image, int quality, std::string& error) {
+// The libjpeg part alone, with no C++ object that longjmp could skip: false with `message` filled
+// on an error. `buffer` is libjpeg's (grown as it writes; the caller frees it with free()).
+bool compress(const Rgb8Image& image, int quality, unsigned char** buffer, unsigned long* size,
+              char (&message)[JMSG_LENGTH_MAX]) {
   jpeg_compress_struct cinfo;
   ErrorManager errors;
   cinfo.err = jpeg_std_error(&errors.base);
   errors.base.error_exit = jump_out_of_encoder;
   errors.message[0] = '\0';
-  unsigned char* buffer = nullptr;  // libjpeg's, grown as it writes; freed with free()
-  unsigned long size = 0;
-  bool ok = false;
+  volatile bool ok = false;
   if (setjmp(errors.jump) == 0) {
     jpeg_create_compress(&cinfo);
-    jpeg_mem_dest(&cinfo, &buffer, &size);
+    jpeg_mem_dest(&cinfo, buffer, size);
     cinfo.image_width = static_cast<JDIMENSION>(image.width);
     cinfo.image_height = static_cast<JDIMENSION>(image.height);
     cinfo.input_components = 3;
@@ -56,9 +56,19 @@ std::vector<uint8_t> encode_jpeg(const Rgb8Image& image, int quality, std::strin
     ok = true;
   }
   jpeg_destroy_compress(&cinfo);
+  std::memcpy(message, errors.message, sizeof message);
+  return ok;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_jpeg(const Rgb8Image& image, int quality, std::string& error) {
+  unsigned char* buffer = nullptr;
+  unsigned long size = 0;
+  char message[JMSG_LENGTH_MAX];
   std::vector<uint8_t> out;
-  if (ok) out.assign(buffer, buffer + size);
-  else error = std::string("could not encode the JPEG: ") + errors.message;
+  if (compress(image, quality, &buffer, &size, message)) out.assign(buffer, buffer + size);
+  else error = std::string("could not encode the JPEG: ") + message;
   std::free(buffer);
   return out;
 }
