@@ -6,54 +6,35 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
-#include <jpeglib.h>
-
+#include "io/image/jpeg_errors.h"
 #include "io/image/png_jpeg_decoder.h"
 
 namespace rt {
 namespace {
 
-struct ErrorManager {
-  jpeg_error_mgr base;  // first: libjpeg sees a jpeg_error_mgr*
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX];
-};
-
-extern "C" void jump_out(j_common_ptr cinfo) {
-  auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
-  (*cinfo->err->format_message)(cinfo, manager->message);
-  std::longjmp(manager->jump, 1);
-}
-
 extern "C" void stay_quiet(j_common_ptr, int) {}
 
-}  // namespace
-
-std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
-                                        int channels, std::string& error) {
-  const size_t width = header.width, height = header.height, out = static_cast<size_t>(channels);
-  auto* pixels = static_cast<unsigned char*>(std::malloc(width * height * out));
-  auto* row = static_cast<unsigned char*>(std::malloc(width * 4));  // one scanline, up to 4 components
-  if (!pixels || !row) {
-    std::free(pixels);
-    std::free(row);
-    throw std::bad_alloc();
-  }
+// The libjpeg part alone, with no C++ object that longjmp could skip: false with `message` filled
+// on an error; `size_differs` when libjpeg reads another size than the header's.
+bool decompress(const unsigned char* bytes, size_t size, const ImageHeader& header, size_t out, unsigned char* pixels,
+                unsigned char* row, bool* size_differs, char (&message)[JMSG_LENGTH_MAX]) {
+  const size_t width = header.width;
   jpeg_decompress_struct cinfo;
-  ErrorManager errors;
+  JpegErrorManager errors;
   cinfo.err = jpeg_std_error(&errors.base);
-  errors.base.error_exit = jump_out;
+  errors.base.error_exit = rt_jpeg_jump_out;
   errors.base.emit_message = stay_quiet;
   errors.message[0] = '\0';
-  bool size_differs = false;
+  volatile bool ok = false;
   if (setjmp(errors.jump) == 0) {
     jpeg_create_decompress(&cinfo);
     jpeg_mem_src(&cinfo, bytes, static_cast<unsigned long>(size));
     jpeg_read_header(&cinfo, TRUE);
-    size_differs = cinfo.image_width != header.width || cinfo.image_height != header.height;
-    if (!size_differs) {
+    *size_differs = cinfo.image_width != header.width || cinfo.image_height != header.height;
+    if (!*size_differs) {
       // CMYK and YCCK (Adobe's, stored inverted) come out as CMYK; the rest as RGB.
       const bool cmyk = cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK;
       cinfo.out_color_space = cmyk ? JCS_CMYK : JCS_RGB;
@@ -70,18 +51,34 @@ std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size,
       }
       jpeg_finish_decompress(&cinfo);
     }
-    jpeg_destroy_decompress(&cinfo);
-  } else {
-    jpeg_destroy_decompress(&cinfo);
+    ok = true;
+  }
+  jpeg_destroy_decompress(&cinfo);
+  std::memcpy(message, errors.message, sizeof message);
+  return ok;
+}
+
+}  // namespace
+
+std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                        int channels, std::string& error) {
+  const size_t width = header.width, height = header.height, out = static_cast<size_t>(channels);
+  auto* pixels = static_cast<unsigned char*>(std::malloc(width * height * out));
+  auto* row = static_cast<unsigned char*>(std::malloc(width * 4));  // one scanline, up to 4 components
+  if (!pixels || !row) {
     std::free(pixels);
     std::free(row);
-    error = errors.message[0] ? errors.message : "libjpeg gave no reason";
-    return std::nullopt;
+    throw std::bad_alloc();
   }
+  bool size_differs = false;
+  char message[JMSG_LENGTH_MAX];
+  const bool ok = decompress(bytes, size, header, out, pixels, row, &size_differs, message);
   std::free(row);
-  if (size_differs) {
+  if (!ok || size_differs) {
     std::free(pixels);
-    error = "libjpeg reads a size other than the header's " + std::to_string(width) + " x " + std::to_string(height);
+    if (!ok) error = message[0] ? message : "libjpeg gave no reason";
+    else
+      error = "libjpeg reads a size other than the header's " + std::to_string(width) + " x " + std::to_string(height);
     return std::nullopt;
   }
   DecodedImage image;

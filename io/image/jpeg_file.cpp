@@ -1,5 +1,4 @@
-// libjpeg reports a fatal error by calling error_exit, which must not return: it jumps back here
-// with longjmp, so nothing with a destructor is made between setjmp and the last libjpeg call.
+// libjpeg's fatal errors jump back to compress() (io/image/jpeg_errors.h).
 #include "io/image/jpeg_file.h"
 
 #include <csetjmp>
@@ -7,33 +6,20 @@
 #include <cstdlib>
 #include <cstring>
 
-#include <jpeglib.h>
-
 #include "io/image/atomic_file.h"
+#include "io/image/jpeg_errors.h"
 
 namespace rt {
 namespace {
-
-struct ErrorManager {
-  jpeg_error_mgr base;  // first: libjpeg sees a jpeg_error_mgr*
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX];
-};
-
-extern "C" void jump_out_of_encoder(j_common_ptr cinfo) {
-  auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
-  (*cinfo->err->format_message)(cinfo, manager->message);
-  std::longjmp(manager->jump, 1);
-}
 
 // The libjpeg part alone, with no C++ object that longjmp could skip: false with `message` filled
 // on an error. `buffer` is libjpeg's (grown as it writes; the caller frees it with free()).
 bool compress(const Rgb8Image& image, int quality, unsigned char** buffer, unsigned long* size,
               char (&message)[JMSG_LENGTH_MAX]) {
   jpeg_compress_struct cinfo;
-  ErrorManager errors;
+  JpegErrorManager errors;
   cinfo.err = jpeg_std_error(&errors.base);
-  errors.base.error_exit = jump_out_of_encoder;
+  errors.base.error_exit = rt_jpeg_jump_out;
   errors.message[0] = '\0';
   volatile bool ok = false;
   if (setjmp(errors.jump) == 0) {
