@@ -12,6 +12,7 @@
 #include "cli/suggestions.h"
 #include "cli/validate_command.h"
 #include "core/render_settings.h"
+#include "core/stereo.h"
 
 int main(int argc, char** argv) {
   using namespace rt;
@@ -84,7 +85,7 @@ int main(int argc, char** argv) {
       ->add_option("--stereo", render.stereo,
                    "Stereo from the camera's two eyes: anaglyph (red-cyan), side_by_side, top_bottom, pair (NAME-left "
                    "and NAME-right), or none (replaces the scene's camera.stereo mode)")
-      ->check(CLI::IsMember({"none", "anaglyph", "side_by_side", "top_bottom", "pair"}));
+      ->check(CLI::IsMember(std::vector<std::string>(kStereoModeNames.begin(), kStereoModeNames.end())));
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   const char* outside_help =
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "

@@ -272,8 +272,8 @@ void print_summary(const RenderCommand& cmd, const RenderSettings& settings, con
 std::optional<StereoSettings> stereo_settings(const RenderCommand& cmd, const Camera& camera) {
   StereoSettings s = camera.stereo;
   if (cmd.stereo) {
-    const std::vector<std::string> modes = {"none", "anaglyph", "side_by_side", "top_bottom", "pair"};
-    s.mode = static_cast<StereoMode>(std::find(modes.begin(), modes.end(), *cmd.stereo) - modes.begin());
+    const auto& names = kStereoModeNames;
+    s.mode = static_cast<StereoMode>(std::find(names.begin(), names.end(), *cmd.stereo) - names.begin());
   }
   if (s.enabled() && camera.projection == CameraProjection::kOrthographic) {
     std::fprintf(stderr,

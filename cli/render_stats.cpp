@@ -11,7 +11,6 @@ std::string render_stats_json(const RenderStatsInput& in) {
   Json rays = Json::object();
   for (size_t k = 0; k < kRayKindCount; ++k) rays[kRayKindNames[k]] = t.rays.count[k];
   rays["total"] = t.rays.total();
-  const char* stereo_modes[] = {"none", "anaglyph", "side_by_side", "top_bottom", "pair"};
   const Json out = {
       {"rtcli", RTCLI_VERSION},
       {"scene", in.scene},
@@ -19,7 +18,7 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"width", in.settings.width},
       {"height", in.settings.height},
       {"frames", {in.frames.first, in.frames.last}},
-      {"stereo", stereo_modes[static_cast<size_t>(in.stereo.mode)]},
+      {"stereo", kStereoModeNames[static_cast<size_t>(in.stereo.mode)]},
       {"eyes", t.passes},
       {"threads", t.last.threads},
       {"seed", in.settings.seed},

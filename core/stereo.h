@@ -3,6 +3,7 @@
 // with Camera::eye_camera and core/render/stereo_images.h puts the two images together.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/math.h"
@@ -10,6 +11,9 @@
 namespace rt {
 
 enum class StereoMode : uint8_t { kNone, kAnaglyph, kSideBySide, kTopBottom, kPair };
+// Their names in scene files, --stereo and --stats, in StereoMode order.
+inline constexpr std::array<const char*, 5> kStereoModeNames = {"none", "anaglyph", "side_by_side", "top_bottom",
+                                                                "pair"};
 enum class AnaglyphKind : uint8_t { kDubois, kColor };
 
 struct StereoSettings {

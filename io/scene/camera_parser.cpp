@@ -8,7 +8,8 @@ constexpr NumberRule kFisheyeFieldOfView{0, 360, true, false, false};
 constexpr NumberRule kShift{-10, 10, false, false, false};
 constexpr NumberRule kLatitude{0, 90, false, false, false};
 const std::vector<std::string> kProjections = {"perspective", "orthographic", "fisheye", "equirectangular"};
-const std::vector<std::string> kStereoModes = {"anaglyph", "side_by_side", "top_bottom", "pair"};
+// A scene names a mode to turn stereo on: every name but "none".
+const std::vector<std::string> kStereoModes(kStereoModeNames.begin() + 1, kStereoModeNames.end());
 const std::vector<std::string> kAnaglyphs = {"dubois", "color"};
 
 void parse_stereo(const JsonReader& r, const Json& v, const std::string& ptr, CameraDescription& c) {
