@@ -2,7 +2,7 @@
 # Renders every scene of the gallery and writes the static site (tools/gallery/gallery.py).
 #   tools/gallery.sh            the published page: docs/index.html, docs/style.css, docs/gallery/
 #   tools/gallery.sh --fast     small images into a temporary folder (what the tests run); never docs/
-#   tools/gallery.sh --fast --out DIR [--rtcli PATH]   (PATH: the binary to render with; default build/rtcli)
+#   tools/gallery.sh --fast --out DIR [--rtcli PATH]   (PATH: the rtcli to render with, the thumbnail tool beside it; default build/rtcli)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 fast=() out="" rtcli=()
@@ -18,5 +18,5 @@ done
 if [ -z "$out" ]; then
   if [ ${#fast[@]} -gt 0 ]; then out="$(mktemp -d)"; else out="$root/docs"; fi
 fi
-[ ${#rtcli[@]} -gt 0 ] || [ -x "$root/build/rtcli" ] || "$root/tools/build.sh"
+[ ${#rtcli[@]} -gt 0 ] || { [ -x "$root/build/rtcli" ] && [ -x "$root/build/thumbnail" ]; } || "$root/tools/build.sh"
 python3 "$root/tools/gallery/gallery.py" --out "$out" "${fast[@]}" "${rtcli[@]}"

@@ -37,8 +37,18 @@ TEST_CASE("gallery: --fast writes a self-contained page whose images and links a
   // Every image has alt text, and its statistics under it.
   for (size_t at = page.find("<img "); at != std::string::npos; at = page.find("<img ", at + 1), ++images)
     CHECK(page.substr(at, page.find('>', at) - at).find("alt=\"") != std::string::npos);
-  CHECK(images >= 25);
+  CHECK(images >= 34);  // every render of every section
   CHECK(page.find("rays a pixel") != std::string::npos);
+  // Wide renders are shown as thumbnails linking to the full image; each has its stats JSON beside it.
+  CHECK(page.find("<a href=\"gallery/toys.png\"><img src=\"gallery/toys-small.png\"") != std::string::npos);
+  CHECK(fs::file_size(out + "/gallery/toys-small.png") < fs::file_size(out + "/gallery/toys.png"));
+  const std::string stats = rt::test::read_file(out + "/gallery/toys.json");
+  CHECK(stats.find("\"outputs\": [\n    \"toys.png\"") != std::string::npos);
+  CHECK(stats.find("\"camera\":") != std::string::npos);
+  // Each texture projection and filter, and glossy at several widths.
+  for (const char* name : {"projection-uv", "projection-planar", "projection-spherical", "projection-cylindrical",
+                           "filter-nearest", "filter-bilinear", "filter-trilinear", "glossy-0", "glossy-0.3"})
+    CHECK(page.find(std::string("id=\"fig-") + name + "\"") != std::string::npos);
   // Sliders where the proposal compares two renders.
   CHECK(page.find("data-compare") != std::string::npos);
   // Valid HTML: tidy (tools/install-deps.sh installs it) reports neither errors nor warnings.

@@ -31,7 +31,7 @@ def scene_size(scene):
 
 
 def render(rtcli, scene, options, out, stats, fast):
-    args = [rtcli, "render", os.path.join(ROOT, scene), "-q", "-o", out, "--stats", stats] + shlex.split(options)
+    args = [rtcli, "render", scene, "-q", "-o", out, "--stats", stats] + shlex.split(options)
     if fast:
         w, h = scene_size(scene)
         scale = 160.0 / w
@@ -62,26 +62,53 @@ def stats_line(s):
         size, s["seconds"]["render"], s["threads"], count(rays["total"]), kinds, s["rays_per_pixel"])
 
 
-def figure(name, image, alt, caption, stats, width):
+def figure(name, image, full, alt, caption, stats, width):
     height = round(width * stats["height"] / stats["width"])
     if stats.get("stereo") in ("side_by_side", "top_bottom"):
         height *= 2 if stats["stereo"] == "top_bottom" else 1
     return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d"></a>'
-            '<figcaption><strong>%s</strong><br><span class="stats">%s</span></figcaption></figure>') % (
-        name, image, image, html.escape(alt, quote=True), width, height, html.escape(caption),
-        html.escape(stats_line(stats)))
+            '<figcaption><strong>%s</strong><br><span class="stats">%s · <a href="gallery/%s.json">stats</a>'
+            '</span></figcaption></figure>') % (
+        name, full, image, html.escape(alt, quote=True), width, height, html.escape(caption),
+        html.escape(stats_line(stats)), name)
 
 
-def section_html(section, figures):
+def publish(tools, rendered, images, name, photo, display_width, stats):
+    """Puts the render from the scratch folder into gallery/: as JPEG when it is a photograph, with
+    a thumbnail DISPLAY_WIDTH across when it is wider. Returns (shown file, full-size file)."""
+    ext = ".jpg" if photo else ".png"
+    full = name + ext
+    if photo:
+        subprocess.run([tools["thumbnail"], rendered, os.path.join(images, full)], check=True, stdout=subprocess.DEVNULL)
+    else:
+        shutil.copy(rendered, os.path.join(images, full))
+    if stats["width"] <= display_width:
+        return full, full
+    small = name + "-small" + ext
+    subprocess.run([tools["thumbnail"], rendered, os.path.join(images, small), str(display_width)], check=True,
+                   stdout=subprocess.DEVNULL)
+    return small, full
+
+
+def section_html(section, figures, widths):
+    scenes = [section["scene"]]
+    for scene in section.get("scenes", {}).values():
+        if scene not in scenes:
+            scenes.append(scene)
     out = ['<section id="%s">' % section["id"], "<h2>%s</h2>" % html.escape(section["title"]),
            "<p>%s</p>" % html.escape(section["what"]), '<p class="how">%s</p>' % html.escape(section["how"]),
-           '<p class="scene">Scene: <code>%s</code></p>' % html.escape(section["scene"])]
+           '<p class="scene">%s: %s</p>' % ("Scenes" if len(scenes) > 1 else "Scene",
+                                            ", ".join("<code>%s</code>" % html.escape(s) for s in scenes))]
     compare = section.get("compare")
-    if compare:
-        out.append('<div class="compare" data-compare>%s%s</div>' % (figures[compare[0]], figures[compare[1]]))
     rest = [f for name, f in figures.items() if not compare or name not in compare]
-    if rest:
-        out.append('<div class="grid">%s</div>' % "".join(rest))
+    grid = ['<div class="grid">%s</div>' % "".join(rest)] if rest else []
+    if compare:
+        # The slider is as wide as its images, so the cut falls where the handle is.
+        slider = '<div class="compare" data-compare style="--width: %dpx">%s%s</div>' % (
+            widths[compare[0]], figures[compare[0]], figures[compare[1]])
+        # First when it compares the section's first render; after the other renders otherwise.
+        grid = [slider] + grid if compare[0] == section["renders"][0][0] else grid + [slider]
+    out += grid
     out.append("</section>")
     return "\n".join(out)
 
@@ -146,27 +173,45 @@ def main():
     parser.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
     args = parser.parse_args()
     images = os.path.join(args.out, "gallery")
-    os.makedirs(images, exist_ok=True)
+    shutil.rmtree(images, ignore_errors=True)  # what the sections no longer render goes too
+    os.makedirs(images)
     body, nav = [], []
+    # The thumbnail tool is built beside rtcli (tools/CMakeLists.txt).
+    tools = {"thumbnail": os.path.join(os.path.dirname(os.path.abspath(args.rtcli)), "thumbnail")}
+    display_width = 120 if args.fast else 800
     with tempfile.TemporaryDirectory() as scratch:
         for section in SECTIONS:
-            figures = {}
+            figures, widths = {}, {}
             for name, options, alt, caption in section["renders"]:
                 scene = section.get("scenes", {}).get(name, section["scene"])
-                gif = "--frames" in options
-                # The published page keeps large photographs as JPEG (docs/ stays small); the
-                # anti-aliasing debug image and fast renders stay PNG.
-                photo = not args.fast and "--aa-debug" not in options and scene_size(scene)[0] >= 640
-                file = name + (".gif" if gif else ".jpg" if photo else ".png")
-                out = os.path.join(images, file)
-                stats = render(args.rtcli, scene, options, out, os.path.join(scratch, name + ".json"), args.fast)
-                if "--aa-debug" in options:  # show the refined pixels, drop the other two
-                    shutil.move(os.path.join(images, name + ".aa-refined.png"), out)
-                    os.remove(os.path.join(images, name + ".aa-depth.png"))
-                width = min(stats["width"], 800) if not gif else stats["width"]
-                figures[name] = figure(name, "gallery/" + file, alt, caption, stats, width)
+                stats_file = os.path.join(images, name + ".json")
+                if "--frames" in options:  # an animation: the GIF as it is, shown full size
+                    file = name + ".gif"
+                    stats = render(args.rtcli, scene, options, os.path.join(images, file), stats_file, args.fast)
+                    widths[name] = stats["width"]
+                    figures[name] = figure(name, "gallery/" + file, "gallery/" + file, alt, caption, stats,
+                                           widths[name])
+                else:
+                    rendered = os.path.join(scratch, name + ".png")
+                    stats = render(args.rtcli, scene, options, rendered, stats_file, args.fast)
+                    if "--aa-debug" in options:  # show the refined pixels
+                        rendered = os.path.join(scratch, name + ".aa-refined.png")
+                    # The published page keeps photographs as JPEG (docs/ stays small); the
+                    # anti-aliasing debug image and fast renders stay PNG.
+                    photo = not args.fast and "--aa-debug" not in options and stats["width"] >= 640
+                    shown, file = publish(tools, rendered, images, name, photo, display_width, stats)
+                    widths[name] = min(stats["width"], display_width)
+                    if name in section.get("compare", ()) and 2 * stats["width"] <= display_width:
+                        widths[name] = 2 * stats["width"]  # small renders compared: shown at 2x, pixels sharp
+                    figures[name] = figure(name, "gallery/" + shown, "gallery/" + file, alt, caption, stats,
+                                           widths[name])
+                # The statistics as published: the file they describe, no paths of this machine.
+                stats["outputs"] = [file]
+                with open(stats_file, "w") as f:
+                    json.dump(stats, f, indent=2)
+                    f.write("\n")
                 print("rendered %s: %s" % (file, stats_line(stats)))
-            body.append(section_html(section, figures))
+            body.append(section_html(section, figures, widths))
             nav.append('<a href="#%s">%s</a>' % (section["id"], html.escape(section["title"])))
     write_site(args.out, body, " ".join(nav))
     print("wrote %s" % os.path.join(args.out, "index.html"))

@@ -4,11 +4,20 @@ A section is a dict:
   id, title        the anchor and the heading
   what, how        a sentence on what it is, and how rtcli does it (the proposal's formula)
   scene            the scene file it renders (its "test scene")
+  scenes           optional {name: scene}: renders of another scene (a variant from tools/make_gallery_scenes.py)
   renders          [(name, rtcli render options, alt text, caption)]: each becomes NAME.png
                    (or NAME.gif when the options ask for frames), with its render statistics
   compare          optional (name A, name B): shown as a before/after slider
 A later capability adds its own section by adding a scene and a dict here (README, "The gallery").
 """
+
+PROJECTIONS = [("uv", "mapped by each shape's own coordinates", "uv: each shape's own coordinates"),
+               ("planar", "projected flat along the axis", "planar: straight through along z"),
+               ("spherical", "projected by longitude and latitude", "spherical: longitude and latitude"),
+               ("cylindrical", "projected by longitude and height", "cylindrical: longitude and height")]
+FILTERS = [("nearest", "aliased far away", "Nearest texel"),
+           ("bilinear", "blurred near, still shimmering far away", "Bilinear: four texels, one level"),
+           ("trilinear", "smooth into the distance", "Trilinear (mip-mapped)")]
 
 SECTIONS = [
     {"id": "primitives", "title": "1. Primitives",
@@ -56,8 +65,11 @@ SECTIONS = [
      "how": "r' = r + iU + jV, i and j stratified over [−a/2, a/2], in a Hughes–Möller basis around r.",
      "scene": "scenes/glossy.json",
      "renders": [("glossy-off", "--no-glossy", "Mirror-sharp reflections", "Off: perfect mirrors"),
-                 ("glossy-on", "", "Blurred glossy reflections of several widths", "On: widths growing to the right")],
-     "compare": ("glossy-off", "glossy-on")},
+                 ("glossy-on", "", "Blurred glossy reflections of several widths", "On: widths growing to the right")]
+                + [("glossy-%s" % a, "", "A polished slab reflecting three blocks, lobe width %s" % a, "a = %s" % a)
+                   for a in ("0", "0.05", "0.15", "0.3")],
+     "compare": ("glossy-off", "glossy-on"),
+     "scenes": {"glossy-%s" % a: "scenes/gallery/glossy_%s.json" % a for a in ("0", "0.05", "0.15", "0.3")}},
     {"id": "soft-shadows", "title": "7. Soft shadows",
      "what": "A rectangular light, corner C with edges W and H; shadow rays to C + ξ₁W + ξ₂H; the fraction that "
              "gets through gives the penumbra.",
@@ -72,13 +84,14 @@ SECTIONS = [
      "what": "An image as the diffuse colour, with UVs per shape and planar, spherical and cylindrical projections.",
      "how": "Bilinear filtering of the four texels around a point, mip-mapped (trilinear) by each ray's cone.",
      "scene": "scenes/textures.json",
-     "renders": [("textures", "", "Every shape textured, natural and projected", "Natural UVs and projections"),
-                 ("filter-nearest", "--texture-filter nearest", "A receding checkered plane, aliased far away",
-                  "Nearest texel"),
-                 ("filter-trilinear", "--texture-filter trilinear", "The same plane, smooth into the distance",
-                  "Trilinear (mip-mapped)")],
+     "renders": [("textures", "", "Every shape textured, natural and projected", "Natural UVs and projections")]
+                + [("projection-%s" % p, "", "A sphere, cube and cylinder with a UV grid, %s" % what, caption)
+                   for p, what, caption in PROJECTIONS]
+                + [("filter-%s" % f, "--texture-filter %s" % f, "A receding checkered plane, %s" % what, caption)
+                   for f, what, caption in FILTERS],
      "compare": ("filter-nearest", "filter-trilinear"),
-     "scenes": {"filter-nearest": "scenes/receding_plane.json", "filter-trilinear": "scenes/receding_plane.json"}},
+     "scenes": dict([("projection-%s" % p, "scenes/gallery/projection_%s.json" % p) for p, _, _ in PROJECTIONS]
+                    + [("filter-%s" % f, "scenes/receding_plane.json") for f, _, _ in FILTERS])},
     {"id": "bumps", "title": "9. Bump mapping",
      "what": "A height map B perturbs the normal: N' = N + Bu(N × Ov) − Bv(N × Ou), Bu and Bv by central "
              "differences (Blinn).",
