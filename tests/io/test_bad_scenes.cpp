@@ -95,7 +95,7 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
 
 TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint and no warning", "[io][schema]") {
   int checked = 0;
-  for (const char* folder : {"scenes", "scenes/models", "scenes/toys", "tests/data"}) {
+  for (const char* folder : {"scenes", "scenes/models", "scenes/toys", "scenes/gallery", "tests/data"}) {
     for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path(folder))) {
       const std::string ext = entry.path().extension().string();
       if (ext != ".json" && ext != ".glb" && ext != ".gltf") continue;

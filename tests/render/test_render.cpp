@@ -143,7 +143,7 @@ TEST_CASE("golden image: CSG (a lens, a die, a hollow sphere, merge beside union
 TEST_CASE("every scene in scenes/ loads and renders", "[render][scenes]") {
   int scenes = 0;
   std::vector<std::filesystem::path> files;
-  for (const char* folder : {"scenes", "scenes/toys"})
+  for (const char* folder : {"scenes", "scenes/toys", "scenes/gallery"})
     for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path(folder)))
       files.push_back(entry.path());
   for (const std::filesystem::path& path : files) {
