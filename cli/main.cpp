@@ -110,6 +110,12 @@ int main(int argc, char** argv) {
                         "Mesh to trace (.glb/.gltf/.json; default: a generated 300k-triangle mesh)");
   bench_cmd->add_option("--scene", bench.scene, "Scene whose render time is measured last ('' to skip)")
       ->capture_default_str();
+  bench_cmd->add_option("--repeats", bench.repeats, "Timed runs of each figure, after a warm-up; the median is shown")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  bench_cmd->add_option("--rays", bench.rays, "Replay the ray sets in FILE (from --save-rays) instead of generating them");
+  bench_cmd->add_option("--save-rays", bench.save_rays,
+                        "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
 
   try {
     app.parse(argc, argv);

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/bench/generated_mesh.h"
+#include "cli/bench/bench_model.h"
 #include "cli/bench/ray_benchmark.h"
 #include "cli/bench/render_benchmark.h"
 #include "cli/exit_codes.h"
@@ -16,55 +16,85 @@
 namespace rt {
 namespace {
 
-constexpr size_t kGeneratedTriangles = 300'000;
+// "12.345 [12.001-12.500]": a median with its range.
+std::string with_range(double median, double lo, double hi, const char* format) {
+  char text[96];
+  const std::string f = std::string(format) + " [" + format + "-" + format + "]";
+  std::snprintf(text, sizeof text, f.c_str(), median, lo, hi);
+  return text;
+}
+
+void print_ray_table(const std::vector<RayBenchmarkResult>& results, const std::vector<double>& cold) {
+  std::printf("\n%-28s", "");
+  for (const auto& r : results)
+    std::printf("  %-30s", (std::to_string(r.threads) + (r.threads == 1 ? " thread" : " threads")).c_str());
+  if (results.size() > 1) std::printf("scaling");
+  std::printf("\n%-28s", "BVH build, cold (ms)");
+  for (const double c : cold) {
+    char text[32] = "n/a (no child process)";
+    if (c >= 0) std::snprintf(text, sizeof text, "%.1f", 1e3 * c);
+    std::printf("  %-30s", text);
+  }
+  if (results.size() > 1 && cold.front() > 0 && cold.back() > 0) std::printf("%.2fx", cold.front() / cold.back());
+  std::printf("\n%-28s", "BVH build, warm (ms)");
+  for (const auto& r : results)
+    std::printf("  %-30s", with_range(1e3 * r.build.median, 1e3 * r.build.min, 1e3 * r.build.max, "%.1f").c_str());
+  if (results.size() > 1) std::printf("%.2fx", results.front().build.median / results.back().build.median);
+  std::printf("\n");
+  for (size_t s = 0; s < results.front().sets.size(); ++s) {
+    const SetThroughput& first = results.front().sets[s];
+    std::printf("%-28s", (first.name + " (Mray/s)").c_str());
+    for (const auto& r : results) {
+      const SetThroughput& t = r.sets[s];
+      std::printf("  %-30s", with_range(t.mrays(), t.mrays_slowest(), t.mrays_fastest(), "%.2f").c_str());
+    }
+    if (results.size() > 1) std::printf("%.2fx", results.back().sets[s].mrays() / first.mrays());
+    std::printf("\n");
+  }
+}
 
 }  // namespace
 
 int run_bench(const BenchCommand& cmd) {
-  PrimitiveSet prims;
-  std::string what;
-  if (cmd.model.empty()) {
-    prims = make_primitive_set({make_benchmark_mesh(kGeneratedTriangles)}, {});
-    what = "generated displaced sphere";
-  } else {
-    Diagnostics diags;
-    const auto loaded = load_scene(cmd.model, cli_load_options(), diags);
-    print_diagnostics(stderr, diags);
-    if (!loaded) return kExitBadInput;
-    prims = make_primitive_set(loaded->scene.world_meshes(), loaded->scene.bvh.shapes());
-    what = cmd.model;
+  // A ray file is read first: a bad one is reported before anything slow.
+  std::vector<RaySet> sets;
+  std::string error;
+  if (!cmd.rays.empty() && !read_ray_sets(cmd.rays, sets, error)) {
+    std::fprintf(stderr, "rtcli bench: error: %s\n", error.c_str());
+    return kExitBadInput;
   }
+  Diagnostics model_diags;
+  const auto model = load_bench_model(cmd.model, model_diags);
+  print_diagnostics(stderr, model_diags);
+  if (!model) return kExitBadInput;
+  const PrimitiveSet& prims = model->prims;
   const unsigned all = resolve_thread_count(0);
-  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", what.c_str(),
-              prims.triangles.size(), prims.shapes.size(), all);
-  std::fflush(stdout);
-
   std::vector<unsigned> thread_counts{1};
   if (all > 1) thread_counts.push_back(all);
-  std::vector<RayBenchmarkResult> results;
-  for (const unsigned t : thread_counts) results.push_back(run_ray_benchmark(prims, t));
+  // Cold builds first, each in a fresh process: nothing built here yet has warmed the memory.
+  std::vector<double> cold;
+  for (const unsigned t : thread_counts) cold.push_back(cold_build_seconds(prims, t));
 
-  std::printf("\n%-34s", "");
-  for (const auto& r : results) std::printf("%10u thread%s", r.threads, r.threads == 1 ? " " : "s");
-  if (results.size() > 1) std::printf("   scaling");
-  std::printf("\n");
-  const auto row = [&](const char* label, double RayBenchmarkResult::*field, const char* unit, bool higher_is_better) {
-    std::printf("%-34s", label);
-    for (const auto& r : results) std::printf("%10.3f %-7s", r.*field, unit);
-    if (results.size() > 1) {
-      const double a = results.front().*field, b = results.back().*field;
-      std::printf("%8.2fx", higher_is_better ? b / a : a / b);
-    }
-    std::printf("\n");
-  };
-  row("BVH build", &RayBenchmarkResult::build_seconds, "s", false);
-  row("primary rays (1920x1080)", &RayBenchmarkResult::primary_mrays, "Mray/s", true);
-  row("incoherent rays (2M)", &RayBenchmarkResult::incoherent_mrays, "Mray/s", true);
-  row("shadow rays (any hit)", &RayBenchmarkResult::shadow_mrays, "Mray/s", true);
+  if (cmd.rays.empty()) sets = make_ray_sets(prims);
+  if (!cmd.save_rays.empty() && !write_ray_sets(cmd.save_rays, sets, error)) {
+    std::fprintf(stderr, "rtcli bench: error: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", model->name.c_str(),
+              prims.triangles.size(), prims.shapes.size(), all);
+  std::printf("rays: %s:", cmd.rays.empty() ? "generated" : cmd.rays.c_str());
+  for (const RaySet& s : sets) std::printf(" %s %zu%s", s.name.c_str(), s.rays.size(), s.occlusion ? " (any hit)" : "");
+  std::printf("\neach figure: the median of %d runs after a warm-up [slowest-fastest]\n", cmd.repeats);
+  std::fflush(stdout);
+
+  std::vector<RayBenchmarkResult> results;
+  for (const unsigned t : thread_counts) results.push_back(run_ray_benchmark(prims, sets, t, cmd.repeats));
+  print_ray_table(results, cold);
   const RayBenchmarkResult& r0 = results.front();
-  std::printf("BVH: %zu nodes, SAH cost %.1f; hit fractions: primary %.2f, incoherent %.2f, shadow occluded %.2f\n",
-              r0.bvh_nodes, r0.sah_cost, r0.primary_hit_fraction, r0.incoherent_hit_fraction,
-              r0.shadow_occluded_fraction);
+  std::printf("BVH: %zu nodes, SAH cost %.1f; hit fractions:", r0.bvh_nodes, r0.sah_cost);
+  for (const SetThroughput& t : r0.sets)
+    std::printf(" %s %.2f", t.name.c_str(), t.rays ? static_cast<double>(t.hits) / static_cast<double>(t.rays) : 0.0);
+  std::printf("\n");
 
   if (cmd.scene.empty()) return kExitSuccess;
   Diagnostics diags;
@@ -74,16 +104,17 @@ int run_bench(const BenchCommand& cmd) {
     std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
     return kExitBadInput;
   }
-  std::printf("\nrender %s (%dx%d):", std::filesystem::path(cmd.scene).filename().c_str(), scene->settings.width,
+  std::printf("\nrender %s (%dx%d), s:", std::filesystem::path(cmd.scene).filename().c_str(), scene->settings.width,
               scene->settings.height);
-  std::vector<RenderStats> renders;
+  std::vector<RenderBenchmark> renders;
   for (const unsigned t : thread_counts) {
-    renders.push_back(best_render(scene->scene, scene->settings, t));
-    const RenderStats& r = renders.back();
-    std::printf("  %u thread%s %.3f s (%.2f Mrays/s)", t, t == 1 ? "" : "s", r.seconds,
-                static_cast<double>(r.rays.total()) / r.seconds / 1e6);
+    renders.push_back(time_render(scene->scene, scene->settings, t, cmd.repeats));
+    const RenderBenchmark& r = renders.back();
+    std::printf("  %u thread%s %s (%.2f Mrays/s)", t, t == 1 ? "" : "s",
+                with_range(r.seconds.median, r.seconds.min, r.seconds.max, "%.3f").c_str(),
+                static_cast<double>(r.rays.total()) / r.seconds.median / 1e6);
   }
-  if (renders.size() > 1) std::printf("  (%.2fx)", renders.front().seconds / renders.back().seconds);
+  if (renders.size() > 1) std::printf("  (%.2fx)", renders.front().seconds.median / renders.back().seconds.median);
   std::printf("\nrays: %s\n", format_ray_counts(renders.front().rays).c_str());
   return kExitSuccess;
 }

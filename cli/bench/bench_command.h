@@ -1,5 +1,7 @@
-// `rtcli bench [MODEL] [--scene SCENE.json]`: BVH build time and ray throughput on a mesh, for one
-// thread and for all threads, then the render time of the primitives scene.
+// `rtcli bench [MODEL] [--scene SCENE.json] [--repeats N] [--rays FILE] [--save-rays FILE]`: BVH
+// build time (cold and warm) and ray throughput on a mesh, for one thread and for all threads,
+// on rays made before the clock starts; then the render time of a scene. Every figure is the
+// median of N runs after a warm-up, with the fastest and slowest beside it.
 #pragma once
 
 #include <string>
@@ -7,8 +9,11 @@
 namespace rt {
 
 struct BenchCommand {
-  std::string model;  // .gltf/.glb/.json; empty = a generated mesh of 300k+ triangles
-  std::string scene;  // rendered at the end; empty = none
+  std::string model;      // .gltf/.glb/.json; empty = a generated mesh of 300k+ triangles
+  std::string scene;      // rendered at the end; empty = none
+  int repeats = 5;        // timed runs of each figure, after one warm-up
+  std::string rays;       // replay these ray sets instead of generating them
+  std::string save_rays;  // write the ray sets traced here, for another build or Embree to replay
 };
 
 int run_bench(const BenchCommand& cmd);

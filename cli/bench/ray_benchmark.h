@@ -1,30 +1,57 @@
-// Ray-tracing throughput of the BVH alone (no shading), as `rtcli bench` reports it.
+// Ray-tracing throughput of the BVH alone (no shading), as `rtcli bench` reports it, on ray sets
+// made before the clock starts (cli/bench/ray_sets.h).
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "cli/bench/ray_sets.h"
+#include "cli/bench/timing.h"
 #include "core/accel/primitives.h"
+#include "core/parallel_for.h"
 
 namespace rt {
 
+struct SetThroughput {
+  std::string name;
+  size_t rays = 0;
+  size_t hits = 0;  // rays that hit (closest hit) or were blocked (occlusion)
+  Timing seconds;
+  double mrays() const { return seconds.median > 0 ? static_cast<double>(rays) / seconds.median / 1e6 : 0.0; }
+  double mrays_slowest() const { return seconds.max > 0 ? static_cast<double>(rays) / seconds.max / 1e6 : 0.0; }
+  double mrays_fastest() const { return seconds.min > 0 ? static_cast<double>(rays) / seconds.min / 1e6 : 0.0; }
+};
+
 struct RayBenchmarkResult {
   unsigned threads = 1;
-  double build_seconds = 0.0;
-  double primary_mrays = 0.0;  // million rays per second
-  double incoherent_mrays = 0.0;
-  double shadow_mrays = 0.0;
-  double primary_hit_fraction = 0.0;
-  double incoherent_hit_fraction = 0.0;
-  double shadow_occluded_fraction = 0.0;
+  Timing build;  // warm: the builds after the first
+  std::vector<SetThroughput> sets;
   size_t bvh_nodes = 0;
   double sah_cost = 0.0;
 };
 
-// Builds a BVH over `prims` with `threads` threads, then traces with as many threads (every
-// figure is the best of three runs):
-//  primary    - a pinhole camera framing the bounds at 1920x1080, one ray per pixel;
-//  incoherent - 2M rays from uniform points in the bounds in uniform random directions;
-//  shadow     - from every primary hit towards a point light above the model, any-hit.
-RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, unsigned threads);
+// Builds a BVH over `prims` with `threads` threads, then traces each set with as many threads,
+// `repeats` timed runs after a warm-up each.
+RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, const std::vector<RaySet>& sets, unsigned threads,
+                                     int repeats);
+
+// The first build of a BVH over `prims` in a fresh process (time_in_fresh_process).
+double cold_build_seconds(const PrimitiveSet& prims, unsigned threads);
+
+// Runs trace(ray) for every ray of `rays` on `threads` threads in chunks of 4096 from a shared
+// counter (so fast and slow regions balance out); returns how many returned true.
+// Each worker counts into its own cache line: counting into neighbours would bounce one line
+// between cores.
+template <class Trace>
+size_t trace_all(const std::vector<Ray>& rays, unsigned threads, const Trace& trace) {
+  struct alignas(64) Count {
+    size_t n = 0;
+  };
+  std::vector<Count> counts(std::max(1u, threads));
+  parallel_for(rays.size(), threads, 4096, [&](unsigned worker, size_t i) { counts[worker].n += trace(rays[i]) ? 1 : 0; });
+  size_t total = 0;
+  for (const Count& c : counts) total += c.n;
+  return total;
+}
 
 }  // namespace rt

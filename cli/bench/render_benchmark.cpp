@@ -2,16 +2,15 @@
 
 namespace rt {
 
-RenderStats best_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats) {
+RenderBenchmark time_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats) {
   settings.threads = threads;
   Image image;
-  RenderStats best;
-  best.seconds = kInfinity;
-  for (int repeat = 0; repeat < repeats; ++repeat) {
-    const RenderStats stats = render(scene, settings, image);
-    if (stats.seconds < best.seconds) best = stats;
-  }
-  return best;
+  RenderBenchmark result;
+  std::vector<double> seconds;
+  result.rays = render(scene, settings, image).rays;  // the warm-up
+  for (int i = 0; i < std::max(1, repeats); ++i) seconds.push_back(render(scene, settings, image).seconds);
+  result.seconds = summarise(seconds);
+  return result;
 }
 
 }  // namespace rt

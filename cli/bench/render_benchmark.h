@@ -2,12 +2,17 @@
 // reports it.
 #pragma once
 
+#include "cli/bench/timing.h"
 #include "core/render/renderer.h"
 
 namespace rt {
 
-// The fastest of `repeats` renders of `scene` with `settings` on `threads` threads: its time and
-// rays by kind (the same for every repeat: the image is deterministic).
-RenderStats best_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats = 3);
+struct RenderBenchmark {
+  Timing seconds;  // the render loop's own time, as RenderStats reports it
+  RayCounters rays;  // the same on every run: the image is deterministic
+};
+
+// `repeats` renders of `scene` with `settings` on `threads` threads, after a warm-up.
+RenderBenchmark time_render(const Scene& scene, RenderSettings settings, unsigned threads, int repeats);
 
 }  // namespace rt
