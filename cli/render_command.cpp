@@ -61,6 +61,7 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
         static_cast<TextureFilter>(std::find(names.begin(), names.end(), *cmd.texture_filter) - names.begin());
   }
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
+  if (cmd.secondary_shadows) s.scale_secondary_shadows = *cmd.secondary_shadows == "scaled";
   if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
   if (cmd.aa_threshold) s.antialias.threshold = *cmd.aa_threshold;
@@ -103,6 +104,9 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
     return std::nullopt;
   if (cmd.texture_filter &&
       !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
+    return std::nullopt;
+  if (cmd.secondary_shadows &&
+      !check_name("--secondary-shadows", "secondary shadow rule", *cmd.secondary_shadows, secondary_shadow_names()))
     return std::nullopt;
   if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
     std::fprintf(stderr, "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",

@@ -25,6 +25,7 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"integrator", in.settings.integrator},
       {"antialias", in.settings.antialias.mode},
       {"shadow_samples", in.settings.shadow_samples},
+      {"secondary_shadows", secondary_shadow_names()[in.settings.scale_secondary_shadows ? 1 : 0]},
       {"glossy_samples", in.settings.glossy ? in.settings.glossy_samples : 0},
       {"max_depth", in.settings.max_depth},
       {"seconds", {{"render", t.seconds}, {"placing", t.place_seconds}, {"load", in.load_seconds}}},

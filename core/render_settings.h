@@ -2,8 +2,11 @@
 // block fills it; command-line options override it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/texture/texture.h"
 
@@ -42,6 +45,10 @@ struct RenderSettings {
   int glossy_samples = 8;   // the proposal's glossy_count: rays per glossy reflection
   bool glossy = true;       // false (--no-glossy): glossy surfaces reflect as perfect mirrors
   int shadow_samples = 16;  // the proposal's shadow_count: shadow rays per area light and point
+  // At a hit below the camera ray (reflection, refraction, glossy), an area light takes
+  // shadow_samples times the hit's weight in the pixel, at least one (secondary_shadow_samples);
+  // false ("full"): every hit takes shadow_samples.
+  bool scale_secondary_shadows = true;
   SurfaceDetailSwitches detail;
 };
 
@@ -56,6 +63,18 @@ inline constexpr int kMaxGlossySamples = 256;
 inline constexpr int kMaxShadowSamples = 1024;
 // Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
 inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
+
+// The names render.secondary_shadows and --secondary-shadows take, in the order of the bool.
+inline std::vector<std::string> secondary_shadow_names() { return {"full", "scaled"}; }
+
+// Shadow samples of an area light at a hit of weight `weight` in its pixel (1 for a camera ray's
+// hit; a mirror's reflectivity, times 1/n under a glossy split into n rays, for the hits below):
+// ceil(samples * weight), between 1 and samples. The samples a pixel's ray tree takes then follow
+// what each hit adds to the pixel, as the glossy split already makes its rays do.
+inline int secondary_shadow_samples(int samples, float weight) {
+  const float scaled = std::ceil(static_cast<float>(samples) * weight);
+  return scaled >= static_cast<float>(samples) ? samples : std::max(1, static_cast<int>(scaled));
+}
 
 inline uint64_t pixel_count(const RenderSettings& s) {
   return static_cast<uint64_t>(s.width) * static_cast<uint64_t>(s.height);

@@ -5,18 +5,24 @@
 
 namespace rt {
 
-Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, TraceContext& ctx) {
+Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
+  const int samples = ctx.settings.scale_secondary_shadows
+                          ? secondary_shadow_samples(ctx.settings.shadow_samples, weight)
+                          : ctx.settings.shadow_samples;
+  // One sample of an area light sits at its centre when the scene asks for one (a hard shadow, as
+  // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
+  const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     // A point light is one sample; an area light shadow_samples points stratified over it, one
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
-    const int count = light_sample_count(light, ctx.settings.shadow_samples);
+    const int count = light_sample_count(light, samples);
     const StratifiedGrid grid(count);
     Vec3 light_sum(0.0f);
     for (int i = 0; i < count; ++i) {
-      const Vec2 u = count == 1
+      const Vec2 u = count == 1 && (centred || !std::holds_alternative<RectLight>(light))
                          ? Vec2(0.5f)
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));

@@ -8,7 +8,9 @@
 
 namespace rt {
 
-// `path` keys the area-light samples (core/sampling.h).
-Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, TraceContext& ctx);
+// `path` keys the area-light samples (core/sampling.h); `weight` is the hit's weight in its pixel
+// (1 for a camera ray's hit), which scales an area light's samples at secondary hits
+// (render.secondary_shadows, core/render_settings.h).
+Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx);
 
 }  // namespace rt

@@ -36,7 +36,7 @@ Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, Trace
     const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
     const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),
                                                 cone_width, ctx.settings.detail);
-    radiance = s.emission + direct_lighting(s, state.path, ctx);
+    radiance = s.emission + direct_lighting(s, state.path, max_component(state.weight) * state.share, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) {
       PathState onward = state;
@@ -116,6 +116,7 @@ Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const 
   hughes_moller_basis(mirror, u, v);
   PathState below = state;
   below.split = true;
+  below.share = state.share / static_cast<float>(count);
   Vec3 sum(0.0f);
   int kept = 0;
   for (int i = 0; i < count; ++i) {

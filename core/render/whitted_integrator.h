@@ -20,6 +20,7 @@ class WhittedIntegrator final : public Integrator {
     Vec3 weight{1.0f};   // this ray's weight in the pixel: branches below kMinWeight are not traced
     MediumStack media;   // what the ray travels through
     bool split = false;  // a glossy reflection above already split the path into glossy_samples rays
+    float share = 1.0f;  // 1 / the rays a glossy split above made: with weight, the hit's part of the pixel
     uint64_t path = 0;   // where in the ray tree: keys its random numbers (core/sampling.h)
     // The ray cone (Akenine-Moller et al. 2019): width at the ray's origin and spread angle. A
     // mirror or refraction passes the width on and keeps the spread (surface curvature ignored).

@@ -49,6 +49,10 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
   if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
   if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
   if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
+  if (const Json* m = o.get("secondary_shadows")) {
+    if (const auto k = read_choice(r, *m, o.child("secondary_shadows"), secondary_shadow_names()))
+      s.scale_secondary_shadows = *k == 1;
+  }
   if (const Json* i = o.get("integrator")) {
     if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))
       s.integrator = options.integrators[*k];

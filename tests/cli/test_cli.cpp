@@ -270,3 +270,15 @@ TEST_CASE("cli: -o NAME.jpg writes a JPEG of the image's size; frames need a GIF
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("need an animated GIF"));
 }
+
+TEST_CASE("cli: --secondary-shadows takes scaled or full, and the stats say which", "[cli][lights]") {
+  Run r = rtcli("render scenes/default.json --secondary-shadows half");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--secondary-shadows: unknown secondary shadow rule \"half\"; expected one of: "
+                                       "full, scaled"));
+  const std::string stats = output_path("secondary.json");
+  r = rtcli("render scenes/soft_shadows.json --width 32 --height 18 --secondary-shadows full -o '" +
+            output_path("secondary.png") + "' --stats '" + stats + "'");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(read_file(stats), Catch::Contains("\"secondary_shadows\": \"full\""));
+}

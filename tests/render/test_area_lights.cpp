@@ -25,7 +25,7 @@ Vec3 floor_light(const Scene& scene, const RenderSettings& settings, float x) {
   s.diffuse = Vec3(1.0f);
   RayCounters counters;
   TraceContext ctx{scene, settings, counters, SampleStream(1, 0, static_cast<uint64_t>(std::fabs(x) * 1000), 0)};
-  return direct_lighting(s, 0, ctx);
+  return direct_lighting(s, 0, 1.0f, ctx);
 }
 
 // A 2 x 2 light facing down at height 4 over the origin; optionally an opaque slab at height 2
@@ -180,4 +180,40 @@ TEST_CASE("rect light: the scene's intersection finds its face, so every integra
   CHECK(seen.x == Approx(0.5f));
   CHECK(seen.y == Approx(0.0f));
   CHECK(seen.z == Approx(0.5f));
+}
+
+TEST_CASE("secondary shadows: an area light's samples follow the hit's weight in the pixel", "[lights][shadow]") {
+  CHECK(secondary_shadow_samples(16, 1.0f) == 16);         // a camera ray's hit
+  CHECK(secondary_shadow_samples(16, 0.85f) == 14);        // a mirror of 0.85: ceil(13.6)
+  CHECK(secondary_shadow_samples(16, 1.0f / 6.0f) == 3);   // one of 6 glossy rays: ceil(2.67)
+  CHECK(secondary_shadow_samples(16, 0.001f) == 1);        // never none
+  CHECK(secondary_shadow_samples(16, 0.0f) == 1);
+  CHECK(secondary_shadow_samples(1, 0.5f) == 1);
+  CHECK(secondary_shadow_samples(1024, 1.5f) == 1024);     // never more than asked
+
+  // A mirror of reflectivity 0.5 facing a lit floor: its hits on the floor take 8 samples of 16.
+  const LoadedScene s = rt::test::load_scene_text("mirror_shadows.json", R"({
+    "render": { "width": 16, "height": 16, "shadow_samples": 16, "max_depth": 1, "antialias": { "mode": "none" } },
+    "camera": { "position": [0, 1, 4], "look_at": [0, 0, 0], "fov": 30 },
+    "materials": { "floor": { "kd": 0.7 }, "mirror": { "kd": 0.1, "reflectivity": 0.5 } },
+    "lights": [ { "type": "rect", "corner": [-1, 5, -1], "edge1": [2, 0, 0], "edge2": [0, 0, 2] } ],
+    "nodes": [ { "shape": "plane", "material": "floor", "transform": { "scale": 20 } },
+               { "shape": "sphere", "material": "mirror", "transform": { "translate": [0, 0.6, 0], "scale": 0.6 } } ] })");
+  RenderSettings full = s.settings;
+  full.scale_secondary_shadows = false;
+  Image a, b;
+  const RenderStats f = render(s.scene, full, a);
+  const RenderStats scaled = render(s.scene, s.settings, b);
+  CHECK(scaled.rays[RayKind::kCamera] == f.rays[RayKind::kCamera]);
+  CHECK(scaled.rays[RayKind::kReflection] == f.rays[RayKind::kReflection]);
+  const uint64_t reflections = f.rays[RayKind::kReflection];
+  REQUIRE(reflections > 0);
+  // Each reflection that meets the floor (or the sphere itself) saves 8 shadow rays; the rest of
+  // the reflections go to the sky.
+  const uint64_t saved = f.rays[RayKind::kShadow] - scaled.rays[RayKind::kShadow];
+  CHECK(saved > 0);
+  CHECK(saved % 8 == 0);
+  CHECK(saved <= 8 * reflections);
+  // The camera's own hits take all 16 either way: pixels that see no mirror are the same.
+  CHECK(a.at(0, 15) == b.at(0, 15));
 }
