@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")
       ->check(whole_number(1, kMaxShadowSamples));
+  render_cmd->add_flag("--preview", render.preview,
+                       "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
+                       "given beside it still apply");
   render_cmd->add_option("--secondary-shadows", render.secondary_shadows,
                          "scaled: shadow rays at reflected, refracted and glossy hits scaled by their weight in the "
                          "pixel; full: all shadow_samples at every hit (overrides the scene)");

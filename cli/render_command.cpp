@@ -45,6 +45,7 @@ bool check_name(const char* option, const char* what, const std::string& name, c
 
 // The scene's render settings with the command line's overrides applied.
 RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
+  if (cmd.preview) s = preview_settings(s);  // first: an option given beside it still wins
   if (cmd.width) s.width = *cmd.width;
   if (cmd.height) s.height = *cmd.height;
   if (cmd.seed) s.seed = *cmd.seed;

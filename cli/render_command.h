@@ -1,6 +1,6 @@
 // `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
-//   [--shadow-samples N] [--secondary-shadows scaled|full]
+//   [--shadow-samples N] [--secondary-shadows scaled|full] [--preview]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
@@ -24,6 +24,7 @@ struct RenderCommand {
   std::optional<int> glossy_samples;
   std::optional<int> shadow_samples;
   std::optional<std::string> secondary_shadows;  // "full" or "scaled"
+  bool preview = false;                          // the draft preset (preview_settings)
   std::optional<std::string> aa_mode;
   std::optional<int> aa_samples;
   std::optional<float> aa_threshold;

@@ -76,6 +76,16 @@ inline int secondary_shadow_samples(int samples, float weight) {
   return scaled >= static_cast<float>(samples) ? samples : std::max(1, static_cast<int>(scaled));
 }
 
+// --preview, the draft for looking at a scene while editing it: one camera ray through each
+// pixel's centre (no anti-aliasing, so no adaptive refinement), and a quarter of the shadow and
+// glossy samples, at most 4 of each. The image keeps its size, camera, depth and lights.
+inline RenderSettings preview_settings(RenderSettings s) {
+  s.antialias.mode = "none";
+  s.shadow_samples = std::clamp((s.shadow_samples + 3) / 4, 1, 4);
+  s.glossy_samples = std::clamp((s.glossy_samples + 3) / 4, 1, 4);
+  return s;
+}
+
 inline uint64_t pixel_count(const RenderSettings& s) {
   return static_cast<uint64_t>(s.width) * static_cast<uint64_t>(s.height);
 }

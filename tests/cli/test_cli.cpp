@@ -282,3 +282,18 @@ TEST_CASE("cli: --secondary-shadows takes scaled or full, and the stats say whic
   REQUIRE(r.code == 0);
   CHECK_THAT(read_file(stats), Catch::Contains("\"secondary_shadows\": \"full\""));
 }
+
+TEST_CASE("cli: --preview renders a draft: one ray a pixel, a quarter of the shadow and glossy samples", "[cli]") {
+  const std::string stats = output_path("preview.json"), image = output_path("preview.png");
+  Run r = rtcli("render scenes/csg.json --width 64 --height 36 --preview -o '" + image + "' --stats '" + stats + "'");
+  REQUIRE(r.code == 0);
+  std::string s = read_file(stats);
+  CHECK_THAT(s, Catch::Contains("\"antialias\": \"none\"") && Catch::Contains("\"shadow_samples\": 4") &&
+                    Catch::Contains("\"camera_rays_per_pixel\": 1.0"));
+  // An option beside it still wins.
+  r = rtcli("render scenes/csg.json --width 64 --height 36 --preview --shadow-samples 9 -o '" + image +
+            "' --stats '" + stats + "'");
+  REQUIRE(r.code == 0);
+  s = read_file(stats);
+  CHECK_THAT(s, Catch::Contains("\"shadow_samples\": 9") && Catch::Contains("\"antialias\": \"none\""));
+}

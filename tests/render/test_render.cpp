@@ -193,3 +193,19 @@ TEST_CASE("emission: camera and mirror rays see an emissive surface's own radian
   CHECK(mirrored.z == Approx(0.25f));
   CHECK(image.at(5, 10) == Vec3(0.0f));  // the mirror, showing the black background
 }
+
+TEST_CASE("preview settings: no anti-aliasing, a quarter of the shadow and glossy samples, 1 to 4", "[render]") {
+  RenderSettings s;
+  s.antialias.mode = "adaptive";
+  s.width = 1280;
+  s.max_depth = 8;
+  for (const auto& [asked, got] : {std::pair{1, 1}, {2, 1}, {6, 2}, {8, 2}, {16, 4}, {1024, 4}}) {
+    s.shadow_samples = s.glossy_samples = asked;
+    const RenderSettings p = preview_settings(s);
+    CHECK(p.shadow_samples == got);
+    CHECK(p.glossy_samples == got);
+    CHECK(p.antialias.mode == "none");
+    CHECK(p.width == 1280);  // size, depth and the rest stay
+    CHECK(p.max_depth == 8);
+  }
+}
