@@ -20,7 +20,7 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) 
 
 bool Bvh::intersect(Ray& ray, Hit& hit) const {
   bool found = false;
-  traverse(ray, [&](uint32_t first, uint32_t end, Ray& r) {
+  traverse<true>(ray, [&](uint32_t first, uint32_t end, Ray& r) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const uint32_t id = s.id;
@@ -42,7 +42,7 @@ bool Bvh::intersect(Ray& ray, Hit& hit) const {
 
 bool Bvh::intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
   bool found = false;
-  traverse(ray, [&](uint32_t first, uint32_t end, Ray& r) {
+  traverse<true>(ray, [&](uint32_t first, uint32_t end, Ray& r) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       Hit candidate;

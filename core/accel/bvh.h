@@ -98,7 +98,7 @@ class Bvh {
   // checks scenes first and reports such objects with their location.
 
  private:
-  template <class LeafVisitor>
+  template <bool kNearestFirst, class LeafVisitor>
   bool traverse(Ray& ray, LeafVisitor&& visit_leaf) const;
   // for_each_hit without the instance case: what an instance's (triangle-only) BVH runs, so that
   // the visitor templates do not nest without end.

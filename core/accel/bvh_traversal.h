@@ -59,10 +59,12 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
 
 }  // namespace bvh_detail
 
-// Walks the boxes the ray enters, nearest child first, and hands each leaf it reaches to
-// visit_leaf(first_slot, end_slot, ray), which may narrow ray.tmax (later boxes beyond it are
-// skipped) and returns true to stop. Returns whether a leaf stopped the walk.
-template <class LeafVisitor>
+// Walks the boxes the ray enters and hands each leaf it reaches to visit_leaf(first_slot,
+// end_slot, ray), which returns true to stop. Returns whether a leaf stopped the walk.
+// kNearestFirst (closest hit): children are taken nearest first, and a leaf may narrow ray.tmax
+// so that boxes beyond it are skipped. Otherwise (any hit, every crossing) the order does not
+// matter and is not paid for: the children entered are pushed as the node lists them.
+template <bool kNearestFirst, class LeafVisitor>
 bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
   using namespace bvh_detail;
   if (primitive_count() == 0) return false;
@@ -79,6 +81,17 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
       const BvhNode4& node = nodes_[ref];
       unsigned mask = slabs.test(node, ray.tmin, ray.tmax, tnear);
       if (mask == 0) break;
+      if constexpr (!kNearestFirst) {
+        alignas(16) float t[4];
+        std::memcpy(t, &tnear, sizeof t);
+        const int first = __builtin_ctz(mask);
+        for (mask &= mask - 1; mask; mask &= mask - 1) {
+          const int s = __builtin_ctz(mask);
+          stack[top++] = StackEntry{node.child[s], t[s]};
+        }
+        ref = node.child[first];
+        continue;
+      }
       // Continue with the nearest child entered; push the others, farthest deepest, so that they
       // come off the stack nearest first. One or two hits are by far the common cases.
       alignas(16) float t[4];
@@ -116,7 +129,7 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
 template <class Visitor>
 bool Bvh::for_each_primitive_hit(const Ray& ray, Visitor& visit) const {
   Ray r = ray;  // never narrowed: every crossing in the interval is visited
-  return traverse(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+  return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const bool stop = s.id < triangle_count_ ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
@@ -131,7 +144,7 @@ template <class Visitor>
 bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
   if (instances_.empty() && csgs_.empty()) return for_each_primitive_hit(ray, visit);
   Ray r = ray;
-  return traverse(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+  return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       bool stop = false;
