@@ -63,4 +63,10 @@ bool Bvh::occluded(const Ray& ray) const {
   return for_each_hit(ray, [](const Hit&) { return true; });
 }
 
+MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material,
+                        const AlphaCutout* cutout) {
+  return MeshInstance{&mesh_bvh, transform, transform_bounds(transform.to_world, mesh_bvh.bounds()),
+                      mesh,      material,  cutout};
+}
+
 }  // namespace rt

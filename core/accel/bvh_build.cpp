@@ -8,11 +8,13 @@
 //    interior child with the largest surface area by that child's two children.
 #include <atomic>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
 #include "core/accel/bvh.h"
 #include "core/accel/simd.h"
+#include "core/parallel_for.h"
 
 namespace rt {
 namespace {
@@ -130,7 +132,7 @@ class BinaryBuilder {
   // to a new thread while one is spare, and the thread is spare again when that subtree is done,
   // so work moves to wherever it remains. Every handed-off subtree is built into its own array
   // and spliced back in place, which gives exactly the array a single thread would write.
-  BinaryBuilder(std::vector<BuildPrim>& prims, unsigned spare_threads) : prims_(prims), spare_threads_(spare_threads) {}
+  BinaryBuilder(BuildPrim* prims, unsigned spare_threads) : prims_(prims), spare_threads_(spare_threads) {}
 
   void build(const Range& range, int depth, std::vector<BinaryNode>& out) {
     const auto index = static_cast<uint32_t>(out.size());
@@ -147,7 +149,10 @@ class BinaryBuilder {
     if (split.axis >= 0) partition(range, split, left, right);
     else median_split(range, left, right);
     if (n >= kParallelMinPrims && take_spare_thread()) {
+      // Room for the most nodes a subtree can have (2m - 1 for m primitives): never regrown.
       std::vector<BinaryNode> left_nodes, right_nodes;
+      left_nodes.reserve(2 * static_cast<size_t>(left.count()));
+      right_nodes.reserve(2 * static_cast<size_t>(right.count()));
       {
         std::jthread worker([&] {
           build(left, depth + 1, left_nodes);
@@ -241,7 +246,7 @@ class BinaryBuilder {
     const Float4 extent = range.centroids.hi - range.centroids.lo;
     const int a = (extent[0] >= extent[1] && extent[0] >= extent[2]) ? 0 : (extent[1] >= extent[2] ? 1 : 2);
     const uint32_t mid = range.begin + range.count() / 2;
-    std::nth_element(prims_.begin() + range.begin, prims_.begin() + mid, prims_.begin() + range.end,
+    std::nth_element(prims_ + range.begin, prims_ + mid, prims_ + range.end,
                      [&](const BuildPrim& x, const BuildPrim& y) {
                        const float cx = x.centroid()[a], cy = y.centroid()[a];
                        return cx < cy || (cx == cy && x.id() < y.id());
@@ -273,7 +278,7 @@ class BinaryBuilder {
     return false;
   }
 
-  std::vector<BuildPrim>& prims_;
+  BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
 };
 
@@ -337,21 +342,41 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   const uint32_t n = prims.size();
   if (n == 0) return;
   if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");
-  std::vector<BuildPrim> build_prims(n);
+  // The build records are written on all threads, each worker a contiguous share, so that their
+  // pages are first touched in parallel; the root's boxes are merged from the workers' own (min
+  // and max: the same whatever the split).
+  const unsigned threads = std::max(1u, options.threads);
+  std::unique_ptr<BuildPrim[]> records(new BuildPrim[n]);  // not value-initialised: written once below
+  std::vector<Range> shares(threads);
+  std::atomic<uint32_t> bad{n};
+  run_workers(threads, [&](unsigned w) {
+    Range& share = shares[w];
+    const uint32_t begin = static_cast<uint32_t>(uint64_t{n} * w / threads);
+    const uint32_t end = static_cast<uint32_t>(uint64_t{n} * (w + 1) / threads);
+    for (uint32_t id = begin; id < end; ++id) {
+      const Aabb box = prims.bounds(id);
+      // Callers check their input (io reports a located error); this is the last line of defence.
+      const bool finite_triangle = !prims.is_triangle(id) || prims.triangles[id].is_finite();
+      if (!finite_triangle || !is_finite(box.lo) || !is_finite(box.hi) || box.empty()) {
+        uint32_t first = bad.load();
+        while (id < first && !bad.compare_exchange_weak(first, id)) {
+        }
+        return;
+      }
+      const BuildPrim& p = records[id] = BuildPrim::make(box, id);
+      share.bounds.extend(p.lo, p.hi);
+      share.centroids.extend(p.centroid(), p.centroid());
+    }
+  });
+  if (bad.load() < n) throw std::invalid_argument("primitive " + std::to_string(bad.load()) + " has bounds that are not finite");
   Range root{0, n, {}, {}};
-  for (uint32_t id = 0; id < n; ++id) {
-    const Aabb box = prims.bounds(id);
-    // Callers check their input (io reports a located error); this is the last line of defence.
-    const bool finite_triangle = !prims.is_triangle(id) || prims.triangles[id].is_finite();
-    if (!finite_triangle || !is_finite(box.lo) || !is_finite(box.hi) || box.empty())
-      throw std::invalid_argument("primitive " + std::to_string(id) + " has bounds that are not finite");
-    const BuildPrim& p = build_prims[id] = BuildPrim::make(box, id);
-    root.bounds.extend(p.lo, p.hi);
-    root.centroids.extend(p.centroid(), p.centroid());
+  for (const Range& share : shares) {
+    root.bounds.extend(share.bounds);
+    root.centroids.extend(share.centroids);
   }
   std::vector<BinaryNode> binary;
-  binary.reserve(2 * static_cast<size_t>(n) / 3 + 1);
-  BinaryBuilder(build_prims, std::max(1u, options.threads) - 1).build(root, 0, binary);
+  binary.reserve(2 * static_cast<size_t>(n));  // the most a tree of n leaves can have: never regrown
+  BinaryBuilder(records.get(), threads - 1).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary);
   nodes_.reserve(binary.size() / 3 + 1);
@@ -359,41 +384,10 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
 
   slots_.resize(n);
   for (uint32_t slot = 0; slot < n; ++slot) {
-    const uint32_t id = build_prims[slot].id();
+    const uint32_t id = records[slot].id();
     slots_[slot].id = id;
     if (prims.is_triangle(id)) slots_[slot].triangle = prims.triangles[id];
   }
-}
-
-MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material,
-                        const AlphaCutout* cutout) {
-  return MeshInstance{&mesh_bvh, transform, transform_bounds(transform.to_world, mesh_bvh.bounds()),
-                      mesh,      material,  cutout};
-}
-
-BvhStats Bvh::stats() const {
-  BvhStats s;
-  s.nodes = nodes_.size();
-  s.sah_cost = binary_sah_cost_;
-  if (primitive_count() == 0) return s;
-  struct Item {
-    uint32_t ref;
-    int depth;
-  };
-  std::vector<Item> stack{{root_, 0}};
-  while (!stack.empty()) {
-    const Item it = stack.back();
-    stack.pop_back();
-    s.max_depth = std::max(s.max_depth, it.depth);
-    if (BvhRef::is_leaf(it.ref)) {
-      ++s.leaves;
-      continue;
-    }
-    const BvhNode4& node = nodes_[it.ref];
-    for (int slot = 0; slot < 4; ++slot)
-      if (node.bounds[0][slot] <= node.bounds[1][slot]) stack.push_back({node.child[slot], it.depth + 1});
-  }
-  return s;
 }
 
 }  // namespace rt

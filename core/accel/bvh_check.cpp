@@ -1,4 +1,5 @@
-// Bvh::check_structure: the invariants traversal relies on, checked the slow, obvious way.
+// Bvh::check_structure, the invariants traversal relies on checked the slow, obvious way; and
+// Bvh::stats, what the tree looks like (nodes, leaves, depth).
 #include <vector>
 
 #include "core/accel/bvh.h"
@@ -67,6 +68,31 @@ std::string Bvh::check_structure() const {
   for (uint32_t id = 0; id < n; ++id)
     if (seen[id] != 1) return "primitive " + std::to_string(id) + " is in no leaf";
   return "";
+}
+
+BvhStats Bvh::stats() const {
+  BvhStats s;
+  s.nodes = nodes_.size();
+  s.sah_cost = binary_sah_cost_;
+  if (primitive_count() == 0) return s;
+  struct Item {
+    uint32_t ref;
+    int depth;
+  };
+  std::vector<Item> stack{{root_, 0}};
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    s.max_depth = std::max(s.max_depth, it.depth);
+    if (BvhRef::is_leaf(it.ref)) {
+      ++s.leaves;
+      continue;
+    }
+    const BvhNode4& node = nodes_[it.ref];
+    for (int slot = 0; slot < 4; ++slot)
+      if (node.bounds[0][slot] <= node.bounds[1][slot]) stack.push_back({node.child[slot], it.depth + 1});
+  }
+  return s;
 }
 
 }  // namespace rt
