@@ -1,0 +1,45 @@
+// tools/povray/twin.py: the POV-Ray twins that docs/benchmark.md times rtcli against. Each shipped
+// scene it claims converts completely; anything it cannot convert is refused by name, never
+// silently dropped.
+#include <catch2/catch.hpp>
+
+#include "tests/support/run_rtcli.h"
+#include "tests/support/test_paths.h"
+
+namespace {
+
+rt::test::Run twin(const std::string& scene, const std::string& out) {
+  return rt::test::run_shell("python3 '" + rt::test::source_path("tools/povray/twin.py") + "' '" +
+                             rt::test::source_path(scene) + "' '" + out + "' --width 1920 --height 1440 2>&1");
+}
+
+}  // namespace
+
+TEST_CASE("povray twin: the benchmark scenes convert, with the camera, lights and sampling they ask", "[tools]") {
+  for (const char* scene : {"scenes/reflection.json", "scenes/refraction.json", "scenes/soft_shadows.json",
+                            "scenes/antialias.json"}) {
+    INFO(scene);
+    const std::string out = rt::test::output_path("twin.pov");
+    const rt::test::Run r = twin(scene, out);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.output, Catch::Contains("+W1920 +H1440") && Catch::Contains("File_Gamma=sRGB"));
+    const std::string pov = rt::test::read_file(out);
+    CHECK_THAT(pov, Catch::Contains("right -x*1.33333333") && Catch::Contains("assumed_gamma 1.0"));
+    CHECK_THAT(pov, Catch::Contains("light_source"));
+  }
+  // soft_shadows: 16 samples become a jittered 4 x 4 area light; refraction: glass with Fresnel.
+  twin("scenes/soft_shadows.json", rt::test::output_path("soft.pov"));
+  CHECK_THAT(rt::test::read_file(rt::test::output_path("soft.pov")), Catch::Contains(", 4, 4 jitter"));
+  twin("scenes/refraction.json", rt::test::output_path("glass.pov"));
+  CHECK_THAT(rt::test::read_file(rt::test::output_path("glass.pov")),
+             Catch::Contains("fresnel on") && Catch::Contains("ior 1.33") && Catch::Contains("fade_power 1001"));
+}
+
+TEST_CASE("povray twin: what has no twin is refused by name", "[tools]") {
+  rt::test::Run r = twin("scenes/primitives.json", rt::test::output_path("no.pov"));
+  CHECK(r.code != 0);
+  CHECK_THAT(r.output, Catch::Contains("only analytic shapes and groups have twins"));
+  r = twin("scenes/textures.json", rt::test::output_path("no.pov"));
+  CHECK(r.code != 0);
+  CHECK_THAT(r.output, Catch::Contains("have no twin"));
+}

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""rtcli against POV-Ray 3.7 (Debian's povray) on like-for-like scenes: each scene's twin written
+by twin.py, both renderers run alternately on the same size and thread count, the whole process
+timed (wall) and each renderer's own render time (rtcli's --stats, POV-Ray's "Trace Time"), the
+median of N runs with min-max, and how far the two images are apart (build/imagediff).
+
+  compare.py [--width 1920] [--height 1440] [--threads 2] [--runs 3] SCENE.json...
+
+Prints one Markdown table row per scene (docs/benchmark.md, "Against POV-Ray").
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def timed(args, **kw):
+    start = time.monotonic()
+    r = subprocess.run(args, capture_output=True, text=True, **kw)
+    if r.returncode != 0:
+        sys.exit("compare.py: %s failed:\n%s" % (args[0], r.stdout + r.stderr))
+    return time.monotonic() - start, r.stdout + r.stderr
+
+
+def span(values, unit="s"):
+    return "%.2f %s (%.2f–%.2f)" % (statistics.median(values), unit, min(values), max(values))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("scenes", nargs="+")
+    p.add_argument("--width", type=int, default=1920)
+    p.add_argument("--height", type=int, default=1440)
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
+    a = p.parse_args()
+    print("| scene | rtcli wall | POV-Ray wall | ratio | rtcli render | POV-Ray trace | ratio | RMS apart |")
+    print("|---|---|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in a.scenes:
+            name = os.path.splitext(os.path.basename(scene))[0]
+            pov = os.path.join(tmp, name + ".pov")
+            command = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
+                                      "--width", str(a.width), "--height", str(a.height)],
+                                     capture_output=True, text=True, check=True).stdout.split()
+            command = [c.replace("+WT2", "+WT%d" % a.threads) for c in command]
+            ours = [a.rtcli, "render", scene, "-q", "-o", os.path.join(tmp, name + "-rtcli.png"), "--width",
+                    str(a.width), "--height", str(a.height), "--threads", str(a.threads), "--stats",
+                    os.path.join(tmp, name + ".json")]
+            walls = {"rtcli": [], "pov": []}
+            renders = {"rtcli": [], "pov": []}
+            for _ in range(a.runs):
+                wall, _ = timed(ours)
+                walls["rtcli"].append(wall)
+                with open(os.path.join(tmp, name + ".json")) as f:
+                    renders["rtcli"].append(json.load(f)["seconds"]["render"])
+                wall, log = timed(command, cwd=tmp)
+                walls["pov"].append(wall)
+                trace = re.search(r"Trace Time:.*\(([\d.]+) seconds\)", log)
+                renders["pov"].append(float(trace.group(1)) if trace else float("nan"))
+            diff = subprocess.run([os.path.join(os.path.dirname(a.rtcli), "imagediff"),
+                                   os.path.join(tmp, name + "-rtcli.png"), pov[:-4] + ".png"],
+                                  capture_output=True, text=True).stdout.split(" levels")[0]
+            print("| %s | %s | %s | %.2f× | %s | %s | %.2f× | %s |" % (
+                name, span(walls["rtcli"]), span(walls["pov"]),
+                statistics.median(walls["rtcli"]) / statistics.median(walls["pov"]),
+                span(renders["rtcli"]), span(renders["pov"]),
+                statistics.median(renders["rtcli"]) / statistics.median(renders["pov"]), diff))
+            sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()
