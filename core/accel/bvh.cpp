@@ -20,7 +20,29 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) 
 
 bool Bvh::intersect(Ray& ray, Hit& hit) const {
   bool found = false;
+  const QuadRay quad_ray(ray);
   traverse<true>(ray, [&](uint32_t first, uint32_t end, Ray& r) {
+    if (const uint32_t q0 = leaf_quads_[first]; q0 != kNoQuads) {
+      // Four triangles at a time; the nearest lane wins, the first of equals (as in slot order).
+      for (uint32_t q = q0, slot = first; slot < end; ++q, slot += 4) {
+        Float4 t, b1, b2;
+        unsigned mask = intersect_quad(quads_[q], quad_ray, r.tmin, r.tmax, t, b1, b2);
+        if (!mask) continue;
+        int best = __builtin_ctz(mask);
+        for (mask &= mask - 1; mask; mask &= mask - 1) {
+          const int lane = __builtin_ctz(mask);
+          if (t[lane] < t[best]) best = lane;
+        }
+        hit.t = t[best];
+        hit.b1 = b1[best];
+        hit.b2 = b2[best];
+        hit.part = 0;
+        hit.prim = slots_[slot + static_cast<uint32_t>(best)].id;
+        r.tmax = hit.t;
+        found = true;
+      }
+      return false;
+    }
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const uint32_t id = s.id;

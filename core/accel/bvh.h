@@ -14,6 +14,7 @@
 
 #include "core/accel/alpha_cutout.h"
 #include "core/accel/primitives.h"
+#include "core/accel/triangle_quad.h"
 
 namespace rt {
 
@@ -104,6 +105,10 @@ class Bvh {
   // the visitor templates do not nest without end.
   template <class Visitor>
   bool for_each_primitive_hit(const Ray& ray, Visitor& visit) const;
+  // The crossings of a leaf of triangle quads (leaf_quads_[first] != kNoQuads), in slot order.
+  template <class Visitor>
+  bool visit_quad_crossings(uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
+                            Visitor& visit) const;
   uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
   uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
 
@@ -122,6 +127,13 @@ class Bvh {
     uint32_t id;
   };
   std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
+  // Leaves of triangles alone, also as quads tested four at a time: leaf_quads_[a leaf's first
+  // slot] is its first quad (its triangles in slot order, four a quad), or kNoQuads for a leaf
+  // that holds anything else (core/accel/bvh_quads.cpp).
+  static constexpr uint32_t kNoQuads = ~0u;
+  std::vector<TriangleQuad> quads_;
+  std::vector<uint32_t> leaf_quads_;
+  void build_quads();
 };
 
 // A mesh's BVH placed by `transform`: the instance with its world bounds filled in.

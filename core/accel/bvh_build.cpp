@@ -388,6 +388,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
     slots_[slot].id = id;
     if (prims.is_triangle(id)) slots_[slot].triangle = prims.triangles[id];
   }
+  build_quads();
 }
 
 }  // namespace rt

@@ -127,9 +127,30 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
 }
 
 template <class Visitor>
+bool Bvh::visit_quad_crossings(uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
+                               Visitor& visit) const {
+  for (uint32_t q = leaf_quads_[first], slot = first; slot < end; ++q, slot += 4) {
+    Float4 t, b1, b2;
+    for (unsigned mask = intersect_quad(quads_[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask; mask &= mask - 1) {
+      const int lane = __builtin_ctz(mask);
+      Hit hit;
+      hit.t = t[lane];
+      hit.b1 = b1[lane];
+      hit.b2 = b2[lane];
+      hit.part = 0;
+      hit.prim = slots_[slot + static_cast<uint32_t>(lane)].id;
+      if (visit(static_cast<const Hit&>(hit))) return true;
+    }
+  }
+  return false;
+}
+
+template <class Visitor>
 bool Bvh::for_each_primitive_hit(const Ray& ray, Visitor& visit) const {
   Ray r = ray;  // never narrowed: every crossing in the interval is visited
+  const QuadRay quad_ray(ray);
   return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+    if (leaf_quads_[first] != kNoQuads) return visit_quad_crossings(first, end, quad_ray, leaf_ray, visit);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       const bool stop = s.id < triangle_count_ ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
@@ -144,7 +165,9 @@ template <class Visitor>
 bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
   if (instances_.empty() && csgs_.empty()) return for_each_primitive_hit(ray, visit);
   Ray r = ray;
+  const QuadRay quad_ray(ray);
   return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+    if (leaf_quads_[first] != kNoQuads) return visit_quad_crossings(first, end, quad_ray, leaf_ray, visit);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Slot& s = slots_[slot];
       bool stop = false;

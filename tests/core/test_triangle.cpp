@@ -4,6 +4,8 @@
 
 #include "core/mesh.h"
 #include "core/shapes/triangle.h"
+#include "core/accel/triangle_quad.h"
+#include "core/rng.h"
 
 using namespace rt;
 using rt::test::check_vec;
@@ -89,4 +91,39 @@ TEST_CASE("mesh instance: a mirroring placement keeps normals outward and flips 
   CHECK_FALSE(si.front_face);  // arriving from +Z onto a face that now looks down -Z
   const Vec3 bitangent = glm::cross(si.shading_normal, Vec3(si.tangent)) * si.tangent.w;
   CHECK(bitangent.y == Approx(1.0f));
+}
+
+TEST_CASE("triangle quads: each lane gives exactly what the one-triangle routine gives", "[triangle][bvh]") {
+  rt::Rng rng(42);
+  const auto coord = [&] { return 4.0f * rng.next_float() - 2.0f; };
+  int hits = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    rt::PackedTriangle tris[4];
+    rt::TriangleQuad quad{};
+    const int used = 1 + trial % 4;  // the lanes left over must never hit
+    for (int lane = 0; lane < used; ++lane) {
+      tris[lane] = rt::PackedTriangle::from_vertices(rt::Vec3(coord(), coord(), coord()),
+                                                     rt::Vec3(coord(), coord(), coord()),
+                                                     rt::Vec3(coord(), coord(), coord()));
+      rt::set_quad_lane(quad, lane, tris[lane]);
+    }
+    rt::Ray ray;
+    ray.origin = rt::Vec3(coord(), coord(), 5.0f);
+    ray.direction = rt::Vec3(0.3f * coord(), 0.3f * coord(), -1.0f);
+    ray.tmin = 0.0f;
+    ray.tmax = 4.0f + 4.0f * rng.next_float();
+    rt::Float4 t, b1, b2;
+    const unsigned mask = rt::intersect_quad(quad, rt::QuadRay(ray), ray.tmin, ray.tmax, t, b1, b2);
+    for (int lane = 0; lane < 4; ++lane) {
+      rt::Hit hit;
+      const bool scalar = lane < used && rt::intersect_triangle(tris[lane], ray, hit);
+      REQUIRE(((mask >> lane) & 1u) == (scalar ? 1u : 0u));
+      if (!scalar) continue;
+      ++hits;
+      CHECK(t[lane] == hit.t);  // bit for bit: the same operations in the same order
+      CHECK(b1[lane] == hit.b1);
+      CHECK(b2[lane] == hit.b2);
+    }
+  }
+  CHECK(hits > 1000);
 }
