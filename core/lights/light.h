@@ -51,12 +51,17 @@ inline LightSample sample_light(const DirectionalLight& light, Vec3 /*point*/, V
   return s;
 }
 
-inline LightSample sample_light(const RectLight& light, Vec3 point, Vec2 u) {
+// `unit_normal` is light.normal(), computed once by a caller that samples the light many times.
+inline LightSample sample_rect_light(const RectLight& light, Vec3 unit_normal, Vec3 point, Vec2 u) {
   LightSample s = light_sample_towards(point, light.point(u), light.color);
-  const float cos_light = -glm::dot(s.direction, light.normal());
+  const float cos_light = -glm::dot(s.direction, unit_normal);
   const float emitted = light.two_sided ? std::fabs(cos_light) : std::max(0.0f, cos_light);
   s.radiance *= light.attenuation(s.distance) * emitted;
   return s;
+}
+
+inline LightSample sample_light(const RectLight& light, Vec3 point, Vec2 u) {
+  return sample_rect_light(light, light.normal(), point, u);
 }
 
 inline LightSample sample_light(const Light& light, Vec3 point, Vec2 u) {

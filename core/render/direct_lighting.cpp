@@ -19,6 +19,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     // A point light is one sample; an area light shadow_samples points stratified over it, one
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
     const int count = light_sample_count(light, samples);
+    // A rect light's frame, once per point rather than once per sample.
+    const RectLight* rect = std::get_if<RectLight>(&light);
+    const Vec3 rect_normal = rect ? rect->normal() : Vec3(0.0f);
     const StratifiedGrid grid(count);
     Vec3 light_sum(0.0f);
     for (int i = 0; i < count; ++i) {
@@ -26,7 +29,8 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
                          ? Vec2(0.5f)
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
-      const LightSample ls = sample_light(light, s.position, u);
+      const LightSample ls =
+          rect ? sample_rect_light(*rect, rect_normal, s.position, u) : sample_light(light, s.position, u);
       // A light behind the geometric surface cannot reach it, whatever the shading normal says;
       // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
       // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
