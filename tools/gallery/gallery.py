@@ -20,6 +20,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sections import SECTIONS  # noqa: E402
+from tables import tables_html  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -91,14 +92,18 @@ def publish(tools, rendered, images, name, photo, display_width, stats):
 
 
 def section_html(section, figures, widths):
-    scenes = [section["scene"]]
+    scenes = [section["scene"]] if "scene" in section else []
     for scene in section.get("scenes", {}).values():
         if scene not in scenes:
             scenes.append(scene)
     out = ['<section id="%s">' % section["id"], "<h2>%s</h2>" % html.escape(section["title"]),
-           "<p>%s</p>" % html.escape(section["what"]), '<p class="how">%s</p>' % html.escape(section["how"]),
-           '<p class="scene">%s: %s</p>' % ("Scenes" if len(scenes) > 1 else "Scene",
-                                            ", ".join("<code>%s</code>" % html.escape(s) for s in scenes))]
+           "<p>%s</p>" % html.escape(section["what"]), '<p class="how">%s</p>' % html.escape(section["how"])]
+    if scenes:
+        out.append('<p class="scene">%s: %s</p>' % ("Scenes" if len(scenes) > 1 else "Scene",
+                                                    ", ".join("<code>%s</code>" % html.escape(s) for s in scenes)))
+    for path, heading in section.get("tables", []):
+        out.append('<p class="scene">From <code>%s</code>, "%s":</p>' % (html.escape(path), html.escape(heading[3:])))
+        out.append(tables_html(ROOT, path, heading))
     compare = section.get("compare")
     rest = [f for name, f in figures.items() if not compare or name not in compare]
     grid = ['<div class="grid">%s</div>' % "".join(rest)] if rest else []
@@ -182,7 +187,7 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         for section in SECTIONS:
             figures, widths = {}, {}
-            for name, options, alt, caption in section["renders"]:
+            for name, options, alt, caption in section.get("renders", []):
                 scene = section.get("scenes", {}).get(name, section["scene"])
                 stats_file = os.path.join(images, name + ".json")
                 if "--frames" in options:  # an animation: the GIF as it is, shown full size

@@ -8,6 +8,8 @@ A section is a dict:
   renders          [(name, rtcli render options, alt text, caption)]: each becomes NAME.png
                    (or NAME.gif when the options ask for frames), with its render statistics
   compare          optional (name A, name B): shown as a before/after slider
+  tables           optional [(file, heading)]: the Markdown tables under that heading of a doc, as
+                   HTML (tools/gallery/tables.py), so the page shows the figures the docs hold
 A later capability adds its own section by adding a scene and a dict here (README, "The gallery").
 """
 
@@ -132,4 +134,10 @@ SECTIONS = [
      "scene": "scenes/toys/turntable.json",
      "renders": [("toys-turntable", "--frames 0-119", "The toys turning on a tray, a looping GIF",
                   "A 4-second loop")]},
+    {"id": "speed", "title": "Speed",
+     "what": "rtcli against POV-Ray 3.7 on like-for-like twins of the scenes above, whole process and render "
+             "time, alternating runs; and rtcli's BVH against Embree on the same rays.",
+     "how": "tools/povray/twin.py writes each twin by documented rules; compare.py times both; "
+            "build/embree_compare traces one ray set through both BVHs.",
+     "tables": [("docs/benchmark.md", "## Against POV-Ray"), ("docs/benchmark.md", "### Steps on the BVH, before and after")]},
 ]
