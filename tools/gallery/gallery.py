@@ -102,7 +102,7 @@ def section_html(section, figures, widths):
         out.append('<p class="scene">%s: %s</p>' % ("Scenes" if len(scenes) > 1 else "Scene",
                                                     ", ".join("<code>%s</code>" % html.escape(s) for s in scenes)))
     for path, heading in section.get("tables", []):
-        out.append('<p class="scene">From <code>%s</code>, "%s":</p>' % (html.escape(path), html.escape(heading[3:])))
+        out.append('<p class="scene">From <code>%s</code>, "%s":</p>' % (html.escape(path), html.escape(heading.lstrip("#").strip())))
         out.append(tables_html(ROOT, path, heading))
     compare = section.get("compare")
     rest = [f for name, f in figures.items() if not compare or name not in compare]
