@@ -20,12 +20,7 @@ RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, const std::vecto
   for (const RaySet& set : sets) {
     SetThroughput t{set.name, set.rays.size(), 0, {}};
     const auto run = [&] {
-      t.hits = set.occlusion ? trace_all(set.rays, threads, [&](const Ray& ray) { return bvh.occluded(ray); })
-                             : trace_all(set.rays, threads, [&](const Ray& ray) {
-                                 Ray r = ray;
-                                 Hit hit;
-                                 return bvh.intersect(r, hit);
-                               });
+      t.hits = trace_all(set.rays, threads, [&](const Ray& ray) { return trace_ray(bvh, ray, set.occlusion); });
     };
     t.seconds = time_runs(repeats, run);
     result.sets.push_back(t);

@@ -7,6 +7,7 @@
 
 #include "cli/bench/ray_sets.h"
 #include "cli/bench/timing.h"
+#include "core/accel/bvh.h"
 #include "core/accel/primitives.h"
 #include "core/parallel_for.h"
 
@@ -37,6 +38,14 @@ RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, const std::vecto
 
 // The first build of a BVH over `prims` in a fresh process (time_in_fresh_process).
 double cold_build_seconds(const PrimitiveSet& prims, unsigned threads);
+
+// One ray of a set through rtcli's BVH: any hit for an occlusion set, else the closest.
+inline bool trace_ray(const Bvh& bvh, const Ray& ray, bool occlusion) {
+  if (occlusion) return bvh.occluded(ray);
+  Ray r = ray;
+  Hit hit;
+  return bvh.intersect(r, hit);
+}
 
 // Runs trace(ray) for every ray of `rays` on `threads` threads in chunks of 4096 from a shared
 // counter (so fast and slow regions balance out); returns how many returned true.

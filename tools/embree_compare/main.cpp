@@ -130,12 +130,7 @@ int main(int argc, char** argv) {
       const auto times = alternate(
           repeats,
           [&] {
-            trace_all(set.rays, t, [&](const Ray& ray) {
-              if (set.occlusion) return bvh.occluded(ray);
-              Ray r = ray;
-              Hit hit;
-              return bvh.intersect(r, hit);
-            });
+            trace_all(set.rays, t, [&](const Ray& ray) { return trace_ray(bvh, ray, set.occlusion); });
           },
           [&] {
             trace_all(set.rays, t, [&](const Ray& ray) {
@@ -151,11 +146,7 @@ int main(int argc, char** argv) {
     const auto packets = alternate(
         repeats,
         [&] {
-          trace_all(primary.rays, t, [&](const Ray& ray) {
-            Ray r = ray;
-            Hit hit;
-            return bvh.intersect(r, hit);
-          });
+          trace_all(primary.rays, t, [&](const Ray& ray) { return trace_ray(bvh, ray, false); });
         },
         [&] {
           parallel_for(starts.size(), t, 512, [&](unsigned, size_t p) { embree->intersect8(primary.rays, 8 * p); });
