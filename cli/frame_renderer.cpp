@@ -19,7 +19,7 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
                                  Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
-  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads)});
+  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
   totals.passes = stereo.enabled() ? 2 : 1;
   const int all_passes = frames.count() * totals.passes;
   std::string error;

@@ -100,6 +100,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--stats", render.stats,
                          "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
+  const char* isa_help =
+      "Instruction set of the BVH traversal: sse, avx2, avx512 or auto (default: RTCLI_ISA, else auto, the best this "
+      "CPU runs); the image is the same with any";
+  render_cmd->add_option("--isa", render.isa, isa_help);
 
   ValidateCommand validate;
   CLI::App* validate_cmd = app.add_subcommand(
@@ -122,6 +126,7 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--rays", bench.rays, "Replay the ray sets in FILE (from --save-rays) instead of generating them");
   bench_cmd->add_option("--save-rays", bench.save_rays,
                         "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
+  bench_cmd->add_option("--isa", bench.isa, isa_help);
 
   try {
     app.parse(argc, argv);

@@ -9,6 +9,7 @@
 #include "cli/frame_output.h"
 #include "cli/frame_renderer.h"
 #include "cli/interrupt.h"
+#include "cli/isa_choice.h"
 #include "cli/number_checks.h"
 #include "cli/output_checks.h"
 #include "cli/progress_bar.h"
@@ -243,22 +244,23 @@ bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks,
 }
 
 void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
-                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written) {
+                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used) {
+  const char* isa = isa_name(isa_used);  // whose BVH kernels traced the rays
   const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
   const unsigned threads = t.last.threads;
   if (frames.count() == 1) {
-    std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s\n",
+    std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s, %s\n",
                  cmd.scene.c_str(), settings.width, settings.height, t.seconds, load_seconds,
                  format_count(static_cast<double>(t.rays.total())).c_str(), format_ray_counts(t.rays).c_str(),
-                 rate / 1e6, threads, threads == 1 ? "" : "s");
+                 rate / 1e6, threads, threads == 1 ? "" : "s", isa);
   } else {
     std::fprintf(stderr,
                  "rendered %s: frames %d-%d (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
-                 "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s\n",
+                 "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s, %s\n",
                  cmd.scene.c_str(), frames.first, frames.last, frames.count(), settings.width, settings.height,
                  t.seconds / frames.count(), 1e3 * t.place_seconds / frames.count(), t.seconds + t.place_seconds,
                  load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
-                 threads == 1 ? "" : "s");
+                 threads == 1 ? "" : "s", isa);
   }
   const double pixels = static_cast<double>(pixel_count(settings)) * frames.count() * t.passes;
   std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
@@ -304,7 +306,9 @@ int run_render(const RenderCommand& cmd) {
 
   // Load: the first frame asked for is the one built with the scene.
   const auto load_start = std::chrono::steady_clock::now();
-  LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files);
+  const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli");
+  if (!isa) return kExitBadInput;
+  LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files, *isa);
   if (request->frames_given) options.frame = request->frames.first;
   options.animation = cmd.animation;
   options.fps = cmd.fps;
@@ -342,13 +346,13 @@ int run_render(const RenderCommand& cmd) {
     std::string error;
     const SignalBlock block;
     if (!write_render_stats(
-            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, frames, totals, load_seconds}, error)) {
+            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }
   }
   if (!cmd.quiet) {
-    print_summary(cmd, settings, frames, totals, load_seconds, written);
+    print_summary(cmd, settings, frames, totals, load_seconds, written, loaded->scene.bvh.isa());
     if (!cmd.stats.empty()) std::printf("wrote %s (the render's figures)\n", cmd.stats.c_str());
     if (cmd.aa_debug) {
       std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());

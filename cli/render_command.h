@@ -4,7 +4,7 @@
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
-//   [--allow-outside-files] [--stats FILE.json]
+//   [--allow-outside-files] [--stats FILE.json] [--isa sse|avx2|avx512|auto]
 //   [--quiet]`
 #pragma once
 
@@ -18,6 +18,7 @@ struct RenderCommand {
   std::string scene;
   std::string output;  // empty: <scene name>.png (.gif for a frame range) in the current folder
   std::optional<unsigned> threads;
+  std::optional<std::string> isa;  // --isa: sse, avx2, avx512 or auto (cli/isa_choice.h)
   std::optional<int> width, height;
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator;

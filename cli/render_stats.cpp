@@ -21,6 +21,7 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"stereo", kStereoModeNames[static_cast<size_t>(in.stereo.mode)]},
       {"eyes", t.passes},
       {"threads", t.last.threads},
+      {"isa", isa_name(in.isa)},
       {"seed", in.settings.seed},
       {"integrator", in.settings.integrator},
       {"antialias", in.settings.antialias.mode},

@@ -7,6 +7,7 @@
 
 #include "cli/frame_output.h"
 #include "cli/frame_renderer.h"
+#include "core/accel/isa.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
 
@@ -20,6 +21,7 @@ struct RenderStatsInput {
   FrameRange frames;
   const RenderTotals& totals;
   double load_seconds = 0.0;
+  Isa isa = Isa::kSse;  // whose BVH kernels traced the rays
 };
 
 // The JSON text (docs/command-line.md, "--stats" lists the keys).

@@ -9,9 +9,10 @@ namespace rt {
 
 // outside_files: --allow-outside-files (LoadLimits::outside_files).
 inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::string> camera = std::nullopt,
-                                    bool outside_files = false) {
+                                    bool outside_files = false, Isa isa = best_isa()) {
   LoadOptions options;
   options.threads = threads;
+  options.isa = isa;
   options.integrators = integrator_names();
   options.pixel_samplers = pixel_sampler_names();
   options.camera = std::move(camera);

@@ -31,6 +31,10 @@ struct Scene {
   Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
   std::vector<Light> lights;
   Bvh bvh;  // top level: analytic shapes and mesh instances (each pointing into assets->meshes)
+  // No material lets light through: a shadow ray needs only bvh.occluded(), the early-out
+  // occlusion kernel, not the transmittance visitor. False (the visitor, always right) unless
+  // whoever builds the scene has checked.
+  bool all_opaque = false;
 
   const std::vector<Material>& materials() const { return assets->materials; }
   const std::vector<Texture>& textures() const { return assets->textures; }

@@ -1,5 +1,7 @@
 #include "core/scene_graph.h"
 
+#include <algorithm>
+
 namespace rt {
 namespace {
 
@@ -113,6 +115,8 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   for (const LightPlacement& l : lights)
     scene.lights.push_back(l.node >= 0 ? transform_light(l.light, world[static_cast<size_t>(l.node)]) : l.light);
   scene.bvh = Bvh(placed, options);
+  scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
+                                  [](const Material& m) { return m.transmissive(); });
   return scene;
 }
 

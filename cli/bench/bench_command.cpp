@@ -7,6 +7,7 @@
 #include "cli/bench/ray_benchmark.h"
 #include "cli/bench/render_benchmark.h"
 #include "cli/exit_codes.h"
+#include "cli/isa_choice.h"
 #include "cli/progress_bar.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
@@ -56,6 +57,8 @@ void print_ray_table(const std::vector<RayBenchmarkResult>& results, const std::
 }  // namespace
 
 int run_bench(const BenchCommand& cmd) {
+  const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli bench");
+  if (!isa) return kExitBadInput;
   // A ray file is read first: a bad one is reported before anything slow.
   std::vector<RaySet> sets;
   std::string error;
@@ -73,22 +76,23 @@ int run_bench(const BenchCommand& cmd) {
   if (all > 1) thread_counts.push_back(all);
   // Cold builds first, each in a fresh process: nothing built here yet has warmed the memory.
   std::vector<double> cold;
-  for (const unsigned t : thread_counts) cold.push_back(cold_build_seconds(prims, t));
+  for (const unsigned t : thread_counts) cold.push_back(cold_build_seconds(prims, t, *isa));
 
   if (cmd.rays.empty()) sets = make_ray_sets(prims);
   if (!cmd.save_rays.empty() && !write_ray_sets(cmd.save_rays, sets, error)) {
     std::fprintf(stderr, "rtcli bench: error: %s\n", error.c_str());
     return kExitFailure;
   }
-  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads\n", model->name.c_str(),
-              prims.triangles.size(), prims.shapes.size(), all);
+  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads; BVH kernels: %s (of %s)\n",
+              model->name.c_str(), prims.triangles.size(), prims.shapes.size(), all, isa_name(*isa),
+              supported_isa_names().c_str());
   std::printf("rays: %s:", cmd.rays.empty() ? "generated" : cmd.rays.c_str());
   for (const RaySet& s : sets) std::printf(" %s %zu%s", s.name.c_str(), s.rays.size(), s.occlusion ? " (any hit)" : "");
   std::printf("\neach figure: the median of %d runs after a warm-up [slowest-fastest]\n", cmd.repeats);
   std::fflush(stdout);
 
   std::vector<RayBenchmarkResult> results;
-  for (const unsigned t : thread_counts) results.push_back(run_ray_benchmark(prims, sets, t, cmd.repeats));
+  for (const unsigned t : thread_counts) results.push_back(run_ray_benchmark(prims, sets, t, cmd.repeats, *isa));
   print_ray_table(results, cold);
   const RayBenchmarkResult& r0 = results.front();
   std::printf("BVH: %zu nodes, SAH cost %.1f; hit fractions:", r0.bvh_nodes, r0.sah_cost);
@@ -98,7 +102,7 @@ int run_bench(const BenchCommand& cmd) {
 
   if (cmd.scene.empty()) return kExitSuccess;
   Diagnostics diags;
-  const auto scene = load_scene(cmd.scene, cli_load_options(), diags);
+  const auto scene = load_scene(cmd.scene, cli_load_options(0, std::nullopt, false, *isa), diags);
   if (!scene) {
     print_diagnostics(stderr, diags);
     std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());

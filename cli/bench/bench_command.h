@@ -1,9 +1,11 @@
-// `rtcli bench [MODEL] [--scene SCENE.json] [--repeats N] [--rays FILE] [--save-rays FILE]`: BVH
+// `rtcli bench [MODEL] [--scene SCENE.json] [--repeats N] [--rays FILE] [--save-rays FILE]
+//   [--isa sse|avx2|avx512|auto]`: BVH
 // build time (cold and warm) and ray throughput on a mesh, for one thread and for all threads,
 // on rays made before the clock starts; then the render time of a scene. Every figure is the
 // median of N runs after a warm-up, with the fastest and slowest beside it.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace rt {
@@ -14,6 +16,7 @@ struct BenchCommand {
   int repeats = 5;        // timed runs of each figure, after one warm-up
   std::string rays;       // replay these ray sets instead of generating them
   std::string save_rays;  // write the ray sets traced here, for another build or Embree to replay
+  std::optional<std::string> isa;  // --isa: the BVH kernels measured (cli/isa_choice.h)
 };
 
 int run_bench(const BenchCommand& cmd);

@@ -4,16 +4,16 @@
 
 namespace rt {
 
-double cold_build_seconds(const PrimitiveSet& prims, unsigned threads) {
-  return time_in_fresh_process([&] { const Bvh bvh(prims, BvhBuildOptions{threads}); });
+double cold_build_seconds(const PrimitiveSet& prims, unsigned threads, Isa isa) {
+  return time_in_fresh_process([&] { const Bvh bvh(prims, BvhBuildOptions{threads, isa}); });
 }
 
 RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, const std::vector<RaySet>& sets, unsigned threads,
-                                     int repeats) {
+                                     int repeats, Isa isa) {
   RayBenchmarkResult result;
   result.threads = threads;
   Bvh bvh;
-  result.build = time_runs(repeats, [&] { bvh = Bvh(prims, BvhBuildOptions{threads}); });
+  result.build = time_runs(repeats, [&] { bvh = Bvh(prims, BvhBuildOptions{threads, isa}); });
   const BvhStats stats = bvh.stats();
   result.bvh_nodes = stats.nodes;
   result.sah_cost = stats.sah_cost;

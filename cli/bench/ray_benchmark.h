@@ -33,11 +33,12 @@ struct RayBenchmarkResult {
 
 // Builds a BVH over `prims` with `threads` threads, then traces each set with as many threads,
 // `repeats` timed runs after a warm-up each.
+// The BVH traces with `isa`'s kernels.
 RayBenchmarkResult run_ray_benchmark(const PrimitiveSet& prims, const std::vector<RaySet>& sets, unsigned threads,
-                                     int repeats);
+                                     int repeats, Isa isa);
 
 // The first build of a BVH over `prims` in a fresh process (time_in_fresh_process).
-double cold_build_seconds(const PrimitiveSet& prims, unsigned threads);
+double cold_build_seconds(const PrimitiveSet& prims, unsigned threads, Isa isa);
 
 // One ray of a set through rtcli's BVH: any hit for an occlusion set, else the closest.
 inline bool trace_ray(const Bvh& bvh, const Ray& ray, bool occlusion) {

@@ -1,11 +1,13 @@
 // Bounding volume hierarchy over a PrimitiveSet. Scenes use two levels: one BVH per mesh over its
 // triangles in object space, built once, and a top level over the analytic shapes and the mesh
 // instances, rebuilt when placements change (each animation frame). Built as a binary tree with the binned surface
-// area heuristic, then collapsed into a 4-wide tree: each node holds the boxes of up to four
-// children side by side, so one visit tests four boxes with one SIMD slab test. Nodes are a flat
-// array; traversal uses a fixed-size stack, visits the nearest child first and skips entries
-// farther than the closest hit found since they were pushed. No allocation and no virtual call
-// per ray.
+// area heuristic, then collapsed into an 8-wide tree: each node holds the boxes of up to eight
+// children side by side, so one visit tests eight boxes with one SIMD slab test (one AVX
+// instruction per step, two SSE ones). Nodes are a flat array; traversal uses a fixed-size stack,
+// visits the nearest child first and skips entries farther than the closest hit found since they
+// were pushed. No allocation and no virtual call per ray or primitive: the closest-hit and
+// occlusion queries are compiled once per instruction set (core/accel/bvh_kernels.h) and the
+// BVH calls the set chosen when it was built, one indirect call a query.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +15,8 @@
 #include <vector>
 
 #include "core/accel/alpha_cutout.h"
+#include "core/accel/bvh_kernels.h"
+#include "core/accel/isa.h"
 #include "core/accel/primitives.h"
 #include "core/accel/triangle_quad.h"
 
@@ -32,23 +36,31 @@ struct BvhRef {
   static uint32_t count(uint32_t ref) { return (ref >> kCountShift) & kMaxLeafCount; }
 };
 
-struct alignas(64) BvhNode4 {
-  // Child boxes as rows of four: lo x, hi x, lo y, hi y, lo z, hi z. An unused slot has an
+// Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/accel/simd.h
+// has 4- and 8-lane vectors); docs/benchmark.md compares 4 and 8.
+inline constexpr int kBvhWidth = 8;
+
+struct alignas(64) BvhNode {
+  // Child boxes as rows of kBvhWidth: lo x, hi x, lo y, hi y, lo z, hi z. An unused slot has an
   // inverted box (lo = +inf, hi = -inf) that no ray can enter.
-  float bounds[6][4];
-  uint32_t child[4];  // BvhRef values
-  uint8_t pad[16];
+  float bounds[6][kBvhWidth];
+  uint32_t child[kBvhWidth];  // BvhRef values
+  // Explicit, so that a zeroed node has every byte set: the tree's bytes are deterministic.
+  uint8_t pad[(7 * kBvhWidth * 4 + 63) / 64 * 64 - 7 * kBvhWidth * 4];
 };
-static_assert(sizeof(BvhNode4) == 128, "BvhNode4 must stay two cache lines");
+static_assert(sizeof(BvhNode) % 64 == 0, "a BvhNode fills whole cache lines");
 
 struct BvhBuildOptions {
   unsigned threads = 1;  // subtrees are built in parallel; the tree does not depend on this
+  // Which compiled traversal the BVH uses (and the mesh BVHs under it): the best this CPU runs
+  // unless the caller chose one (rtcli's --isa). The images are the same with any of them.
+  Isa isa = best_isa();
 };
 
 struct BvhStats {
-  size_t nodes = 0;  // 4-wide nodes
+  size_t nodes = 0;  // kBvhWidth-wide nodes
   size_t leaves = 0;
-  int max_depth = 0;      // of the 4-wide tree
+  int max_depth = 0;      // of the wide tree
   double sah_cost = 0.0;  // of the binary tree it was collapsed from, relative to one primitive test
 };
 
@@ -58,12 +70,14 @@ class Bvh {
   Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options);
 
   // Closest hit in (ray.tmin, ray.tmax); narrows ray.tmax to it.
-  bool intersect(Ray& ray, Hit& hit) const;
+  bool intersect(Ray& ray, Hit& hit) const { return kernels_->intersect(*this, ray, hit); }
   // Closest hit among the triangles `cutout` covers and whose front the ray meets if it is
   // single-sided (a mesh BVH with an alpha mask or a single-sided material).
-  bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const;
+  bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
+    return kernels_->intersect_cutout(*this, ray, hit, cutout);
+  }
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
-  bool occluded(const Ray& ray) const;
+  bool occluded(const Ray& ray) const { return kernels_->occluded(*this, ray); }
   // Any-hit with a visitor: calls visit(const Hit&) for every crossing in (ray.tmin, ray.tmax)
   // (both crossings of a sphere, say) in no particular order, until it returns true ("stop").
   // Returns whether it was stopped. Defined in core/accel/bvh_traversal.h; include that to use it.
@@ -84,7 +98,9 @@ class Bvh {
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
   const std::vector<MeshInstance>& instances() const { return instances_; }
   const std::vector<CsgObject>& csgs() const { return csgs_; }
-  const std::vector<BvhNode4>& nodes() const { return nodes_; }
+  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  // The instruction set whose traversal intersect() and occluded() run.
+  Isa isa() const { return kernels_->isa; }
   uint32_t root() const { return root_; }
   Aabb bounds() const { return bounds_; }
   BvhStats stats() const;
@@ -93,44 +109,41 @@ class Bvh {
   // sound, else what is wrong. For tests and the fuzzer (core/accel/bvh_check.cpp).
   std::string check_structure() const;
 
-  // Deepest binary tree the builder makes; the 4-wide traversal stack is sized from it.
+  // Deepest binary tree the builder makes; the traversal stack is sized from it.
   static constexpr int kMaxDepth = 64;
   // A constructor argument with bounds that are not finite throws std::invalid_argument; io
   // checks scenes first and reports such objects with their location.
 
- private:
-  template <bool kNearestFirst, class LeafVisitor>
-  bool traverse(Ray& ray, LeafVisitor&& visit_leaf) const;
-  // for_each_hit without the instance case: what an instance's (triangle-only) BVH runs, so that
-  // the visitor templates do not nest without end.
-  template <class Visitor>
-  bool for_each_primitive_hit(const Ray& ray, Visitor& visit) const;
-  // The crossings of a leaf of triangle quads (leaf_quads_[first] != kNoQuads), in slot order.
-  template <class Visitor>
-  bool visit_quad_crossings(uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
-                            Visitor& visit) const;
-  uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
-  uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
-
-  uint32_t triangle_count_ = 0;
-  std::vector<AnalyticShape> shapes_;
-  std::vector<MeshInstance> instances_;
-  std::vector<CsgObject> csgs_;
-  std::vector<BvhNode4> nodes_;
-  uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
-  Aabb bounds_;
-  double binary_sah_cost_ = 0.0;
   // What a leaf slot holds: the primitive id and, for a triangle, a copy of its data, so that a
   // leaf's primitives are one contiguous read.
   struct Slot {
     PackedTriangle triangle;  // unused for analytic shapes
     uint32_t id;
   };
+  // The layout the traversal (core/accel/bvh_traversal.h) reads.
+  static constexpr uint32_t kNoQuads = ~0u;
+  const std::vector<Slot>& slots() const { return slots_; }
+  const std::vector<TriangleQuad>& quads() const { return quads_; }
+  // quads()[leaf_quads()[a leaf's first slot]] is the leaf's first quad, or kNoQuads.
+  const std::vector<uint32_t>& leaf_quads() const { return leaf_quads_; }
+  uint32_t triangle_count() const { return triangle_count_; }
+  uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
+  uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
+
+ private:
+  const BvhKernels* kernels_ = &bvh_kernels(Isa::kSse);
+  uint32_t triangle_count_ = 0;
+  std::vector<AnalyticShape> shapes_;
+  std::vector<MeshInstance> instances_;
+  std::vector<CsgObject> csgs_;
+  std::vector<BvhNode> nodes_;
+  uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
+  Aabb bounds_;
+  double binary_sah_cost_ = 0.0;
   std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
   // Leaves of triangles alone, also as quads tested four at a time: leaf_quads_[a leaf's first
   // slot] is its first quad (its triangles in slot order, four a quad), or kNoQuads for a leaf
   // that holds anything else (core/accel/bvh_quads.cpp).
-  static constexpr uint32_t kNoQuads = ~0u;
   std::vector<TriangleQuad> quads_;
   std::vector<uint32_t> leaf_quads_;
   void build_quads();

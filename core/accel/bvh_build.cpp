@@ -4,7 +4,7 @@
 //    for the cheapest split and partitions its slice of the build records in place. Large
 //    subtrees are built on spare threads into their own arrays and spliced back in a fixed order,
 //    so the tree is identical whatever the thread count.
-// 2. A collapse to 4-wide nodes: a node adopts its children, then repeatedly replaces the
+// 2. A collapse to kBvhWidth-wide nodes: a node adopts its children, then repeatedly replaces the
 //    interior child with the largest surface area by that child's two children.
 #include <atomic>
 #include <cstring>
@@ -290,7 +290,7 @@ double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
   return cost;
 }
 
-void set_child(BvhNode4& node, int slot, const Aabb& box, uint32_t ref) {
+void set_child(BvhNode& node, int slot, const Aabb& box, uint32_t ref) {
   node.bounds[0][slot] = box.lo.x;
   node.bounds[1][slot] = box.hi.x;
   node.bounds[2][slot] = box.lo.y;
@@ -304,9 +304,9 @@ template <class NodeVector>
 uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& out) {
   const BinaryNode& n = bin[b];
   if (n.count > 0) return BvhRef::leaf(n.offset, n.count);
-  uint32_t kids[4] = {b + 1, n.offset, 0, 0};
+  uint32_t kids[kBvhWidth] = {b + 1, n.offset};
   int k = 2;
-  while (k < 4) {
+  while (k < kBvhWidth) {
     int widest = -1;
     double widest_area = -1.0;
     for (int i = 0; i < k; ++i) {
@@ -323,8 +323,8 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
   }
   const auto index = static_cast<uint32_t>(out.size());
   out.emplace_back();
-  BvhNode4 node{};  // padding zeroed too: the tree's bytes are as deterministic as its shape
-  for (int slot = 0; slot < 4; ++slot) {
+  BvhNode node{};  // padding zeroed too: the tree's bytes are as deterministic as its shape
+  for (int slot = 0; slot < kBvhWidth; ++slot) {
     if (slot < k) set_child(node, slot, bin[kids[slot]].bounds, collapse(bin, kids[slot], out));
     else set_child(node, slot, Aabb{}, 0);  // inverted box: never entered
   }
@@ -335,7 +335,8 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
 }  // namespace
 
 Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
-    : triangle_count_(static_cast<uint32_t>(prims.triangles.size())),
+    : kernels_(&bvh_kernels(options.isa)),
+      triangle_count_(static_cast<uint32_t>(prims.triangles.size())),
       shapes_(prims.shapes),
       instances_(prims.instances),
       csgs_(prims.csgs) {
@@ -379,7 +380,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   BinaryBuilder(records.get(), threads - 1).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary);
-  nodes_.reserve(binary.size() / 3 + 1);
+  nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown
   root_ = collapse(binary, 0, nodes_);
 
   slots_.resize(n);

@@ -12,7 +12,7 @@ bool contains(const Aabb& outer, const Aabb& inner) {
          inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
 }
 
-Aabb child_box(const BvhNode4& node, int slot) {
+Aabb child_box(const BvhNode& node, int slot) {
   return Aabb{Vec3(node.bounds[0][slot], node.bounds[2][slot], node.bounds[4][slot]),
               Vec3(node.bounds[1][slot], node.bounds[3][slot], node.bounds[5][slot])};
 }
@@ -54,9 +54,9 @@ std::string Bvh::check_structure() const {
       return "reference to node " + std::to_string(item.ref) + " of " + std::to_string(nodes_.size());
     if (visited[item.ref]) return "node " + std::to_string(item.ref) + " is reached twice";
     visited[item.ref] = true;
-    const BvhNode4& node = nodes_[item.ref];
+    const BvhNode& node = nodes_[item.ref];
     int children = 0;
-    for (int slot = 0; slot < 4; ++slot) {
+    for (int slot = 0; slot < kBvhWidth; ++slot) {
       const Aabb box = child_box(node, slot);
       if (box.empty()) continue;  // an unused slot
       ++children;
@@ -88,8 +88,8 @@ BvhStats Bvh::stats() const {
       ++s.leaves;
       continue;
     }
-    const BvhNode4& node = nodes_[it.ref];
-    for (int slot = 0; slot < 4; ++slot)
+    const BvhNode& node = nodes_[it.ref];
+    for (int slot = 0; slot < kBvhWidth; ++slot)
       if (node.bounds[0][slot] <= node.bounds[1][slot]) stack.push_back({node.child[slot], it.depth + 1});
   }
   return s;

@@ -30,8 +30,8 @@ void Bvh::build_quads() {
   };
   if (slots_.empty()) return;
   if (BvhRef::is_leaf(root_)) add_leaf(root_);
-  for (const BvhNode4& node : nodes_)
-    for (int slot = 0; slot < 4; ++slot)
+  for (const BvhNode& node : nodes_)
+    for (int slot = 0; slot < kBvhWidth; ++slot)
       if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot])) add_leaf(node.child[slot]);
 }
 

@@ -1,7 +1,11 @@
 // BVH traversal, templated on what a leaf does: the closest-hit search, the any-hit test and
 // every visitor of Bvh::for_each_hit share this one loop, and the compiler inlines each visitor
-// into it (no virtual call, no function pointer per primitive). Included by bvh.cpp and by
-// whoever calls for_each_hit.
+// into it (no virtual call, no function pointer per primitive). Included by the kernels of each
+// instruction set (core/accel/bvh_kernels_impl.h) and by whoever calls for_each_hit.
+//
+// Everything here lives in namespace rt::RTCLI_ISA_NS: a kernel file names its instruction set
+// before including this, every other file gets isa_generic. Code compiled for AVX2 then never
+// shares a symbol with code compiled for the baseline.
 #pragma once
 
 #include <cstring>
@@ -9,44 +13,75 @@
 #include "core/accel/bvh.h"
 #include "core/accel/simd.h"
 
-namespace rt {
-namespace bvh_detail {
+#ifndef RTCLI_ISA_NS
+#define RTCLI_ISA_NS isa_generic
+#endif
 
-// Each 4-wide level pushes at most three entries; the tree is at most kMaxDepth deep.
-constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
+
+namespace rt {
+namespace RTCLI_ISA_NS {
+
+// Each level pushes at most kBvhWidth - 1 entries; the tree is at most kMaxDepth deep.
+constexpr int kStackSize = (kBvhWidth - 1) * Bvh::kMaxDepth + 4;
 
 struct StackEntry {
   uint32_t ref;
   float t;  // where the ray enters the entry's box: skipped if a closer hit turns up meanwhile
 };
 
-// A ray prepared for slab tests against four boxes at once. For each axis, the row of the
+static_assert(kBvhWidth == 8, "the slab test below is written for 8 lanes");
+
+// A ray prepared for slab tests against a node's boxes at once. For each axis, the row of the
 // node's bounds that the ray meets first (near) and last (far) follows from the direction sign,
-// so an inverted (empty) box always yields near > far.
+// so an inverted (empty) box always yields near > far. With AVX one 8-lane vector holds a row;
+// without it, two 4-lane halves (GCC splits an 8-lane vector for SSE badly: through memory).
 struct RaySlabs {
+#if defined(__AVX__)
+  Float8 origin[3], inv_dir[3];
+#else
   Float4 origin[3], inv_dir[3];
+#endif
   int near_row[3], far_row[3];
 
   explicit RaySlabs(const Ray& ray) {
     for (int a = 0; a < 3; ++a) {
       const float inv = 1.0f / ray.direction[a];
+#if defined(__AVX__)
+      origin[a] = splat8(ray.origin[a]);
+      inv_dir[a] = splat8(inv);
+#else
       origin[a] = splat4(ray.origin[a]);
       inv_dir[a] = splat4(inv);
+#endif
       near_row[a] = 2 * a + (inv < 0.0f ? 1 : 0);
       far_row[a] = 2 * a + (inv < 0.0f ? 0 : 1);
     }
   }
 
-  // Bit i set when child i's box is entered within [tmin, tmax]; tnear gets the entry distances.
-  unsigned test(const BvhNode4& node, float tmin, float tmax, Float4& tnear) const {
-    Float4 lo = splat4(tmin), hi = splat4(tmax);
+  // Bit i set when child i's box is entered within [tmin, tmax]; tnear[i] gets its entry distance.
+  // The far distance is widened by a few ulps so rounding never loses a grazed box (pbrt-v4).
+  unsigned test(const BvhNode& node, float tmin, float tmax, float* tnear) const {
+#if defined(__AVX__)
+    Float8 lo = splat8(tmin), hi = splat8(tmax);
     for (int a = 0; a < 3; ++a) {
-      lo = max4(lo, (load4(node.bounds[near_row[a]]) - origin[a]) * inv_dir[a]);
-      hi = min4(hi, (load4(node.bounds[far_row[a]]) - origin[a]) * inv_dir[a]);
+      lo = max8(lo, (load8(node.bounds[near_row[a]]) - origin[a]) * inv_dir[a]);
+      hi = min8(hi, (load8(node.bounds[far_row[a]]) - origin[a]) * inv_dir[a]);
     }
-    tnear = lo;
-    // Widen the far distance by a few ulps so rounding never loses a grazed box (pbrt-v4).
-    return movemask4(lo <= hi * splat4(1.0000004f));
+    std::memcpy(tnear, &lo, sizeof lo);
+    return movemask8(lo <= hi * splat8(1.0000004f));
+#else
+    unsigned mask = 0;
+    for (int half = 0; half < kBvhWidth; half += 4) {
+      Float4 lo = splat4(tmin), hi = splat4(tmax);
+      for (int a = 0; a < 3; ++a) {
+        lo = max4(lo, (load4(node.bounds[near_row[a]] + half) - origin[a]) * inv_dir[a]);
+        hi = min4(hi, (load4(node.bounds[far_row[a]] + half) - origin[a]) * inv_dir[a]);
+      }
+      std::memcpy(tnear + half, &lo, sizeof lo);
+      mask |= movemask4(lo <= hi * splat4(1.0000004f)) << half;
+    }
+    return mask;
+#endif
   }
 };
 
@@ -57,33 +92,29 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
   stack[i] = e;
 }
 
-}  // namespace bvh_detail
-
 // Walks the boxes the ray enters and hands each leaf it reaches to visit_leaf(first_slot,
 // end_slot, ray), which returns true to stop. Returns whether a leaf stopped the walk.
 // kNearestFirst (closest hit): children are taken nearest first, and a leaf may narrow ray.tmax
 // so that boxes beyond it are skipped. Otherwise (any hit, every crossing) the order does not
 // matter and is not paid for: the children entered are pushed as the node lists them.
 template <bool kNearestFirst, class LeafVisitor>
-bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
-  using namespace bvh_detail;
-  if (primitive_count() == 0) return false;
+bool traverse(const Bvh& bvh, Ray& ray, LeafVisitor&& visit_leaf) {
+  if (bvh.primitive_count() == 0) return false;
+  const BvhNode* nodes = bvh.nodes().data();
   const RaySlabs slabs(ray);
   StackEntry stack[kStackSize];
   int top = 0;
-  stack[top++] = StackEntry{root_, ray.tmin};
+  stack[top++] = StackEntry{bvh.root(), ray.tmin};
   while (top > 0) {
     const StackEntry entry = stack[--top];
     if (entry.t > ray.tmax) continue;
     uint32_t ref = entry.ref;
     while (!BvhRef::is_leaf(ref)) {
-      Float4 tnear;
-      const BvhNode4& node = nodes_[ref];
-      unsigned mask = slabs.test(node, ray.tmin, ray.tmax, tnear);
+      alignas(32) float t[kBvhWidth];
+      const BvhNode& node = nodes[ref];
+      unsigned mask = slabs.test(node, ray.tmin, ray.tmax, t);
       if (mask == 0) break;
       if constexpr (!kNearestFirst) {
-        alignas(16) float t[4];
-        std::memcpy(t, &tnear, sizeof t);
         const int first = __builtin_ctz(mask);
         for (mask &= mask - 1; mask; mask &= mask - 1) {
           const int s = __builtin_ctz(mask);
@@ -94,8 +125,6 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
       }
       // Continue with the nearest child entered; push the others, farthest deepest, so that they
       // come off the stack nearest first. One or two hits are by far the common cases.
-      alignas(16) float t[4];
-      std::memcpy(t, &tnear, sizeof t);
       int slot = __builtin_ctz(mask);
       mask &= mask - 1;
       if (mask == 0) {
@@ -111,7 +140,7 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
         ref = node.child[near];
         continue;
       }
-      // Three or four: insertion-sort them onto the stack by decreasing distance, pop the nearest.
+      // Three or more: insertion-sort them onto the stack by decreasing distance, pop the nearest.
       const int base = top;
       for (int s : {slot, other}) push_sorted(stack, base, top, StackEntry{node.child[s], t[s]});
       for (; mask; mask &= mask - 1) {
@@ -126,60 +155,65 @@ bool Bvh::traverse(Ray& ray, LeafVisitor&& visit_leaf) const {
   return false;
 }
 
+// The crossings of a leaf of triangle quads (leaf_quads()[first] != kNoQuads), in slot order.
 template <class Visitor>
-bool Bvh::visit_quad_crossings(uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
-                               Visitor& visit) const {
-  for (uint32_t q = leaf_quads_[first], slot = first; slot < end; ++q, slot += 4) {
+bool visit_quad_crossings(const Bvh& bvh, uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
+                          Visitor& visit) {
+  for (uint32_t q = bvh.leaf_quads()[first], slot = first; slot < end; ++q, slot += 4) {
     Float4 t, b1, b2;
-    for (unsigned mask = intersect_quad(quads_[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask; mask &= mask - 1) {
+    for (unsigned mask = intersect_quad(bvh.quads()[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask;
+         mask &= mask - 1) {
       const int lane = __builtin_ctz(mask);
       Hit hit;
       hit.t = t[lane];
       hit.b1 = b1[lane];
       hit.b2 = b2[lane];
       hit.part = 0;
-      hit.prim = slots_[slot + static_cast<uint32_t>(lane)].id;
+      hit.prim = bvh.slots()[slot + static_cast<uint32_t>(lane)].id;
       if (visit(static_cast<const Hit&>(hit))) return true;
     }
   }
   return false;
 }
 
+// for_each_hit without the instance case: what an instance's (triangle-only) BVH runs, so that
+// the visitor templates do not nest without end.
 template <class Visitor>
-bool Bvh::for_each_primitive_hit(const Ray& ray, Visitor& visit) const {
+bool for_each_primitive_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
   Ray r = ray;  // never narrowed: every crossing in the interval is visited
   const QuadRay quad_ray(ray);
-  return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
-    if (leaf_quads_[first] != kNoQuads) return visit_quad_crossings(first, end, quad_ray, leaf_ray, visit);
+  return traverse<false>(bvh, r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+    if (bvh.leaf_quads()[first] != Bvh::kNoQuads) return visit_quad_crossings(bvh, first, end, quad_ray, leaf_ray, visit);
     for (uint32_t slot = first; slot < end; ++slot) {
-      const Slot& s = slots_[slot];
-      const bool stop = s.id < triangle_count_ ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
-                                               : visit_shape_crossings(shape(s.id), s.id, leaf_ray, visit);
+      const Bvh::Slot& s = bvh.slots()[slot];
+      const bool stop = s.id < bvh.triangle_count() ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
+                                                    : visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit);
       if (stop) return true;
     }
     return false;
   });
 }
 
+// Bvh::for_each_hit: every crossing, mesh instances' included (relabelled as the instance's:
+// prim = instance id, part = triangle), until the visitor says stop.
 template <class Visitor>
-bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
-  if (instances_.empty() && csgs_.empty()) return for_each_primitive_hit(ray, visit);
+bool for_each_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
+  if (bvh.instances().empty() && bvh.csgs().empty()) return for_each_primitive_hit(bvh, ray, visit);
   Ray r = ray;
   const QuadRay quad_ray(ray);
-  return traverse<false>(r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
-    if (leaf_quads_[first] != kNoQuads) return visit_quad_crossings(first, end, quad_ray, leaf_ray, visit);
+  return traverse<false>(bvh, r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
+    if (bvh.leaf_quads()[first] != Bvh::kNoQuads) return visit_quad_crossings(bvh, first, end, quad_ray, leaf_ray, visit);
     for (uint32_t slot = first; slot < end; ++slot) {
-      const Slot& s = slots_[slot];
+      const Bvh::Slot& s = bvh.slots()[slot];
       bool stop = false;
-      if (s.id < triangle_count_) {
+      if (s.id < bvh.triangle_count()) {
         stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit);
-      } else if (s.id < instance_begin()) {
-        stop = visit_shape_crossings(shape(s.id), s.id, leaf_ray, visit);
-      } else if (is_csg(s.id)) {
-        stop = visit_csg_crossings(csg(s.id), s.id, leaf_ray, visit);
+      } else if (s.id < bvh.instance_begin()) {
+        stop = visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit);
+      } else if (bvh.is_csg(s.id)) {
+        stop = visit_csg_crossings(bvh.csg(s.id), s.id, leaf_ray, visit);
       } else {
-        // The mesh's crossings, relabelled as the instance's: prim = instance id, part = triangle.
-        const MeshInstance& inst = instance(s.id);
+        const MeshInstance& inst = bvh.instance(s.id);
         const uint32_t id = s.id;
         auto relabel = [&](const Hit& h) {
           if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2)) return false;  // cut out: go on
@@ -188,12 +222,23 @@ bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
           g.prim = id;
           return visit(static_cast<const Hit&>(g));
         };
-        stop = inst.bvh->for_each_primitive_hit(object_ray(inst.transform, leaf_ray), relabel);
+        stop = for_each_primitive_hit(*inst.bvh, object_ray(inst.transform, leaf_ray), relabel);
       }
       if (stop) return true;
     }
     return false;
   });
 }
+
+}  // namespace RTCLI_ISA_NS
+
+// Not in the kernel files: they call their own namespace's functions, never this member, whose
+// one definition must be the baseline's.
+#ifndef RTCLI_ISA_KERNEL
+template <class Visitor>
+bool Bvh::for_each_hit(const Ray& ray, Visitor&& visit) const {
+  return RTCLI_ISA_NS::for_each_hit(*this, ray, visit);
+}
+#endif
 
 }  // namespace rt

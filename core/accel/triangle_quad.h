@@ -19,7 +19,7 @@ struct alignas(16) TriangleQuad {
 // A ray splat across four lanes once per ray.
 struct QuadRay {
   Float4 o[3], d[3];
-  explicit QuadRay(const Ray& r) {
+  RT_SIMD_INLINE explicit QuadRay(const Ray& r) {
     for (int a = 0; a < 3; ++a) {
       o[a] = splat4(r.origin[a]);
       d[a] = splat4(r.direction[a]);
@@ -28,7 +28,7 @@ struct QuadRay {
 };
 
 // Bit i set when triangle i is hit inside (tmin, tmax); its t, b1 and b2 are lane i of the outputs.
-inline unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, float tmin, float tmax, Float4& t,
+RT_SIMD_INLINE unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, float tmin, float tmax, Float4& t,
                                Float4& b1, Float4& b2) {
   const Float4 e1x = load4(q.e1[0]), e1y = load4(q.e1[1]), e1z = load4(q.e1[2]);
   const Float4 e2x = load4(q.e2[0]), e2y = load4(q.e2[1]), e2z = load4(q.e2[2]);

@@ -6,6 +6,8 @@
 namespace rt {
 
 Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
+  // The common case: every blocker is opaque, and the first one found ends the search.
+  if (scene.all_opaque) return scene.occluded(ray) ? Vec3(0.0f) : Vec3(1.0f);
   Vec3 through(1.0f);
   // Optical depth, summed in any order: a crossing into an object at distance t adds -a t, one
   // out of it adds +a t, so a pair adds a (t_out - t_in), the length inside. Clamped at 0 for

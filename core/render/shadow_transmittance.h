@@ -14,6 +14,8 @@ namespace rt {
 // means nothing physical: Fresnel at that angle made the unbent ray meet total internal
 // reflection on the way out, and a glass sphere's shadow had a black outer ring. Any-hit
 // traversal with a visitor: it stops at the first opaque surface.
+// In a scene without transmissive materials (Scene::all_opaque): the occlusion kernel alone, which
+// gives the same answer.
 Vec3 shadow_transmittance(const Scene& scene, const Ray& ray);
 
 }  // namespace rt

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/accel/isa.h"
+
 namespace rt {
 
 struct LoadLimits {
@@ -44,6 +46,7 @@ struct LimitUsage {
 
 struct LoadOptions {
   unsigned threads = 0;                             // for the BVH build; 0 = all hardware threads
+  Isa isa = best_isa();                             // the BVH kernels the scene's BVHs use
   std::vector<std::string> integrators{"whitted"};  // valid values of /render/integrator
   std::vector<std::string> pixel_samplers{"none"};  // valid values of /render/antialias/mode
   LoadLimits limits;

@@ -29,7 +29,7 @@ class Builder {
         source_(source),
         options_(options),
         diags_(diags),
-        bvh_options_{resolve_thread_count(options.threads)} {
+        bvh_options_{resolve_thread_count(options.threads), options.isa} {
     // The scene file's tracks were counted when they were parsed; glTF files' come on top.
     if (desc_.animation)
       for (const TrackDescription& t : desc_.animation->tracks) usage_.animation_keys += t.track.keys->times.size();

@@ -149,7 +149,7 @@ TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
   CHECK(four.check_structure() == "");
   REQUIRE(one.nodes().size() == four.nodes().size());
   for (size_t i = 0; i < one.nodes().size(); ++i)
-    REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode4)) == 0);
+    REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode)) == 0);
 }
 
 TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives", "[bvh]") {
@@ -183,8 +183,8 @@ TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives"
         PackedTriangle::from_vertices({5, 5, 5}, {6, 5, 5}, {5, 6, 5 + 0.01f * static_cast<float>(i % 2)}));
   const Bvh far_bvh(far, {});
   CHECK(far_bvh.check_structure() == "");
-  for (const BvhNode4& node : far_bvh.nodes())
-    for (int slot = 0; slot < 4; ++slot)
+  for (const BvhNode& node : far_bvh.nodes())
+    for (int slot = 0; slot < kBvhWidth; ++slot)
       if (node.bounds[0][slot] <= node.bounds[1][slot]) CHECK(node.bounds[0][slot] == 5.0f);
   CHECK(bvh.stats().max_depth < Bvh::kMaxDepth);
   Ray copy = r;
@@ -250,7 +250,7 @@ TEST_CASE("BVH structure check notices a broken tree", "[bvh]") {
   const Bvh bvh(prims, {});
   REQUIRE(bvh.check_structure() == "");
   Bvh broken = bvh;
-  auto& node = const_cast<BvhNode4&>(broken.nodes()[0]);
+  auto& node = const_cast<BvhNode&>(broken.nodes()[0]);
   node.bounds[1][0] = node.bounds[0][0];  // shrink child 0 to a slab in x: its primitives stick out
   CHECK_FALSE(broken.check_structure().empty());
 }

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   // Embree's device (and its thread pool) is made before the clock starts.
   std::vector<std::pair<double, double>> cold;
   for (const unsigned t : thread_counts)
-    cold.emplace_back(cold_build_seconds(prims, t), run_in_fresh_process([&] {
+    cold.emplace_back(cold_build_seconds(prims, t, best_isa()), run_in_fresh_process([&] {
                         const EmbreeDevice device(t);
                         const auto start = std::chrono::steady_clock::now();
                         const EmbreeScene scene(device, prims.triangles);

@@ -1,0 +1,39 @@
+// The BVH queries that dominate a render, compiled once per instruction set: the closest hit, the
+// closest hit under an alpha cutout, and occlusion. core/accel/bvh_kernels_impl.h is the one
+// source; bvh_kernels_sse.cpp, _avx2.cpp and _avx512.cpp build it with their compiler flags, each
+// into its own namespace (so that no inline function of one set can stand in for another's at
+// link time). A Bvh keeps a pointer to the table of the set it was built for: one indirect call a
+// query, none per node or primitive.
+#pragma once
+
+#include "core/accel/isa.h"
+
+namespace rt {
+
+class Bvh;
+struct AlphaCutout;
+struct Ray;
+struct Hit;
+
+struct BvhKernels {
+  Isa isa;
+  bool (*intersect)(const Bvh& bvh, Ray& ray, Hit& hit);
+  bool (*intersect_cutout)(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout);
+  bool (*occluded)(const Bvh& bvh, const Ray& ray);
+};
+
+// The table for `isa`. The caller checks isa_supported() first: a kernel of a set the CPU lacks
+// stops the process with an illegal instruction.
+const BvhKernels& bvh_kernels(Isa isa);
+
+namespace isa_sse {
+extern const BvhKernels kKernels;
+}
+namespace isa_avx2 {
+extern const BvhKernels kKernels;
+}
+namespace isa_avx512 {
+extern const BvhKernels kKernels;
+}
+
+}  // namespace rt

@@ -1,0 +1,116 @@
+// The BVH kernels of every instruction set this CPU runs find exactly what the baseline's find:
+// the same primitive, distance and barycentrics, bit for bit, and the same occlusion answers.
+#include <cstring>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "core/accel/bvh.h"
+#include "core/accel/primitives.h"
+#include "core/mesh.h"
+#include "core/rng.h"
+
+using namespace rt;
+
+namespace {
+
+Vec3 random_in(Rng& rng, float lo, float hi) {
+  return Vec3(lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float());
+}
+
+// Triangles of mixed sizes (leaves of quads and of single triangles), every analytic kind, and
+// two placed instances of a mesh BVH, one behind a single-sided alpha cutout that drops every
+// third triangle (its vertex alpha).
+struct IsaScene {
+  TriangleMesh mesh;
+  Bvh mesh_bvh;
+  AlphaCutout cutout;
+  PrimitiveSet top;
+};
+
+void build(IsaScene& s, Isa isa) {
+  Rng rng(7);
+  for (uint32_t i = 0; i < 2000; ++i) {
+    const Vec3 c = random_in(rng, -4.0f, 4.0f);
+    const float size = i % 7 == 0 ? 1.5f : 0.3f;
+    for (int k = 0; k < 3; ++k) {
+      s.mesh.indices.push_back(static_cast<uint32_t>(s.mesh.positions.size()));
+      s.mesh.positions.push_back(c + size * random_in(rng, -1, 1));
+      s.mesh.colors.push_back(Vec4(1.0f, 1.0f, 1.0f, i % 3 == 0 ? 0.0f : 1.0f));
+    }
+  }
+  s.mesh_bvh = Bvh(make_triangle_set(s.mesh), BvhBuildOptions{1, isa});
+  s.cutout.mesh = &s.mesh;
+  s.cutout.masked = true;
+  s.cutout.single_sided = true;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 c = random_in(rng, -10.0f, 10.0f);
+    const float size = i % 10 == 0 ? 3.0f : 0.4f;
+    s.top.triangles.push_back(PackedTriangle::from_vertices(
+        c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1), c + size * random_in(rng, -1, 1)));
+  }
+  const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder,
+                             ShapeKind::kCone};
+  for (int i = 0; i < 40; ++i) {
+    AnalyticShape shape;
+    shape.kind = kinds[i % 5];
+    const Vec3 scale = Vec3(0.3f) + 1.5f * Vec3(rng.next_float(), rng.next_float(), rng.next_float());
+    shape.transform = *make_transform(compose_trs(random_in(rng, -10, 10), random_in(rng, -180, 180), scale));
+    s.top.shapes.push_back(shape);
+  }
+  s.top.instances.push_back(place_mesh(s.mesh_bvh, *make_transform(compose_trs(Vec3(6, 0, 0), Vec3(0, 30, 0), Vec3(1))), 0, 0));
+  s.top.instances.push_back(
+      place_mesh(s.mesh_bvh, *make_transform(compose_trs(Vec3(-6, 1, 0), Vec3(20, 0, 0), Vec3(0.7f))), 0, 0, &s.cutout));
+}
+
+bool same_hit(const Hit& a, const Hit& b) {
+  return std::memcmp(&a.t, &b.t, sizeof a.t) == 0 && std::memcmp(&a.b1, &b.b1, sizeof a.b1) == 0 &&
+         std::memcmp(&a.b2, &b.b2, sizeof a.b2) == 0 && a.prim == b.prim && a.part == b.part;
+}
+
+}  // namespace
+
+TEST_CASE("BVH kernels: every instruction set this CPU runs gives the baseline's hits, bit for bit", "[bvh][isa]") {
+  CHECK(isa_supported(Isa::kSse));
+  CHECK(isa_supported(best_isa()));
+  CHECK(parse_isa("avx2") == Isa::kAvx2);
+  CHECK_FALSE(parse_isa("auto"));
+  IsaScene base_scene;
+  build(base_scene, Isa::kSse);
+  const Bvh base(base_scene.top, BvhBuildOptions{1, Isa::kSse});
+  REQUIRE(base.isa() == Isa::kSse);
+  for (const Isa isa : kAllIsas) {
+    if (isa == Isa::kSse) continue;
+    if (!isa_supported(isa)) {
+      WARN("this CPU does not run " << isa_name(isa) << ": its kernels are built but not tested here");
+      continue;
+    }
+    INFO(isa_name(isa));
+    IsaScene scene;
+    build(scene, isa);
+    const Bvh bvh(scene.top, BvhBuildOptions{2, isa});
+    REQUIRE(bvh.isa() == isa);
+    REQUIRE(bvh.nodes().size() == base.nodes().size());
+    Rng rng(99);
+    int hits = 0, blocked = 0, differences = 0;
+    for (int i = 0; i < 40000; ++i) {
+      // Rays from all around, many of them aimed through the middle, short and long.
+      const Vec3 o = random_in(rng, -14.0f, 14.0f);
+      const Vec3 d = i % 2 ? random_in(rng, -1.0f, 1.0f) : random_in(rng, -3.0f, 3.0f) - o;
+      if (glm::length(d) < 1e-3f) continue;
+      const float tmax = i % 3 == 0 ? 0.5f + 20.0f * rng.next_float() : kInfinity;
+      Ray a{o, d, 1e-4f, tmax}, b = a;
+      const Ray s = a;
+      Hit ha, hb;
+      const bool got_a = base.intersect(a, ha), got_b = bvh.intersect(b, hb);
+      hits += got_b ? 1 : 0;
+      if (got_a != got_b || (got_a && !same_hit(ha, hb))) ++differences;
+      const bool occ_a = base.occluded(s), occ_b = bvh.occluded(s);
+      blocked += occ_b ? 1 : 0;
+      if (occ_a != occ_b) ++differences;
+    }
+    CHECK(differences == 0);
+    CHECK(hits > 10000);  // the rays do meet the scene, on all paths
+    CHECK(blocked > 10000);
+  }
+}
