@@ -83,6 +83,14 @@ class Bvh {
   // Returns whether it was stopped. Defined in core/accel/bvh_traversal.h; include that to use it.
   template <class Visitor>
   bool for_each_hit(const Ray& ray, Visitor&& visit) const;
+  // The same walk, in the kernels of the BVH's instruction set, calling visit through a pointer
+  // once per crossing: for visitors that see few crossings (shadow rays), where the walk costs far
+  // more than the call. Same crossings in the same order as for_each_hit.
+  template <class Visitor>
+  bool visit_hits(const Ray& ray, Visitor& visit) const {
+    return kernels_->visit_hits(*this, ray, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); },
+                                &visit);
+  }
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
   // BVH holds its own copy in leaf order). A hit on an instance has hit.prim = the instance's

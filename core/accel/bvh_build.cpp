@@ -132,7 +132,11 @@ class BinaryBuilder {
   // to a new thread while one is spare, and the thread is spare again when that subtree is done,
   // so work moves to wherever it remains. Every handed-off subtree is built into its own array
   // and spliced back in place, which gives exactly the array a single thread would write.
-  BinaryBuilder(BuildPrim* prims, unsigned spare_threads) : prims_(prims), spare_threads_(spare_threads) {}
+  // `block`: how many primitives a leaf tests at once (4 for triangles, tested as quads; else 1).
+  // The surface area heuristic counts a leaf's cost in blocks, as Embree's builders do, so that
+  // it makes leaves that fill their quads rather than splitting off single triangles.
+  BinaryBuilder(BuildPrim* prims, unsigned spare_threads, uint32_t block)
+      : prims_(prims), spare_threads_(spare_threads), block_(block) {}
 
   void build(const Range& range, int depth, std::vector<BinaryNode>& out) {
     const auto index = static_cast<uint32_t>(out.size());
@@ -140,7 +144,7 @@ class BinaryBuilder {
     const uint32_t n = range.count();
     Split split;
     if (n > 1 && depth < kSahDepthLimit) split = find_split(range);
-    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= static_cast<double>(n);
+    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= blocks(n);
     if (n == 1 || (n <= kMaxLeafSize && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
       out[index].count = n;
       return;
@@ -211,11 +215,11 @@ class BinaryBuilder {
         count += bins[a][k - 1].count;
         if (count == 0 || right_count[k] == 0) continue;
         const double cost =
-            wide ? kTraversalCost + (acc.half_area_wide() * static_cast<double>(count) +
-                                     right_bounds[k].half_area_wide() * static_cast<double>(right_count[k])) *
+            wide ? kTraversalCost + (acc.half_area_wide() * blocks(count) +
+                                     right_bounds[k].half_area_wide() * blocks(right_count[k])) *
                                         inv_area_wide
-                 : kTraversalCost + (acc.half_area() * static_cast<float>(count) +
-                                     right_bounds[k].half_area() * static_cast<float>(right_count[k])) *
+                 : kTraversalCost + (acc.half_area() * static_cast<float>(blocks(count)) +
+                                     right_bounds[k].half_area() * static_cast<float>(blocks(right_count[k]))) *
                                         inv_area;
         if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
       }
@@ -278,8 +282,11 @@ class BinaryBuilder {
     return false;
   }
 
+  double blocks(uint32_t count) const { return static_cast<double>((count + block_ - 1) / block_); }
+
   BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
+  uint32_t block_;
 };
 
 double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
@@ -377,7 +384,8 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n));  // the most a tree of n leaves can have: never regrown
-  BinaryBuilder(records.get(), threads - 1).build(root, 0, binary);
+  const uint32_t block = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty() ? 4 : 1;
+  BinaryBuilder(records.get(), threads - 1, block).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary);
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown

@@ -15,11 +15,17 @@ struct AlphaCutout;
 struct Ray;
 struct Hit;
 
+// A visitor of every crossing along a ray, called through a pointer: once per crossing found, which
+// for a shadow ray is a handful, never per node or primitive. Returns true to stop.
+using HitVisitorFn = bool (*)(void* visitor, const Hit& hit);
+
 struct BvhKernels {
   Isa isa;
   bool (*intersect)(const Bvh& bvh, Ray& ray, Hit& hit);
   bool (*intersect_cutout)(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout);
   bool (*occluded)(const Bvh& bvh, const Ray& ray);
+  // Bvh::for_each_hit's walk, the visitor called through `visit` (Bvh::visit_hits).
+  bool (*visit_hits)(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor);
 };
 
 // The table for `isa`. The caller checks isa_supported() first: a kernel of a set the CPU lacks

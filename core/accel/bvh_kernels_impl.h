@@ -28,7 +28,33 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
 
 [[gnu::flatten]] bool intersect_cutout(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout) {
   bool found = false;
+  const QuadRay quad_ray(ray);
   traverse<true>(bvh, ray, [&](uint32_t first, uint32_t end, Ray& r) {
+    if (const uint32_t q0 = bvh.leaf_quads()[first]; q0 != Bvh::kNoQuads) {
+      // Four triangles at a time; of the lanes hit that the cutout keeps, the nearest (the first
+      // of equals, as in slot order).
+      for (uint32_t q = q0, slot = first; slot < end; ++q, slot += 4) {
+        Float4 t, b1, b2;
+        int best = -1;
+        for (unsigned mask = intersect_quad(bvh.quads()[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask;
+             mask &= mask - 1) {
+          const int lane = __builtin_ctz(mask);
+          const uint32_t id = bvh.slots()[slot + static_cast<uint32_t>(lane)].id;
+          if ((best < 0 || t[lane] < t[best]) && cutout.front_facing(id, r.direction) &&
+              cutout.covers(id, b1[lane], b2[lane]))
+            best = lane;
+        }
+        if (best < 0) continue;
+        hit.t = t[best];
+        hit.b1 = b1[best];
+        hit.b2 = b2[best];
+        hit.part = 0;
+        hit.prim = bvh.slots()[slot + static_cast<uint32_t>(best)].id;
+        r.tmax = hit.t;
+        found = true;
+      }
+      return false;
+    }
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       Hit candidate;
@@ -94,6 +120,11 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
   return for_each_hit(bvh, ray, stop_at_first);
 }
 
+[[gnu::flatten]] bool visit_hits(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor) {
+  auto call = [&](const Hit& hit) { return visit(visitor, hit); };
+  return for_each_hit(bvh, ray, call);
+}
+
 namespace {
 
 bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) {
@@ -109,7 +140,7 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) 
 
 }  // namespace
 
-extern const BvhKernels kKernels{RTCLI_ISA, &intersect, &intersect_cutout, &occluded};
+extern const BvhKernels kKernels{RTCLI_ISA, &intersect, &intersect_cutout, &occluded, &visit_hits};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

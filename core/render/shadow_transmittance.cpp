@@ -1,6 +1,5 @@
 #include "core/render/shadow_transmittance.h"
 
-#include "core/accel/bvh_traversal.h"
 #include "materials/optics.h"
 
 namespace rt {
@@ -14,7 +13,7 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
   // the rare segment that ends inside glass (a light inside a block): that one counts as clear.
   Vec3 depth(0.0f);
   bool absorbed = false;
-  const bool blocked = scene.bvh.for_each_hit(ray, [&](const Hit& hit) {
+  auto visit = [&](const Hit& hit) {
     const Material& m = scene.materials()[scene.material_of(hit)];
     if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
     // What passes the interface: transmission times (1 - F0), the interface taken between the
@@ -26,7 +25,8 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
       absorbed = true;
     }
     return max_component(through) <= 0.0f;
-  });
+  };
+  const bool blocked = scene.bvh.visit_hits(ray, visit);
   if (blocked) return Vec3(0.0f);
   return absorbed ? through * glm::exp(-glm::max(depth, Vec3(0.0f))) : through;
 }

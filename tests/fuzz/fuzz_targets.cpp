@@ -206,8 +206,9 @@ std::string bvh_build(const uint8_t* data, size_t size) {
         PackedTriangle::from_vertices(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]));
     if (t.is_finite()) prims.triangles.push_back(t);
   }
-  const Bvh bvh(prims, BvhBuildOptions{threads});
+  const Bvh bvh(prims, BvhBuildOptions{threads});  // the best kernels this CPU runs
   if (std::string problem = bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
+  const Bvh baseline(prims, BvhBuildOptions{threads, Isa::kSse});
   const BruteForce brute(prims);
   for (size_t r = 0; r + 6 <= ray_floats; r += 6) {
     const float* v = &values[triangle_floats + r];
@@ -222,6 +223,15 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     Hit ha, hb;
     const bool found_a = bvh.intersect(a, ha), found_b = brute.intersect(b, hb);
     const bool occluded = bvh.occluded(original);
+    // Every instruction set finds the baseline's hit, bit for bit.
+    Ray c = original;
+    Hit hc;
+    const bool found_c = baseline.intersect(c, hc);
+    if (found_a != found_c || (found_a && (std::memcmp(&ha.t, &hc.t, 4) != 0 || std::memcmp(&ha.b1, &hc.b1, 4) != 0 ||
+                                           std::memcmp(&ha.b2, &hc.b2, 4) != 0 || ha.prim != hc.prim)))
+      return std::string("the ") + isa_name(bvh.isa()) + " kernels' closest hit differs from the baseline's";
+    if (occluded != baseline.occluded(original))
+      return std::string("the ") + isa_name(bvh.isa()) + " kernels' occlusion differs from the baseline's";
     // The BVH tests a subset of what brute force tests, with the same triangle test.
     if (found_a && (!found_b || ha.t < hb.t)) return "the BVH found a hit brute force did not";
     if (occluded && !found_b) return "occluded() found a hit brute force did not";
@@ -233,6 +243,11 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     // t, and each primitive at most once (triangles are crossed once).
     std::vector<std::pair<uint32_t, float>> seen_bvh, seen_brute;
     bvh.for_each_hit(original, [&](const Hit& h) { return seen_bvh.emplace_back(h.prim, h.t), false; });
+    // The dispatched walk (visit_hits) sees the same crossings in the same order.
+    std::vector<std::pair<uint32_t, float>> seen_kernel;
+    auto record = [&](const Hit& h) { return seen_kernel.emplace_back(h.prim, h.t), false; };
+    bvh.visit_hits(original, record);
+    if (seen_kernel != seen_bvh) return "visit_hits and for_each_hit saw different crossings";
     brute.for_each_hit(original, [&](const Hit& h) { return seen_brute.emplace_back(h.prim, h.t), false; });
     std::sort(seen_bvh.begin(), seen_bvh.end());
     std::sort(seen_brute.begin(), seen_brute.end());
