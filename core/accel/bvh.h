@@ -22,18 +22,24 @@
 
 namespace rt {
 
-// A child reference: an interior node index, or (top bit set) a leaf: `count` primitives from
-// `first` slot of the primitive order.
+// A child reference: an interior node index, or (top bit set) a leaf of `count` primitives: from
+// slot `first` of the primitive order, or, for a quad leaf (triangles alone, three or more), in
+// the quads from `first` of Bvh::quads(), four a quad. A quad leaf holds its triangles' ids in its
+// quads, so that visiting it reads nothing else.
 struct BvhRef {
   static constexpr uint32_t kLeafBit = 0x80000000u;
   static constexpr int kCountShift = 27;
   static constexpr uint32_t kMaxLeafCount = 15;
-  static constexpr uint32_t kMaxFirst = (1u << kCountShift) - 1;
+  static constexpr uint32_t kQuadBit = 1u << 26;
+  static constexpr uint32_t kMaxFirst = kQuadBit - 1;
 
   static uint32_t leaf(uint32_t first, uint32_t count) { return kLeafBit | (count << kCountShift) | first; }
+  static uint32_t quad_leaf(uint32_t first_quad, uint32_t count) { return leaf(first_quad, count) | kQuadBit; }
   static bool is_leaf(uint32_t ref) { return (ref & kLeafBit) != 0; }
+  static bool is_quad_leaf(uint32_t ref) { return (ref & (kLeafBit | kQuadBit)) == (kLeafBit | kQuadBit); }
   static uint32_t first(uint32_t ref) { return ref & kMaxFirst; }
   static uint32_t count(uint32_t ref) { return (ref >> kCountShift) & kMaxLeafCount; }
+  static uint32_t quad_count(uint32_t ref) { return (count(ref) + 3) / 4; }
 };
 
 // Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/accel/simd.h
@@ -129,11 +135,8 @@ class Bvh {
     uint32_t id;
   };
   // The layout the traversal (core/accel/bvh_traversal.h) reads.
-  static constexpr uint32_t kNoQuads = ~0u;
   const std::vector<Slot>& slots() const { return slots_; }
-  const std::vector<TriangleQuad>& quads() const { return quads_; }
-  // quads()[leaf_quads()[a leaf's first slot]] is the leaf's first quad, or kNoQuads.
-  const std::vector<uint32_t>& leaf_quads() const { return leaf_quads_; }
+  const std::vector<TriangleQuad>& quads() const { return quads_; }  // quad leaves' (BvhRef)
   uint32_t triangle_count() const { return triangle_count_; }
   uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
   uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
@@ -149,11 +152,9 @@ class Bvh {
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;
   std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
-  // Leaves of triangles alone, also as quads tested four at a time: leaf_quads_[a leaf's first
-  // slot] is its first quad (its triangles in slot order, four a quad), or kNoQuads for a leaf
-  // that holds anything else (core/accel/bvh_quads.cpp).
+  // Leaves of three or more triangles alone, as quads tested four at a time: their triangles in
+  // slot order, four a quad, the last one padded (core/accel/bvh_quads.cpp).
   std::vector<TriangleQuad> quads_;
-  std::vector<uint32_t> leaf_quads_;
   void build_quads();
 };
 

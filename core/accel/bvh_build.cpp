@@ -349,7 +349,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
       csgs_(prims.csgs) {
   const uint32_t n = prims.size();
   if (n == 0) return;
-  if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^27)");
+  if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^26)");
   // The build records are written on all threads, each worker a contiguous share, so that their
   // pages are first touched in parallel; the root's boxes are merged from the workers' own (min
   // and max: the same whatever the split).

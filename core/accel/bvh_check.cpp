@@ -35,6 +35,24 @@ std::string Bvh::check_structure() const {
     const Item item = stack.back();
     stack.pop_back();
     if (item.depth > kMaxDepth) return "deeper than kMaxDepth";
+    if (BvhRef::is_quad_leaf(item.ref)) {
+      const uint32_t first = BvhRef::first(item.ref), count = BvhRef::count(item.ref);
+      if (count < 3 || first + BvhRef::quad_count(item.ref) > quads_.size()) return "quad leaf outside the quad array";
+      for (uint32_t k = 0; k < 4 * BvhRef::quad_count(item.ref); ++k) {
+        const TriangleQuad& quad = quads_[first + k / 4];
+        const int lane = static_cast<int>(k % 4);
+        if (k >= count) {
+          if (quad.id[lane] != ~0u) return "a quad's unused lane holds a primitive";
+          continue;
+        }
+        const uint32_t id = quad.id[lane];
+        if (id >= triangle_count_) return "quad lane " + std::to_string(k) + " holds a non-triangle id";
+        if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
+        if (!contains(item.box, quad_lane(quad, lane).bounds()))
+          return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
+      }
+      continue;
+    }
     if (BvhRef::is_leaf(item.ref)) {
       const uint32_t first = BvhRef::first(item.ref), count = BvhRef::count(item.ref);
       if (count == 0 || first + count > n) return "leaf outside the slot array";

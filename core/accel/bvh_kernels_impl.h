@@ -29,17 +29,17 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
 [[gnu::flatten]] bool intersect_cutout(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout) {
   bool found = false;
   const QuadRay quad_ray(ray);
-  traverse<true>(bvh, ray, [&](uint32_t first, uint32_t end, Ray& r) {
-    if (const uint32_t q0 = bvh.leaf_quads()[first]; q0 != Bvh::kNoQuads) {
+  traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
+    if (BvhRef::is_quad_leaf(leaf)) {
       // Four triangles at a time; of the lanes hit that the cutout keeps, the nearest (the first
       // of equals, as in slot order).
-      for (uint32_t q = q0, slot = first; slot < end; ++q, slot += 4) {
+      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
         Float4 t, b1, b2;
         int best = -1;
-        for (unsigned mask = intersect_quad(bvh.quads()[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask;
-             mask &= mask - 1) {
+        for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
           const int lane = __builtin_ctz(mask);
-          const uint32_t id = bvh.slots()[slot + static_cast<uint32_t>(lane)].id;
+          const uint32_t id = quads[q].id[lane];
           if ((best < 0 || t[lane] < t[best]) && cutout.front_facing(id, r.direction) &&
               cutout.covers(id, b1[lane], b2[lane]))
             best = lane;
@@ -49,12 +49,13 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
         hit.b1 = b1[best];
         hit.b2 = b2[best];
         hit.part = 0;
-        hit.prim = bvh.slots()[slot + static_cast<uint32_t>(best)].id;
+        hit.prim = quads[q].id[best];
         r.tmax = hit.t;
         found = true;
       }
       return false;
     }
+    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       Hit candidate;
@@ -74,12 +75,13 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
 [[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) {
   bool found = false;
   const QuadRay quad_ray(ray);
-  traverse<true>(bvh, ray, [&](uint32_t first, uint32_t end, Ray& r) {
-    if (const uint32_t q0 = bvh.leaf_quads()[first]; q0 != Bvh::kNoQuads) {
+  traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
+    if (BvhRef::is_quad_leaf(leaf)) {
       // Four triangles at a time; the nearest lane wins, the first of equals (as in slot order).
-      for (uint32_t q = q0, slot = first; slot < end; ++q, slot += 4) {
+      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
         Float4 t, b1, b2;
-        unsigned mask = intersect_quad(bvh.quads()[q], quad_ray, r.tmin, r.tmax, t, b1, b2);
+        unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2);
         if (!mask) continue;
         int best = __builtin_ctz(mask);
         for (mask &= mask - 1; mask; mask &= mask - 1) {
@@ -90,12 +92,13 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
         hit.b1 = b1[best];
         hit.b2 = b2[best];
         hit.part = 0;
-        hit.prim = bvh.slots()[slot + static_cast<uint32_t>(best)].id;
+        hit.prim = quads[q].id[best];
         r.tmax = hit.t;
         found = true;
       }
       return false;
     }
+    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       const uint32_t id = s.id;
@@ -115,9 +118,46 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
   return found;
 }
 
+// Any hit, tuned: children in the order the node lists them, and each primitive asked only
+// whether it is crossed (a quad: whether any lane is), without making a hit record. The same
+// answer as for_each_hit with a visitor that stops at the first crossing (the bvh fuzzer checks).
 [[gnu::flatten]] bool occluded(const Bvh& bvh, const Ray& ray) {
-  auto stop_at_first = [](const Hit&) { return true; };
-  return for_each_hit(bvh, ray, stop_at_first);
+  Ray walk = ray;
+  const QuadRay quad_ray(ray);
+  return traverse<false>(bvh, walk, [&](uint32_t leaf, const Ray& r) {
+    if (BvhRef::is_quad_leaf(leaf)) {
+      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
+        Float4 t, b1, b2;
+        if (intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2)) return true;
+      }
+      return false;
+    }
+    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+    for (uint32_t slot = first; slot < end; ++slot) {
+      const Bvh::Slot& s = bvh.slots()[slot];
+      Hit hit;
+      Ray probe = r;
+      if (s.id < bvh.triangle_count()) {
+        if (intersect_triangle(s.triangle, probe, hit)) return true;
+      } else if (s.id < bvh.instance_begin()) {
+        if (intersect_shape(bvh.shape(s.id), probe, hit)) return true;
+      } else if (bvh.is_csg(s.id)) {
+        if (intersect_csg(bvh.csg(s.id), probe, hit)) return true;
+      } else {
+        const MeshInstance& inst = bvh.instance(s.id);
+        const Ray local = object_ray(inst.transform, r);
+        if (!inst.cutout) {
+          if (occluded(*inst.bvh, local)) return true;
+          continue;
+        }
+        // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
+        auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2); };
+        if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
+      }
+    }
+    return false;
+  });
 }
 
 [[gnu::flatten]] bool visit_hits(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor) {

@@ -92,8 +92,8 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
   stack[i] = e;
 }
 
-// Walks the boxes the ray enters and hands each leaf it reaches to visit_leaf(first_slot,
-// end_slot, ray), which returns true to stop. Returns whether a leaf stopped the walk.
+// Walks the boxes the ray enters and hands each leaf it reaches to visit_leaf(leaf_ref, ray)
+// (a BvhRef: slots or quads), which returns true to stop. Returns whether a leaf stopped the walk.
 // kNearestFirst (closest hit): children are taken nearest first, and a leaf may narrow ray.tmax
 // so that boxes beyond it are skipped. Otherwise (any hit, every crossing) the order does not
 // matter and is not paid for: the children entered are pushed as the node lists them.
@@ -150,26 +150,25 @@ bool traverse(const Bvh& bvh, Ray& ray, LeafVisitor&& visit_leaf) {
       ref = stack[--top].ref;
     }
     if (!BvhRef::is_leaf(ref)) continue;  // the node's children were all missed
-    if (visit_leaf(BvhRef::first(ref), BvhRef::first(ref) + BvhRef::count(ref), ray)) return true;
+    if (visit_leaf(ref, ray)) return true;
   }
   return false;
 }
 
-// The crossings of a leaf of triangle quads (leaf_quads()[first] != kNoQuads), in slot order.
+// The crossings of a quad leaf (BvhRef::is_quad_leaf), in slot order.
 template <class Visitor>
-bool visit_quad_crossings(const Bvh& bvh, uint32_t first, uint32_t end, const QuadRay& quad_ray, const Ray& ray,
-                          Visitor& visit) {
-  for (uint32_t q = bvh.leaf_quads()[first], slot = first; slot < end; ++q, slot += 4) {
+bool visit_quad_crossings(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, const Ray& ray, Visitor& visit) {
+  const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+  for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
     Float4 t, b1, b2;
-    for (unsigned mask = intersect_quad(bvh.quads()[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask;
-         mask &= mask - 1) {
+    for (unsigned mask = intersect_quad(quads[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask; mask &= mask - 1) {
       const int lane = __builtin_ctz(mask);
       Hit hit;
       hit.t = t[lane];
       hit.b1 = b1[lane];
       hit.b2 = b2[lane];
       hit.part = 0;
-      hit.prim = bvh.slots()[slot + static_cast<uint32_t>(lane)].id;
+      hit.prim = quads[q].id[lane];
       if (visit(static_cast<const Hit&>(hit))) return true;
     }
   }
@@ -182,8 +181,9 @@ template <class Visitor>
 bool for_each_primitive_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
   Ray r = ray;  // never narrowed: every crossing in the interval is visited
   const QuadRay quad_ray(ray);
-  return traverse<false>(bvh, r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
-    if (bvh.leaf_quads()[first] != Bvh::kNoQuads) return visit_quad_crossings(bvh, first, end, quad_ray, leaf_ray, visit);
+  return traverse<false>(bvh, r, [&](uint32_t leaf, const Ray& leaf_ray) {
+    if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, leaf_ray, visit);
+    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       const bool stop = s.id < bvh.triangle_count() ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
@@ -201,8 +201,9 @@ bool for_each_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
   if (bvh.instances().empty() && bvh.csgs().empty()) return for_each_primitive_hit(bvh, ray, visit);
   Ray r = ray;
   const QuadRay quad_ray(ray);
-  return traverse<false>(bvh, r, [&](uint32_t first, uint32_t end, const Ray& leaf_ray) {
-    if (bvh.leaf_quads()[first] != Bvh::kNoQuads) return visit_quad_crossings(bvh, first, end, quad_ray, leaf_ray, visit);
+  return traverse<false>(bvh, r, [&](uint32_t leaf, const Ray& leaf_ray) {
+    if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, leaf_ray, visit);
+    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       bool stop = false;

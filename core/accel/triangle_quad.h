@@ -11,9 +11,10 @@
 
 namespace rt {
 
-struct alignas(16) TriangleQuad {
+struct alignas(64) TriangleQuad {
   // Per axis, one lane per triangle. An unused lane has zero edges: det = 0, never hit.
   float v0[3][4], e1[3][4], e2[3][4];
+  uint32_t id[4];  // each lane's primitive id (~0 for an unused lane)
 };
 
 // A ray splat across four lanes once per ray.
@@ -48,13 +49,25 @@ RT_SIMD_INLINE unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, 
   return movemask4(inside);
 }
 
-// Lane `lane` of `quad` set to `tri`.
-inline void set_quad_lane(TriangleQuad& quad, int lane, const PackedTriangle& tri) {
+// Lane `lane` of `quad` set to `tri`, primitive `id`.
+inline void set_quad_lane(TriangleQuad& quad, int lane, const PackedTriangle& tri, uint32_t id = ~0u) {
+  quad.id[lane] = id;
   for (int a = 0; a < 3; ++a) {
     quad.v0[a][lane] = tri.v0[a];
     quad.e1[a][lane] = tri.e1[a];
     quad.e2[a][lane] = tri.e2[a];
   }
+}
+
+// Lane `lane` of `quad` as a triangle (the copy set_quad_lane made, bit for bit).
+inline PackedTriangle quad_lane(const TriangleQuad& quad, int lane) {
+  PackedTriangle tri;
+  for (int a = 0; a < 3; ++a) {
+    tri.v0[a] = quad.v0[a][lane];
+    tri.e1[a] = quad.e1[a][lane];
+    tri.e2[a] = quad.e2[a][lane];
+  }
+  return tri;
 }
 
 }  // namespace rt
