@@ -64,8 +64,6 @@ struct alignas(32) BuildPrim {
   Float4 centroid() const { return splat4(0.5f) * lo + splat4(0.5f) * hi; }
 };
 
-typedef int32_t Int4 __attribute__((vector_size(16)));
-
 // No default member initialisers: arrays of bins are filled only as far as a node needs.
 struct Box4 {
   Float4 lo, hi;
@@ -132,9 +130,8 @@ class BinaryBuilder {
   // to a new thread while one is spare, and the thread is spare again when that subtree is done,
   // so work moves to wherever it remains. Every handed-off subtree is built into its own array
   // and spliced back in place, which gives exactly the array a single thread would write.
-  // `block`: how many primitives a leaf tests at once (4 for triangles, tested as quads; else 1).
-  // The surface area heuristic counts a leaf's cost in blocks, as Embree's builders do, so that
-  // it makes leaves that fill their quads rather than splitting off single triangles.
+  // `block`: primitives a leaf tests at once (4: triangles, as quads). The SAH counts a leaf's cost
+  // in blocks, as Embree's builders do, so that leaves fill their quads.
   BinaryBuilder(BuildPrim* prims, unsigned spare_threads, uint32_t block)
       : prims_(prims), spare_threads_(spare_threads), block_(block) {}
 
@@ -283,7 +280,6 @@ class BinaryBuilder {
   }
 
   double blocks(uint32_t count) const { return static_cast<double>((count + block_ - 1) / block_); }
-
   BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
   uint32_t block_;
@@ -384,8 +380,8 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n));  // the most a tree of n leaves can have: never regrown
-  const uint32_t block = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty() ? 4 : 1;
-  BinaryBuilder(records.get(), threads - 1, block).build(root, 0, binary);
+  const bool triangles_only = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty();
+  BinaryBuilder(records.get(), threads - 1, triangles_only ? 4 : 1).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary);
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown

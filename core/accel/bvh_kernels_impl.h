@@ -21,6 +21,31 @@ bool intersect(const Bvh& bvh, Ray& ray, Hit& hit);
 
 namespace {
 
+// The nearest crossing of a quad leaf's triangles that keep(id, b1, b2) accepts, four at a time:
+// the first of equals, as one triangle at a time in slot order would find. Narrows r.tmax to it.
+template <class Keep>
+bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit, const Keep& keep) {
+  bool found = false;
+  const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+  for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
+    Float4 t, b1, b2;
+    int best = -1;
+    for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
+      const int lane = __builtin_ctz(mask);
+      if ((best < 0 || t[lane] < t[best]) && keep(quads[q].id[lane], b1[lane], b2[lane])) best = lane;
+    }
+    if (best < 0) continue;
+    hit.t = t[best];
+    hit.b1 = b1[best];
+    hit.b2 = b2[best];
+    hit.part = 0;
+    hit.prim = quads[q].id[best];
+    r.tmax = hit.t;
+    found = true;
+  }
+  return found;
+}
+
 // The mesh's BVH in object space; the triangle's index goes to hit.part, the caller sets prim.
 bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
 
@@ -31,28 +56,10 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
   const QuadRay quad_ray(ray);
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
     if (BvhRef::is_quad_leaf(leaf)) {
-      // Four triangles at a time; of the lanes hit that the cutout keeps, the nearest (the first
-      // of equals, as in slot order).
-      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
-      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
-        Float4 t, b1, b2;
-        int best = -1;
-        for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
-          const int lane = __builtin_ctz(mask);
-          const uint32_t id = quads[q].id[lane];
-          if ((best < 0 || t[lane] < t[best]) && cutout.front_facing(id, r.direction) &&
-              cutout.covers(id, b1[lane], b2[lane]))
-            best = lane;
-        }
-        if (best < 0) continue;
-        hit.t = t[best];
-        hit.b1 = b1[best];
-        hit.b2 = b2[best];
-        hit.part = 0;
-        hit.prim = quads[q].id[best];
-        r.tmax = hit.t;
-        found = true;
-      }
+      const auto kept = [&](uint32_t id, float b1, float b2) {
+        return cutout.front_facing(id, r.direction) && cutout.covers(id, b1, b2);
+      };
+      found |= nearest_in_quads(bvh, leaf, quad_ray, r, hit, kept);
       return false;
     }
     const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
@@ -77,25 +84,7 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
   const QuadRay quad_ray(ray);
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
     if (BvhRef::is_quad_leaf(leaf)) {
-      // Four triangles at a time; the nearest lane wins, the first of equals (as in slot order).
-      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
-      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
-        Float4 t, b1, b2;
-        unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2);
-        if (!mask) continue;
-        int best = __builtin_ctz(mask);
-        for (mask &= mask - 1; mask; mask &= mask - 1) {
-          const int lane = __builtin_ctz(mask);
-          if (t[lane] < t[best]) best = lane;
-        }
-        hit.t = t[best];
-        hit.b1 = b1[best];
-        hit.b2 = b2[best];
-        hit.part = 0;
-        hit.prim = quads[q].id[best];
-        r.tmax = hit.t;
-        found = true;
-      }
+      found |= nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
       return false;
     }
     const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);

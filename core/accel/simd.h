@@ -18,6 +18,7 @@ namespace rt {
 
 typedef float Float4 __attribute__((vector_size(16)));
 typedef int32_t Mask4 __attribute__((vector_size(16)));
+typedef int32_t Int4 __attribute__((vector_size(16)));  // whole numbers, as the BVH builder's bins
 typedef float Float8 __attribute__((vector_size(32)));
 typedef int32_t Mask8 __attribute__((vector_size(32)));
 
