@@ -31,6 +31,17 @@ void Bvh::build_quads() {
     return BvhRef::quad_leaf(first_quad, count);
   };
   if (slots_.empty()) return;
+  // Room for every quad at once: a leaf takes ceil(count / 4), and quads are three cache lines
+  // each, too many to copy on every regrowth.
+  size_t quads = 0;
+  const auto count_quads = [&](uint32_t ref) {
+    if (BvhRef::count(ref) >= kMinQuadLeaf) quads += BvhRef::quad_count(ref);  // an upper bound
+  };
+  if (BvhRef::is_leaf(root_)) count_quads(root_);
+  for (const BvhNode& node : nodes_)
+    for (int slot = 0; slot < kBvhWidth; ++slot)
+      if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot])) count_quads(node.child[slot]);
+  quads_.reserve(quads);
   if (BvhRef::is_leaf(root_)) root_ = quad_ref(root_);
   for (BvhNode& node : nodes_)
     for (int slot = 0; slot < kBvhWidth; ++slot)
