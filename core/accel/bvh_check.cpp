@@ -37,7 +37,7 @@ std::string Bvh::check_structure() const {
     if (item.depth > kMaxDepth) return "deeper than kMaxDepth";
     if (BvhRef::is_quad_leaf(item.ref)) {
       const uint32_t first = BvhRef::first(item.ref), count = BvhRef::count(item.ref);
-      if (count < 3 || first + BvhRef::quad_count(item.ref) > quads_.size()) return "quad leaf outside the quad array";
+      if (count == 0 || first + BvhRef::quad_count(item.ref) > quads_.size()) return "quad leaf outside the quad array";
       for (uint32_t k = 0; k < 4 * BvhRef::quad_count(item.ref); ++k) {
         const TriangleQuad& quad = quads_[first + k / 4];
         const int lane = static_cast<int>(k % 4);

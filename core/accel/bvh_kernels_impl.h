@@ -4,8 +4,8 @@
 //
 // The entry points are flattened: every inline function they call (the traversal, the triangle
 // and quad tests, glm's maths) is compiled into them, so none is emitted out of line with this
-// file's flags, where the linker could pick it for a baseline caller. tests/core/CMakeLists.txt
-// checks that with nm. What stays a call (the analytic shapes, CSG, libm) is baseline code.
+// file's flags, where the linker could pick it for a baseline caller.
+// tests/tools/check_kernel_symbols.cmake checks that with nm. What stays a call (the analytic shapes, CSG, libm) is baseline code.
 #pragma once
 
 #ifndef RTCLI_ISA_KERNEL

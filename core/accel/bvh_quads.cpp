@@ -31,22 +31,19 @@ void Bvh::build_quads() {
     return BvhRef::quad_leaf(first_quad, count);
   };
   if (slots_.empty()) return;
-  // Room for every quad at once: a leaf takes ceil(count / 4), and quads are three cache lines
-  // each, too many to copy on every regrowth.
-  size_t quads = 0;
-  const auto count_quads = [&](uint32_t ref) {
-    if (BvhRef::count(ref) >= kMinQuadLeaf) quads += BvhRef::quad_count(ref);  // an upper bound
+  // Every leaf reference, the root's and the nodes' used slots.
+  const auto each_leaf = [&](const auto& visit) {
+    if (BvhRef::is_leaf(root_)) visit(root_);
+    for (BvhNode& node : nodes_)
+      for (int slot = 0; slot < kBvhWidth; ++slot)
+        if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot])) visit(node.child[slot]);
   };
-  if (BvhRef::is_leaf(root_)) count_quads(root_);
-  for (const BvhNode& node : nodes_)
-    for (int slot = 0; slot < kBvhWidth; ++slot)
-      if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot])) count_quads(node.child[slot]);
+  // Room for every quad at once (an upper bound: a leaf takes ceil(count / 4)); quads are three
+  // cache lines each, too many to copy on every regrowth.
+  size_t quads = 0;
+  each_leaf([&](uint32_t& ref) { quads += BvhRef::count(ref) >= kMinQuadLeaf ? BvhRef::quad_count(ref) : 0; });
   quads_.reserve(quads);
-  if (BvhRef::is_leaf(root_)) root_ = quad_ref(root_);
-  for (BvhNode& node : nodes_)
-    for (int slot = 0; slot < kBvhWidth; ++slot)
-      if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot]))
-        node.child[slot] = quad_ref(node.child[slot]);
+  each_leaf([&](uint32_t& ref) { ref = quad_ref(ref); });
 }
 
 }  // namespace rt
