@@ -74,7 +74,9 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
     si.tangent = b0 * mesh.tangents[i0] + hit.b1 * mesh.tangents[i1] + hit.b2 * mesh.tangents[i2];
 
   // Then out to the world.
-  si.position = placement.point_to_world(position);
+  // pbrt-v4's bound for a point from barycentrics (section 6.8.5).
+  const Vec3 error = float_gamma(7) * (glm::abs(b0 * p0) + glm::abs(hit.b1 * p1) + glm::abs(hit.b2 * p2));
+  si.position = placement.point_to_world(position, error, si.position_error);
   si.geometric_normal = placement.normal_to_world_unit(geometric);
   si.shading_normal = placement.normal_to_world_unit(shading);
   for (UvFrame& f : si.texcoord) {

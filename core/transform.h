@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/aabb.h"
+#include "core/float_error.h"
 #include "core/math.h"
 #include "core/ray.h"
 
@@ -17,6 +18,11 @@ struct Transform {
   Mat3 normal_to_world{1.0f};  // inverse transpose of the linear part of to_world
 
   Vec3 point_to_world(Vec3 p) const { return Vec3(to_world * Vec4(p, 1.0f)); }
+  // The same, with the world point's error bound for a point known within +-p_error.
+  Vec3 point_to_world(Vec3 p, Vec3 p_error, Vec3& world_error) const {
+    world_error = transformed_point_error(to_world, p, p_error);
+    return point_to_world(p);
+  }
   Vec3 vector_to_world(Vec3 v) const { return Mat3(to_world) * v; }
   Vec3 normal_to_world_unit(Vec3 n) const { return glm::normalize(normal_to_world * n); }
   Vec3 point_to_object(Vec3 p) const { return Vec3(to_object * Vec4(p, 1.0f)); }
@@ -33,12 +39,30 @@ inline Transform compose(const Transform& outer, const Transform& inner) {
                    outer.normal_to_world * inner.normal_to_world};
 }
 
-// The ray in the object space of `t`: origin and direction through to_object, the interval
-// unchanged. The direction is not renormalised, so a t found there is the same t in world space.
-inline Ray object_ray(const Transform& t, const Ray& ray) {
+// The ray in the object space of `t`: origin and direction through to_object. The direction is
+// not renormalised, so a t found there is the same t in world space. transformed_ray keeps the
+// interval; object_ray starts it later by the distance the origin's rounding in this transform
+// could reach (pbrt-v4's rule): a ray leaving a surface (core/ray.h) must not find that surface
+// again on this side of the rounding.
+// The distance along a ray (in its t) that the rounding of its origin into t's object space can
+// reach; `object_direction` is the ray's direction there.
+inline float origin_rounding(const Transform& t, Vec3 world_origin, Vec3 object_direction) {
+  const float length2 = glm::dot(object_direction, object_direction);
+  if (!(length2 > 0.0f)) return 0.0f;
+  return glm::dot(glm::abs(object_direction), transformed_point_error(t.to_object, world_origin, Vec3(0.0f))) /
+         length2;
+}
+
+inline Ray transformed_ray(const Transform& t, const Ray& ray) {
   Ray r = ray;
   r.origin = t.point_to_object(ray.origin);
   r.direction = t.vector_to_object(ray.direction);
+  return r;
+}
+
+inline Ray object_ray(const Transform& t, const Ray& ray) {
+  Ray r = transformed_ray(t, ray);
+  r.tmin += origin_rounding(t, ray.origin, r.direction);
   return r;
 }
 

@@ -53,6 +53,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
                                   SurfaceDetailSwitches detail) {
   EvaluatedSurface s;
   s.position = si.position;
+  s.position_error = si.position_error;
   s.shadow_lift = si.shadow_lift;
   s.wo = -glm::normalize(ray_direction);
   // Shade the side the ray sees: both sides of an opaque surface are lit like its front.

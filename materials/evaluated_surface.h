@@ -15,6 +15,7 @@ namespace rt {
 
 struct EvaluatedSurface {
   Vec3 position{0.0f};
+  Vec3 position_error{0.0f};  // SurfaceInteraction's, for where rays leave (core/ray.h)
   Vec3 shadow_lift{0.0f};     // shadow rays start at position + shadow_lift (SurfaceInteraction's)
   Vec3 n{0.0f, 0.0f, 1.0f};   // unit shading normal, on the side the ray came from
   Vec3 ng{0.0f, 0.0f, 1.0f};  // unit geometric normal, same side

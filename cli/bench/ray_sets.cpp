@@ -62,13 +62,19 @@ std::vector<RaySet> make_ray_sets(const PrimitiveSet& prims) {
     Ray ray = primary.rays[i];
     Hit hit;
     if (!bvh.intersect(ray, hit)) return;
-    const Vec3 p = ray.at(hit.t);
-    const Vec3 n = prims.is_triangle(hit.prim)
-                       ? glm::normalize(glm::cross(prims.triangles[hit.prim].e1, prims.triangles[hit.prim].e2))
-                       : -ray.direction;
+    Vec3 p = ray.at(hit.t), n = -ray.direction;
+    // Far from the surface by t's rounding at most (a generous bound); a triangle's point is
+    // found from its barycentrics instead, as the renderer does, with pbrt-v4's bound.
+    Vec3 error = float_gamma(16) * (glm::abs(ray.origin) + glm::abs(hit.t * ray.direction));
+    if (prims.is_triangle(hit.prim)) {
+      const PackedTriangle& tri = prims.triangles[hit.prim];
+      p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
+      error = float_gamma(7) * (glm::abs(tri.v0) + glm::abs(hit.b1 * tri.e1) + glm::abs(hit.b2 * tri.e2));
+      n = glm::normalize(glm::cross(tri.e1, tri.e2));
+    }
     const Vec3 to_light = light - p;
     shadow[i].direction = glm::normalize(to_light);
-    shadow[i].origin = offset_ray_origin(p, n, shadow[i].direction);
+    shadow[i].origin = offset_ray_origin(p, error, n, shadow[i].direction);
     shadow[i].tmax = glm::length(to_light);
     has[i] = 1;
   });

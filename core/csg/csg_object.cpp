@@ -191,16 +191,24 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
   CsgSpanList spans;
   csg.spans(ray, spans);
+  // The spans are found along the whole line, so the rule object_ray applies to one shape is
+  // applied here: a ray leaving the solid's surface must not find it again within the rounding
+  // of its origin in any operand's space (core/transform.h).
+  float tmin = ray.tmin;
+  for (const CsgSurface& s : csg.surfaces()) {
+    const Transform& t = s.transform();
+    tmin = std::max(tmin, ray.tmin + origin_rounding(t, ray.origin, t.vector_to_object(ray.direction)));
+  }
   float best = ray.tmax;
   const CsgBoundary* found = nullptr;
   bool leaving = false;
   uint32_t medium = 0;
   for (const CsgSpan& s : spans) {
     if (s.in.t >= best) break;  // sorted by entry: nothing nearer follows
-    if (s.in.t > ray.tmin) {
+    if (s.in.t > tmin) {
       found = &s.in;
       leaving = false;
-    } else if (s.out.t > ray.tmin && s.out.t < best) {
+    } else if (s.out.t > tmin && s.out.t < best) {
       found = &s.out;
       leaving = true;
     } else {

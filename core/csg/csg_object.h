@@ -26,6 +26,7 @@ struct CsgSurface {
 
   uint32_t material() const { return is_mesh ? mesh.material : shape.material; }
   Aabb bounds() const { return is_mesh ? mesh.bounds : world_bounds(shape); }
+  const Transform& transform() const { return is_mesh ? mesh.transform : shape.transform; }
 };
 
 struct CsgNode {

@@ -14,6 +14,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   // One sample of an area light sits at its centre when the scene asks for one (a hard shadow, as
   // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
   const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
+  // The lifted point's bound: the sum's own rounding on top of the point's.
+  const bool lifted = s.shadow_lift != Vec3(0.0f);
+  const Vec3 lifted_error = s.position_error + float_gamma(1) * glm::abs(s.position + s.shadow_lift);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     // A point light is one sample; an area light shadow_samples points stratified over it, one
@@ -36,15 +39,16 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
       // follows the normals rather than the facets' edges.
       if (glm::dot(s.n, ls.direction) <= 0.0f) continue;
-      if (glm::dot(s.ng, ls.direction) <= 0.0f && s.shadow_lift == Vec3(0.0f)) continue;
+      if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) continue;
       if (max_component(ls.radiance) <= 0.0f) continue;  // the dark back of an area light
       Ray shadow;
       // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
       // far beside a lift of a fraction of a facet.
-      shadow.origin = offset_ray_origin(s.position + s.shadow_lift, s.ng, ls.direction);
+      shadow.origin = lifted ? offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, ls.direction)
+                             : offset_ray_origin(s.position, s.position_error, s.ng, ls.direction);
       shadow.direction = ls.direction;
       // Stop just short of the light so a surface the light sits on does not shadow it.
-      shadow.tmax = ls.distance * (1.0f - kRayOffsetScale);
+      shadow.tmax = ls.distance * (1.0f - kShadowEpsilon);
       ++ctx.counters[RayKind::kShadow];
       const Vec3 visible = shadow_transmittance(scene, shadow);
       if (max_component(visible) <= 0.0f) continue;

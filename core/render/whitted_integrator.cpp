@@ -134,7 +134,7 @@ Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const 
 Vec3 WhittedIntegrator::traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
                                     TraceContext& ctx) const {
   Ray ray;
-  ray.origin = offset_ray_origin(s.position, s.ng, direction);
+  ray.origin = offset_ray_origin(s.position, s.position_error, s.ng, direction);
   ray.direction = direction;
   ++ctx.counters[kind];
   return trace(ray, state, ctx);

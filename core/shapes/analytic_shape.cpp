@@ -45,12 +45,45 @@ SurfacePatch object_space_patch(ShapeKind kind, Vec3 p, uint32_t part) {
   return {};
 }
 
+Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
+  const auto faces_at = [&](int axis, float value) {  // a flat face: exactly on it, no error
+    p[axis] = value;
+    return Vec3(0.0f);
+  };
+  switch (kind) {
+    case ShapeKind::kSphere: {
+      const float length = glm::length(p);
+      if (length > 0.0f) p /= length;
+      return float_gamma(5) * glm::abs(p);
+    }
+    case ShapeKind::kCube: return faces_at(static_cast<int>(part < 6 ? part / 2 : 0), part % 2 == 0 ? 1.0f : -1.0f);
+    case ShapeKind::kPlane: return faces_at(1, 0.0f);
+    case ShapeKind::kCylinder:
+    case ShapeKind::kCone: {
+      const bool side = part == (kind == ShapeKind::kCylinder ? uint32_t{kCylinderSide} : uint32_t{kConeSide});
+      if (!side) return faces_at(2, kind == ShapeKind::kCone || part == kCylinderTop ? 1.0f : 0.0f);
+      // Radius 1 on the cylinder, z on the cone (whose apex is at the origin).
+      const float radius = kind == ShapeKind::kCylinder ? 1.0f : std::max(p.z, 0.0f);
+      const float r = std::sqrt(p.x * p.x + p.y * p.y);
+      if (r > 0.0f) {
+        p.x *= radius / r;
+        p.y *= radius / r;
+      }
+      return float_gamma(6) * Vec3(std::fabs(p.x), std::fabs(p.y), kind == ShapeKind::kCone ? std::fabs(p.z) : 0.0f);
+    }
+  }
+  return float_gamma(7) * glm::abs(p);
+}
+
 SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit) {
   const Ray object_ray = to_object_ray(shape, ray);
-  const Vec3 p_object = object_ray.at(hit.t);
+  Vec3 p_object = object_ray.at(hit.t);
+  // The hit point as the ray found it is only as good as t; put back on the surface it is within
+  // a few ulps of it (pbrt-v4's reprojection), which keeps rays leaving it close (core/ray.h).
+  const Vec3 object_error = onto_surface(shape.kind, p_object, hit.part);
   const SurfacePatch patch = object_space_patch(shape.kind, p_object, hit.part);
   SurfaceInteraction si;
-  si.position = shape.transform.point_to_world(p_object);
+  si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
   si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
   si.shading_normal = si.geometric_normal;
   si.texcoord[0] =

@@ -119,7 +119,7 @@ TEST_CASE("CSG scenes: a lens made of two spheres focuses parallel light where t
     REQUIRE(a.front_face);
     Vec3 inside(0.0f);
     REQUIRE(refract(r.direction, a.geometric_normal, 1.0f / n, inside));
-    Ray through = make_ray(offset_ray_origin(a.position, a.geometric_normal, inside), inside);
+    Ray through = make_ray(offset_ray_origin(a.position, a.position_error, a.geometric_normal, inside), inside);
     Hit out;
     REQUIRE(s.scene.intersect(through, out));
     const SurfaceInteraction b = s.scene.surface(through, out);

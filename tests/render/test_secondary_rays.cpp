@@ -29,7 +29,7 @@ Ray refract_at_hit(const Scene& scene, const Ray& ray, float n1, float n2) {
                                               r.direction, scene.textures());
   Ray out;
   REQUIRE(refract(glm::normalize(r.direction), s.n, n1 / n2, out.direction));
-  out.origin = offset_ray_origin(s.position, s.ng, out.direction);
+  out.origin = offset_ray_origin(s.position, s.position_error, s.ng, out.direction);
   return out;
 }
 
