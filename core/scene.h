@@ -44,6 +44,7 @@ struct Scene {
   // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
   bool intersect(Ray& ray, SceneHit& out) const;
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
+  unsigned occluded_packet(const Ray* rays, int count) const { return bvh.occluded_packet(rays, count); }
   // The material index at a hit of the top-level BVH (a CSG solid's differs by operand).
   uint32_t material_of(const Hit& hit) const;
 

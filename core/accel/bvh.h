@@ -45,6 +45,8 @@ struct BvhRef {
 // Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/accel/simd.h
 // has 4- and 8-lane vectors); docs/benchmark.md compares 4 and 8.
 inline constexpr int kBvhWidth = 8;
+// Rays per packet (Bvh::occluded_packet): one 8-lane vector.
+inline constexpr int kPacketSize = 8;
 
 struct alignas(64) BvhNode {
   // Child boxes as rows of kBvhWidth: lo x, hi x, lo y, hi y, lo z, hi z. An unused slot has an
@@ -84,6 +86,10 @@ class Bvh {
   }
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const { return kernels_->occluded(*this, ray); }
+  // occluded() for count <= kPacketSize rays at once (bit i: rays[i] is blocked), walked together
+  // where the instruction set allows: for coherent rays, such as one point's shadow rays to an
+  // area light.
+  unsigned occluded_packet(const Ray* rays, int count) const { return kernels_->occluded_packet(*this, rays, count); }
   // Any-hit with a visitor: calls visit(const Hit&) for every crossing in (ray.tmin, ray.tmax)
   // (both crossings of a sphere, say) in no particular order, until it returns true ("stop").
   // Returns whether it was stopped. Defined in core/accel/bvh_traversal.h; include that to use it.

@@ -24,6 +24,8 @@ struct BvhKernels {
   bool (*intersect)(const Bvh& bvh, Ray& ray, Hit& hit);
   bool (*intersect_cutout)(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout);
   bool (*occluded)(const Bvh& bvh, const Ray& ray);
+  // Occlusion of count <= kPacketSize rays at once: bit i set when rays[i] is blocked.
+  unsigned (*occluded_packet)(const Bvh& bvh, const Ray* rays, int count);
   // Bvh::for_each_hit's walk, the visitor called through `visit` (Bvh::visit_hits).
   bool (*visit_hits)(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor);
 };

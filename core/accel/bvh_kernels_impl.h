@@ -12,6 +12,7 @@
 #error "define RTCLI_ISA_NS, RTCLI_ISA and RTCLI_ISA_KERNEL before including bvh_kernels_impl.h"
 #endif
 
+#include "core/accel/bvh_packet.h"
 #include "core/accel/bvh_traversal.h"
 
 namespace rt {
@@ -107,46 +108,71 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
   return found;
 }
 
-// Any hit, tuned: children in the order the node lists them, and each primitive asked only
-// whether it is crossed (a quad: whether any lane is), without making a hit record. The same
+// Whether anything in a leaf crosses the ray: each primitive asked only whether it is crossed (a
+// quad: whether any lane is), without making a hit record.
+bool occluded(const Bvh& bvh, const Ray& ray);
+
+namespace {
+
+bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay& quad_ray) {
+  if (BvhRef::is_quad_leaf(leaf)) {
+    const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+    for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
+      Float4 t, b1, b2;
+      if (intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2)) return true;
+    }
+    return false;
+  }
+  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+  for (uint32_t slot = first; slot < end; ++slot) {
+    const Bvh::Slot& s = bvh.slots()[slot];
+    Hit hit;
+    Ray probe = r;
+    if (s.id < bvh.triangle_count()) {
+      if (intersect_triangle(s.triangle, probe, hit)) return true;
+    } else if (s.id < bvh.instance_begin()) {
+      if (intersect_shape(bvh.shape(s.id), probe, hit)) return true;
+    } else if (bvh.is_csg(s.id)) {
+      if (intersect_csg(bvh.csg(s.id), probe, hit)) return true;
+    } else {
+      const MeshInstance& inst = bvh.instance(s.id);
+      const Ray local = object_ray(inst.transform, r);
+      if (!inst.cutout) {
+        if (occluded(*inst.bvh, local)) return true;
+        continue;
+      }
+      // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
+      auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2); };
+      if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+// Any hit, tuned: children in the order the node lists them, and the leaf test above. The same
 // answer as for_each_hit with a visitor that stops at the first crossing (the bvh fuzzer checks).
 [[gnu::flatten]] bool occluded(const Bvh& bvh, const Ray& ray) {
   Ray walk = ray;
   const QuadRay quad_ray(ray);
-  return traverse<false>(bvh, walk, [&](uint32_t leaf, const Ray& r) {
-    if (BvhRef::is_quad_leaf(leaf)) {
-      const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
-      for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
-        Float4 t, b1, b2;
-        if (intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2)) return true;
-      }
-      return false;
-    }
-    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
-    for (uint32_t slot = first; slot < end; ++slot) {
-      const Bvh::Slot& s = bvh.slots()[slot];
-      Hit hit;
-      Ray probe = r;
-      if (s.id < bvh.triangle_count()) {
-        if (intersect_triangle(s.triangle, probe, hit)) return true;
-      } else if (s.id < bvh.instance_begin()) {
-        if (intersect_shape(bvh.shape(s.id), probe, hit)) return true;
-      } else if (bvh.is_csg(s.id)) {
-        if (intersect_csg(bvh.csg(s.id), probe, hit)) return true;
-      } else {
-        const MeshInstance& inst = bvh.instance(s.id);
-        const Ray local = object_ray(inst.transform, r);
-        if (!inst.cutout) {
-          if (occluded(*inst.bvh, local)) return true;
-          continue;
-        }
-        // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
-        auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2); };
-        if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
-      }
-    }
-    return false;
+  return traverse<false>(bvh, walk,
+                         [&](uint32_t leaf, const Ray& r) { return occluded_in_leaf(bvh, leaf, r, quad_ray); });
+}
+
+// Occlusion of up to kPacketSize rays (bit i: rays[i] is blocked), each the answer occluded()
+// gives it. With AVX the rays walk the tree together (core/accel/bvh_packet.h); without it, one
+// after another.
+[[gnu::flatten]] unsigned occluded_packet(const Bvh& bvh, const Ray* rays, int count) {
+#if defined(__AVX__)
+  if (count > 1) return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, const Ray& r, const QuadRay& q) {
+    return occluded_in_leaf(bvh, leaf, r, q);
   });
+#endif
+  unsigned blocked = 0;
+  for (int i = 0; i < count; ++i)
+    if (occluded(bvh, rays[i])) blocked |= 1u << i;
+  return blocked;
 }
 
 [[gnu::flatten]] bool visit_hits(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor) {
@@ -169,7 +195,7 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) 
 
 }  // namespace
 
-extern const BvhKernels kKernels{RTCLI_ISA, &intersect, &intersect_cutout, &occluded, &visit_hits};
+extern const BvhKernels kKernels{RTCLI_ISA, &intersect, &intersect_cutout, &occluded, &occluded_packet, &visit_hits};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

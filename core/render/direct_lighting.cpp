@@ -5,6 +5,15 @@
 
 namespace rt {
 
+namespace {
+
+// Fewer shadow rays than this to one light are traced one by one: a packet's walk tests every
+// child box for all its lanes, which pays only when enough of them are in use (measured:
+// docs/benchmark.md, "Shadow-ray packets").
+constexpr int kMinShadowPacket = 4;
+
+}  // namespace
+
 Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
@@ -26,34 +35,62 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     const RectLight* rect = std::get_if<RectLight>(&light);
     const Vec3 rect_normal = rect ? rect->normal() : Vec3(0.0f);
     const StratifiedGrid grid(count);
-    Vec3 light_sum(0.0f);
-    for (int i = 0; i < count; ++i) {
+    const auto sample_at = [&](int i) {
       const Vec2 u = count == 1 && (centred || !std::holds_alternative<RectLight>(light))
                          ? Vec2(0.5f)
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
-      const LightSample ls =
-          rect ? sample_rect_light(*rect, rect_normal, s.position, u) : sample_light(light, s.position, u);
+      return rect ? sample_rect_light(*rect, rect_normal, s.position, u) : sample_light(light, s.position, u);
+    };
+    // The shadow ray towards a sample, or false when the sample cannot light the point.
+    const auto shadow_ray = [&](const LightSample& ls, Ray& shadow) {
       // A light behind the geometric surface cannot reach it, whatever the shading normal says;
       // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
       // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
       // follows the normals rather than the facets' edges.
-      if (glm::dot(s.n, ls.direction) <= 0.0f) continue;
-      if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) continue;
-      if (max_component(ls.radiance) <= 0.0f) continue;  // the dark back of an area light
-      Ray shadow;
+      if (glm::dot(s.n, ls.direction) <= 0.0f) return false;
+      if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) return false;
+      if (max_component(ls.radiance) <= 0.0f) return false;  // the dark back of an area light
       // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
       // far beside a lift of a fraction of a facet.
       shadow.origin = lifted ? offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, ls.direction)
                              : offset_ray_origin(s.position, s.position_error, s.ng, ls.direction);
       shadow.direction = ls.direction;
+      shadow.tmin = 0.0f;
       // Stop just short of the light so a surface the light sits on does not shadow it.
       shadow.tmax = ls.distance * (1.0f - kShadowEpsilon);
       ++ctx.counters[RayKind::kShadow];
-      const Vec3 visible = shadow_transmittance(scene, shadow);
-      if (max_component(visible) <= 0.0f) continue;
-      light_sum +=
-          visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+      return true;
+    };
+    const auto lit = [&](const LightSample& ls, Vec3 visible) {
+      return visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+    };
+    Vec3 light_sum(0.0f);
+    if (count < kMinShadowPacket || !scene.all_opaque) {
+      for (int i = 0; i < count; ++i) {
+        const LightSample ls = sample_at(i);
+        Ray shadow;
+        if (!shadow_ray(ls, shadow)) continue;
+        const Vec3 visible = shadow_transmittance(scene, shadow);
+        if (max_component(visible) > 0.0f) light_sum += lit(ls, visible);
+      }
+    } else {
+      // Opaque blockers only: the samples' shadow rays in packets (Bvh::occluded_packet), each
+      // sample that reaches the light then adding its share in sample order: the same sum.
+      for (int base = 0; base < count; base += kPacketSize) {
+        const int batch = std::min(kPacketSize, count - base);
+        LightSample samples[kPacketSize];
+        Ray shadows[kPacketSize];
+        int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
+        int rays = 0;
+        for (int j = 0; j < batch; ++j) {
+          samples[j] = sample_at(base + j);
+          ray_of[j] = shadow_ray(samples[j], shadows[rays]) ? rays++ : -1;
+        }
+        const unsigned blocked = scene.occluded_packet(shadows, rays);
+        for (int j = 0; j < batch; ++j)
+          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += lit(samples[j], Vec3(1.0f));
+      }
     }
     sum += light_sum / static_cast<float>(count);
   }

@@ -16,8 +16,9 @@ using rt::test::Run;
 
 TEST_CASE("cli: --isa forces each instruction set this CPU runs, and every one renders the same bytes",
           "[cli][isa][determinism]") {
-  // Shapes, CSG, a mesh with quads in its leaves, and an alpha-masked glTF model.
-  for (const char* scene : {"scenes/primitives.json", "scenes/csg.json", "scenes/models/knot.glb",
+  // Shapes, CSG, a mesh with quads in its leaves, an alpha-masked glTF model, and an area light's
+  // shadow rays in packets (walked together with AVX, one by one with SSE).
+  for (const char* scene : {"scenes/primitives.json", "scenes/csg.json", "scenes/models/knot.glb", "scenes/soft_shadows.json",
                             "../shared/gltf/TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"}) {
     INFO(scene);
     if (std::string(scene).rfind("../shared/", 0) == 0 && !rt::test::have_sample_models()) {

@@ -114,3 +114,42 @@ TEST_CASE("BVH kernels: every instruction set this CPU runs gives the baseline's
     CHECK(blocked > 10000);
   }
 }
+
+TEST_CASE("BVH kernels: a packet of rays gets each ray's own occlusion answer, on every instruction set",
+          "[bvh][isa]") {
+  for (const Isa isa : kAllIsas) {
+    if (!isa_supported(isa)) continue;  // the case above warns
+    INFO(isa_name(isa));
+    IsaScene scene;
+    build(scene, isa);
+    const Bvh bvh(scene.top, BvhBuildOptions{2, isa});
+    Rng rng(7);
+    int rays = 0, blocked = 0, differences = 0;
+    for (int p = 0; p < 6000; ++p) {
+      // Half the packets coherent (one origin, towards a small square, as a point's shadow rays
+      // to an area light), half rays from anywhere; 1 to 8 rays, some with a finite interval.
+      const int count = 1 + p % kPacketSize;
+      const Vec3 origin = random_in(rng, -14.0f, 14.0f), target = random_in(rng, -4.0f, 4.0f);
+      Ray packet[kPacketSize];
+      for (int i = 0; i < count; ++i) {
+        Ray& r = packet[i];
+        r.origin = p % 2 ? origin : random_in(rng, -14.0f, 14.0f);
+        r.direction = (p % 2 ? target + random_in(rng, -0.5f, 0.5f) : random_in(rng, -3.0f, 3.0f)) - r.origin;
+        if (glm::length(r.direction) < 1e-3f) r.direction = Vec3(0.0f, 1.0f, 0.0f);
+        r.tmin = 1e-4f;
+        r.tmax = i % 3 == 0 ? 0.2f + rng.next_float() : kInfinity;
+      }
+      const unsigned mask = bvh.occluded_packet(packet, count);
+      for (int i = 0; i < count; ++i) {
+        const bool alone = bvh.occluded(packet[i]);
+        ++rays;
+        blocked += alone ? 1 : 0;
+        if (alone != bool(mask >> i & 1u)) ++differences;
+      }
+      if (mask >> count) ++differences;  // no bit beyond the packet
+    }
+    CHECK(differences == 0);
+    CHECK(blocked > rays / 5);
+    CHECK(blocked < rays - rays / 20);
+  }
+}

@@ -210,6 +210,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
   if (std::string problem = bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
   const Bvh baseline(prims, BvhBuildOptions{threads, Isa::kSse});
   const BruteForce brute(prims);
+  std::vector<Ray> valid;
   for (size_t r = 0; r + 6 <= ray_floats; r += 6) {
     const float* v = &values[triangle_floats + r];
     Ray a;
@@ -219,6 +220,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (!is_finite(a.origin) || !(length > 1e-6f) || !std::isfinite(length)) continue;
     a.direction = d / length;
     const Ray original = a;
+    valid.push_back(original);
     Ray b = a;
     Hit ha, hb;
     const bool found_a = bvh.intersect(a, ha), found_b = brute.intersect(b, hb);
@@ -256,6 +258,19 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (!std::includes(seen_brute.begin(), seen_brute.end(), seen_bvh.begin(), seen_bvh.end()))
       return "for_each_hit reported a crossing brute force did not";
     if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
+  }
+  // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer.
+  if (!valid.empty()) {
+    Ray packet[kPacketSize];
+    for (int i = 0; i < kPacketSize; ++i) {
+      packet[i] = valid[static_cast<size_t>(i) % valid.size()];
+      if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
+    }
+    for (int count = 1; count <= kPacketSize; ++count) {
+      const unsigned mask = bvh.occluded_packet(packet, count);
+      for (int i = 0; i < count; ++i)
+        if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "occluded_packet() and occluded() disagree";
+    }
   }
   return "";
 }
