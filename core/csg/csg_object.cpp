@@ -188,27 +188,25 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
   if (dropped) out.mark_truncated();
 }
 
+bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray) {
+  if (!(b.t > ray.tmin)) return false;
+  const Transform& t = csg.surface(b.surface).transform();
+  return b.t > ray.tmin + origin_rounding(t, ray.origin, t.vector_to_object(ray.direction));
+}
+
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
   CsgSpanList spans;
   csg.spans(ray, spans);
-  // The spans are found along the whole line, so the rule object_ray applies to one shape is
-  // applied here: a ray leaving the solid's surface must not find it again within the rounding
-  // of its origin in any operand's space (core/transform.h).
-  float tmin = ray.tmin;
-  for (const CsgSurface& s : csg.surfaces()) {
-    const Transform& t = s.transform();
-    tmin = std::max(tmin, ray.tmin + origin_rounding(t, ray.origin, t.vector_to_object(ray.direction)));
-  }
   float best = ray.tmax;
   const CsgBoundary* found = nullptr;
   bool leaving = false;
   uint32_t medium = 0;
   for (const CsgSpan& s : spans) {
     if (s.in.t >= best) break;  // sorted by entry: nothing nearer follows
-    if (s.in.t > tmin) {
+    if (csg_boundary_in_reach(csg, s.in, ray)) {
       found = &s.in;
       leaving = false;
-    } else if (s.out.t > tmin && s.out.t < best) {
+    } else if (s.out.t < best && csg_boundary_in_reach(csg, s.out, ray)) {
       found = &s.out;
       leaving = true;
     } else {

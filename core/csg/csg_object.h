@@ -80,7 +80,14 @@ inline bool csg_leaving(const Hit& hit) { return (hit.operand & 1u) != 0; }
 // and leaves ray.tmax alone.
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit);
 
-// Calls visit(hit) for each boundary in (ray.tmin, ray.tmax), nearest first, with hit.prim = id.
+// Whether boundary b lies inside the ray's interval from its start: beyond ray.tmin and beyond
+// the rounding of the ray's origin in the space of b's operand. The spans are found along the
+// whole line, so this is where the rule object_ray applies to one shape (core/transform.h) is
+// applied: a ray leaving the solid's surface must not find it again on this side of the
+// rounding. Worked out per boundary, and only past ray.tmin: a die with 21 pips has 22 spaces.
+bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray);
+
+// Calls visit(hit) for each boundary in reach before ray.tmax, nearest first, with hit.prim = id.
 // Returns true when the visitor asked to stop.
 template <class Visitor>
 bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visitor& visit) {
@@ -90,7 +97,7 @@ bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visi
     if (s.in.t >= ray.tmax) break;
     for (int leaving = 0; leaving < 2; ++leaving) {
       const CsgBoundary& b = leaving ? s.out : s.in;
-      if (!(b.t > ray.tmin && b.t < ray.tmax)) continue;
+      if (!(b.t < ray.tmax) || !csg_boundary_in_reach(csg, b, ray)) continue;
       Hit hit;
       hit.t = b.t;
       hit.prim = id;

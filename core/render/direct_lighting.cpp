@@ -76,7 +76,10 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       }
     } else {
       // Opaque blockers only: the samples' shadow rays in packets (Bvh::occluded_packet), each
-      // sample that reaches the light then adding its share in sample order: the same sum.
+      // sample that reaches the light then adding its share in sample order: the same sum. (With
+      // glass, asking the packet first and walking the rays it finds crossing something for
+      // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
+      // twice: measured, and left out.)
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         LightSample samples[kPacketSize];
