@@ -124,6 +124,9 @@ struct Split {
   Box4 left_bounds = Box4::empty(), right_bounds = Box4::empty();
 };
 
+// A leaf's cost in tests, `block` primitives a test.
+double leaf_tests(uint32_t count, uint32_t block) { return static_cast<double>((count + block - 1) / block); }
+
 class BinaryBuilder {
  public:
   // `spare_threads`: how many more threads may run at once. A large node hands its left subtree
@@ -279,17 +282,17 @@ class BinaryBuilder {
     return false;
   }
 
-  double blocks(uint32_t count) const { return static_cast<double>((count + block_ - 1) / block_); }
+  double blocks(uint32_t count) const { return leaf_tests(count, block_); }
   BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
   uint32_t block_;
 };
 
-double binary_sah_cost(const std::vector<BinaryNode>& nodes) {
+double binary_sah_cost(const std::vector<BinaryNode>& nodes, uint32_t block) {
   const double root_area = std::max(half_area(nodes[0].bounds), 1e-300);
   double cost = 0.0;
   for (const BinaryNode& n : nodes)
-    cost += half_area(n.bounds) / root_area * (n.count ? static_cast<double>(n.count) : kTraversalCost);
+    cost += half_area(n.bounds) / root_area * (n.count ? leaf_tests(n.count, block) : double{kTraversalCost});
   return cost;
 }
 
@@ -380,10 +383,10 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n));  // the most a tree of n leaves can have: never regrown
-  const bool triangles_only = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty();
-  BinaryBuilder(records.get(), threads - 1, triangles_only ? 4 : 1).build(root, 0, binary);
+  const uint32_t block = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty() ? 4 : 1;  // quads
+  BinaryBuilder(records.get(), threads - 1, block).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
-  binary_sah_cost_ = binary_sah_cost(binary);
+  binary_sah_cost_ = binary_sah_cost(binary, block);
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown
   root_ = collapse(binary, 0, nodes_);
 
