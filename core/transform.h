@@ -39,11 +39,6 @@ inline Transform compose(const Transform& outer, const Transform& inner) {
                    outer.normal_to_world * inner.normal_to_world};
 }
 
-// The ray in the object space of `t`: origin and direction through to_object. The direction is
-// not renormalised, so a t found there is the same t in world space. transformed_ray keeps the
-// interval; object_ray starts it later by the distance the origin's rounding in this transform
-// could reach (pbrt-v4's rule): a ray leaving a surface (core/ray.h) must not find that surface
-// again on this side of the rounding.
 // The distance along a ray (in its t) that the rounding of its origin into t's object space can
 // reach; `object_direction` is the ray's direction there.
 inline float origin_rounding(const Transform& t, Vec3 world_origin, Vec3 object_direction) {
@@ -53,6 +48,10 @@ inline float origin_rounding(const Transform& t, Vec3 world_origin, Vec3 object_
          length2;
 }
 
+// The ray in the object space of `t`: origin and direction through to_object. The direction is
+// not renormalised, so a t found there is the same t in world space. transformed_ray keeps the
+// interval; object_ray starts it later by origin_rounding (pbrt-v4's rule): a ray leaving a
+// surface (core/ray.h) must not find that surface again on this side of the rounding.
 inline Ray transformed_ray(const Transform& t, const Ray& ray) {
   Ray r = ray;
   r.origin = t.point_to_object(ray.origin);
