@@ -22,39 +22,84 @@ bool intersect(const Bvh& bvh, Ray& ray, Hit& hit);
 
 namespace {
 
-// The nearest crossing of a quad leaf's triangles that keep(id, b1, b2) accepts, four at a time:
-// the first of equals, as one triangle at a time in slot order would find. Narrows r.tmax to it.
+// The closest-hit order: nearer first, equals by (prim, part). Any order of testing the
+// primitives then finds the same hit, so a packet (whose walk takes leaves in another order than
+// a single ray's) and the brute-force reference (id order) agree with the single ray bit for bit.
+RT_SIMD_INLINE bool precedes(const Hit& a, const Hit& b) {
+  return a.t < b.t || (a.t == b.t && (a.prim < b.prim || (a.prim == b.prim && a.part < b.part)));
+}
+
+// Takes `candidate` as the hit when it precedes it. r.tmax stays one float past the hit's t, so
+// that a crossing at an equal t is still tested (every test accepts t < tmax only).
+RT_SIMD_INLINE bool take_if_first(const Hit& candidate, Ray& r, Hit& hit) {
+  if (!precedes(candidate, hit)) return false;
+  hit = candidate;
+  r.tmax = next_float_up(hit.t);
+  return true;
+}
+
+// The crossings of a quad leaf's triangles that keep(id, b1, b2) accepts, merged into hit.
 template <class Keep>
 bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit, const Keep& keep) {
   bool found = false;
   const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
   for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
     Float4 t, b1, b2;
-    int best = -1;
     for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
       const int lane = __builtin_ctz(mask);
-      if ((best < 0 || t[lane] < t[best]) && keep(quads[q].id[lane], b1[lane], b2[lane])) best = lane;
+      Hit candidate;
+      candidate.t = t[lane];
+      candidate.b1 = b1[lane];
+      candidate.b2 = b2[lane];
+      candidate.part = 0;
+      candidate.prim = quads[q].id[lane];
+      // The order first: keep() may read a texture.
+      if (precedes(candidate, hit) && keep(candidate.prim, candidate.b1, candidate.b2)) found |= take_if_first(candidate, r, hit);
     }
-    if (best < 0) continue;
-    hit.t = t[best];
-    hit.b1 = b1[best];
-    hit.b2 = b2[best];
-    hit.part = 0;
-    hit.prim = quads[q].id[best];
-    r.tmax = hit.t;
-    found = true;
   }
   return found;
 }
 
-// The mesh's BVH in object space; the triangle's index goes to hit.part, the caller sets prim.
-bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
+// The mesh's BVH in object space, its hit merged into `hit` (the triangle's index as part, `id`
+// as prim).
+bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit& hit);
+
+// The closest crossing in a leaf merged into hit, as above: the one leaf test of intersect() and
+// of the packets' walk.
+bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit) {
+  if (BvhRef::is_quad_leaf(leaf))
+    return nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
+  bool found = false;
+  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+  for (uint32_t slot = first; slot < end; ++slot) {
+    const Bvh::Slot& s = bvh.slots()[slot];
+    const uint32_t id = s.id;
+    if (id >= bvh.instance_begin() && id < bvh.csg_begin()) {
+      found |= intersect_instance(bvh.instance(id), id, r, hit);
+      continue;
+    }
+    // Shapes before CSG solids: a scene without CSG pays one comparison.
+    Hit candidate;
+    const bool got = id < bvh.triangle_count()    ? intersect_triangle(s.triangle, r, candidate)
+                     : id < bvh.instance_begin() ? intersect_shape(bvh.shape(id), r, candidate)
+                                                 : intersect_csg(bvh.csg(id), r, candidate);
+    candidate.prim = id;
+    if (got) found |= take_if_first(candidate, r, hit);
+  }
+  return found;
+}
 
 }  // namespace
+
+// The search's ray leaves with tmax at the hit (it ran one float past it).
+RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
+  if (found) ray.tmax = hit.t;
+}
 
 [[gnu::flatten]] bool intersect_cutout(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout) {
   bool found = false;
   const QuadRay quad_ray(ray);
+  hit = Hit{};
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
     if (BvhRef::is_quad_leaf(leaf)) {
       const auto kept = [&](uint32_t id, float b1, float b2) {
@@ -67,44 +112,28 @@ bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       Hit candidate;
-      if (s.id < bvh.triangle_count() && intersect_triangle(s.triangle, r, candidate) &&
-          cutout.front_facing(s.id, r.direction) && cutout.covers(s.id, candidate.b1, candidate.b2)) {
-        hit = candidate;
-        hit.prim = s.id;
-        r.tmax = hit.t;
-        found = true;
+      if (s.id < bvh.triangle_count() && intersect_triangle(s.triangle, r, candidate)) {
+        candidate.prim = s.id;
+        if (precedes(candidate, hit) && cutout.front_facing(s.id, r.direction) &&
+            cutout.covers(s.id, candidate.b1, candidate.b2))
+          found |= take_if_first(candidate, r, hit);
       }
     }
     return false;
   });
+  settle(ray, hit, found);
   return found;
 }
 
 [[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) {
   bool found = false;
   const QuadRay quad_ray(ray);
+  hit = Hit{};
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
-    if (BvhRef::is_quad_leaf(leaf)) {
-      found |= nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
-      return false;
-    }
-    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
-    for (uint32_t slot = first; slot < end; ++slot) {
-      const Bvh::Slot& s = bvh.slots()[slot];
-      const uint32_t id = s.id;
-      // Shapes before instances and CSG solids: a scene without CSG pays one comparison.
-      const bool got = id < bvh.triangle_count()    ? intersect_triangle(s.triangle, r, hit)
-                       : id < bvh.instance_begin() ? intersect_shape(bvh.shape(id), r, hit)
-                       : id < bvh.csg_begin()      ? intersect_instance(bvh.instance(id), r, hit)
-                                                   : intersect_csg(bvh.csg(id), r, hit);
-      if (got) {
-        hit.prim = id;
-        r.tmax = hit.t;
-        found = true;
-      }
-    }
+    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit);
     return false;
   });
+  settle(ray, hit, found);
   return found;
 }
 
@@ -182,15 +211,15 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 
 namespace {
 
-bool intersect_instance(const MeshInstance& instance, const Ray& ray, Hit& hit) {
+bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit& hit) {
   Ray local = object_ray(instance.transform, ray);
   Hit h;
   if (!(instance.cutout ? intersect_cutout(*instance.bvh, local, h, *instance.cutout)
                         : intersect(*instance.bvh, local, h)))
     return false;
-  hit = h;
-  hit.part = h.prim;
-  return true;
+  h.part = h.prim;
+  h.prim = id;
+  return take_if_first(h, ray, hit);
 }
 
 }  // namespace

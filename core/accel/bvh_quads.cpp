@@ -2,7 +2,7 @@
 // quad in slot order (the last one padded with lanes that are never hit), with their ids, and its
 // reference turned into a quad leaf (BvhRef::quad_leaf). Traversal then tests the leaf's triangles
 // four at a time (core/accel/triangle_quad.h) and finds exactly what the one-at-a-time loop would:
-// the nearest, the first of equals in slot order.
+// the nearest, equals ordered by id (core/accel/bvh_kernels_impl.h, precedes).
 #include "core/accel/bvh.h"
 
 namespace rt {
