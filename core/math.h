@@ -24,7 +24,11 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
 inline float max_component(Vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
-inline float max_abs_component(Vec3 v) { return max_component(glm::abs(v)); }
+// |v| per component. Not glm::abs: glm applies it through a function pointer, which makes the
+// compiler emit an out-of-line copy in whichever file uses it, the BVH kernels' included
+// (tests/tools/check_kernel_symbols.cmake).
+inline Vec3 abs3(Vec3 v) { return Vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)); }
+inline float max_abs_component(Vec3 v) { return max_component(abs3(v)); }
 
 inline bool is_finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 inline bool is_finite(Vec4 v) { return is_finite(Vec3(v)) && std::isfinite(v.w); }

@@ -25,7 +25,7 @@ struct Ray {
 // distance in scene units.
 inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 geometric_normal, Vec3 direction) {
   const Vec3 n = glm::dot(direction, geometric_normal) < 0.0f ? -geometric_normal : geometric_normal;
-  Vec3 po = p + glm::dot(glm::abs(n), p_error) * n;
+  Vec3 po = p + glm::dot(abs3(n), p_error) * n;
   // Then one float further along the normal, so that the sum's own rounding cannot undo the move
   // (pbrt-v4). Stepping by the normal's sign rather than the offset's also moves a point known
   // exactly (no error: a plane through the origin), whose ray would otherwise start on the

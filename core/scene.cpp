@@ -23,8 +23,10 @@ SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
   return si;
 }
 
-bool Scene::intersect(Ray& ray, SceneHit& out) const {
-  out.surface = bvh.intersect(ray, out.hit);
+namespace {
+
+// The area lights' faces, each taking the ray's place as what it meets when nearer.
+void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out) {
   out.light = nullptr;
   for (const Light& light : lights) {
     const RectLight* rect = std::get_if<RectLight>(&light);
@@ -35,7 +37,24 @@ bool Scene::intersect(Ray& ray, SceneHit& out) const {
       out.surface = false;
     }
   }
+}
+
+}  // namespace
+
+bool Scene::intersect(Ray& ray, SceneHit& out) const {
+  out.surface = bvh.intersect(ray, out.hit);
+  meet_area_lights(lights, ray, out);
   return out.surface || out.light;
+}
+
+void Scene::intersect_packet(Ray* rays, SceneHit* out, int count) const {
+  Hit hits[kPacketSize];
+  const unsigned found = bvh.intersect_packet(rays, hits, count);
+  for (int i = 0; i < count; ++i) {
+    out[i].surface = (found >> i & 1u) != 0;
+    out[i].hit = hits[i];
+    meet_area_lights(lights, rays[i], out[i]);
+  }
 }
 
 uint32_t Scene::material_of(const Hit& hit) const {

@@ -2,6 +2,7 @@
 // made before the clock starts (cli/bench/ray_sets.h).
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,32 @@ size_t trace_all(const std::vector<Ray>& rays, unsigned threads, const Trace& tr
   };
   std::vector<Count> counts(std::max(1u, threads));
   parallel_for(rays.size(), threads, 4096, [&](unsigned worker, size_t i) { counts[worker].n += trace(rays[i]) ? 1 : 0; });
+  size_t total = 0;
+  for (const Count& c : counts) total += c.n;
+  return total;
+}
+
+// trace_all for packets: rays 8i..8i+7 traced together as packet i, in chunks of 512 packets.
+inline size_t trace_all_packets(const std::vector<Ray>& rays, unsigned threads, const Bvh& bvh, bool occlusion) {
+  struct alignas(64) Count {
+    size_t n = 0;
+  };
+  std::vector<Count> counts(std::max(1u, threads));
+  const size_t packets = (rays.size() + kPacketSize - 1) / kPacketSize;
+  parallel_for(packets, threads, 512, [&](unsigned worker, size_t p) {
+    const size_t first = p * kPacketSize;
+    const int count = static_cast<int>(std::min<size_t>(kPacketSize, rays.size() - first));
+    unsigned mask;
+    if (occlusion) {
+      mask = bvh.occluded_packet(rays.data() + first, count);
+    } else {
+      Ray packet[kPacketSize];
+      Hit hits[kPacketSize];
+      std::copy_n(rays.data() + first, count, packet);
+      mask = bvh.intersect_packet(packet, hits, count);
+    }
+    counts[worker].n += static_cast<size_t>(__builtin_popcount(mask));
+  });
   size_t total = 0;
   for (const Count& c : counts) total += c.n;
   return total;

@@ -45,7 +45,7 @@ struct BvhRef {
 // Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/accel/simd.h
 // has 4- and 8-lane vectors); docs/benchmark.md compares 4 and 8.
 inline constexpr int kBvhWidth = 8;
-// Rays per packet (Bvh::occluded_packet): one 8-lane vector.
+// Rays per packet (Bvh::intersect_packet, Bvh::occluded_packet): one 8-lane vector.
 inline constexpr int kPacketSize = 8;
 
 struct alignas(64) BvhNode {
@@ -85,6 +85,11 @@ class Bvh {
   // single-sided (a mesh BVH with an alpha mask or a single-sided material).
   bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
     return kernels_->intersect_cutout(*this, ray, hit, cutout);
+  }
+  // intersect() for count <= kPacketSize rays at once (bit i: rays[i] hit hits[i]), walked
+  // together where the instruction set allows: for coherent rays, such as neighbouring camera rays.
+  unsigned intersect_packet(Ray* rays, Hit* hits, int count) const {
+    return kernels_->intersect_packet(*this, rays, hits, count);
   }
   // Whether anything is hit in (ray.tmin, ray.tmax): stops at the first hit found.
   bool occluded(const Ray& ray) const { return kernels_->occluded(*this, ray); }

@@ -23,6 +23,8 @@ struct BvhKernels {
   Isa isa;
   bool (*intersect)(const Bvh& bvh, Ray& ray, Hit& hit);
   bool (*intersect_cutout)(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout);
+  // Closest hits of count <= kPacketSize rays at once: bit i set when rays[i] hit hits[i].
+  unsigned (*intersect_packet)(const Bvh& bvh, Ray* rays, Hit* hits, int count);
   bool (*occluded)(const Bvh& bvh, const Ray& ray);
   // Occlusion of count <= kPacketSize rays at once: bit i set when rays[i] is blocked.
   unsigned (*occluded_packet)(const Bvh& bvh, const Ray* rays, int count);

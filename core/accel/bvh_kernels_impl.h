@@ -194,14 +194,86 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 // after another.
 [[gnu::flatten]] unsigned occluded_packet(const Bvh& bvh, const Ray* rays, int count) {
 #if defined(__AVX__)
-  if (count > 1) return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, const Ray& r, const QuadRay& q) {
-    return occluded_in_leaf(bvh, leaf, r, q);
+  if (count > 1) return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, int i, const QuadRay& q) {
+    return occluded_in_leaf(bvh, leaf, rays[i], q);
   });
 #endif
   unsigned blocked = 0;
   for (int i = 0; i < count; ++i)
     if (occluded(bvh, rays[i])) blocked |= 1u << i;
   return blocked;
+}
+
+unsigned intersect_packet(const Bvh& bvh, Ray* rays, Hit* hits, int count);
+
+namespace {
+
+#if defined(__AVX__)
+// A leaf's nearest crossings for the packet's rays in `lanes`, merged into their hits. A mesh
+// instance takes the rays on into its own BVH as a packet; everything else is the single-ray
+// test, ray by ray. Flattened itself: it calls intersect_packet, so it is not inlined there.
+[[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays, Ray* rays,
+                                Hit* hits) {
+  unsigned found = 0;
+  if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) == 1) {
+    for (unsigned m = lanes; m; m &= m - 1) {
+      const int i = __builtin_ctz(m);
+      if (nearest_in_leaf(bvh, leaf, quad_rays[i], rays[i], hits[i])) found |= 1u << i;
+    }
+    return found;
+  }
+  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+  for (uint32_t slot = first; slot < end; ++slot) {
+    const uint32_t id = bvh.slots()[slot].id;
+    if (!bvh.is_instance(id) || bvh.instance(id).cutout) {
+      const uint32_t one = BvhRef::leaf(slot, 1);  // this slot alone, as a leaf of one
+      for (unsigned m = lanes; m; m &= m - 1) {
+        const int i = __builtin_ctz(m);
+        if (nearest_in_leaf(bvh, one, quad_rays[i], rays[i], hits[i])) found |= 1u << i;
+      }
+      continue;
+    }
+    const MeshInstance& inst = bvh.instance(id);
+    Ray local[kPacketSize];
+    Hit local_hits[kPacketSize];
+    int lane_of[kPacketSize];
+    int n = 0;
+    for (unsigned m = lanes; m; m &= m - 1, ++n) {
+      lane_of[n] = __builtin_ctz(m);
+      local[n] = object_ray(inst.transform, rays[lane_of[n]]);
+    }
+    for (unsigned m = intersect_packet(*inst.bvh, local, local_hits, n); m; m &= m - 1) {
+      const int j = __builtin_ctz(m), i = lane_of[j];
+      Hit h = local_hits[j];
+      h.part = h.prim;
+      h.prim = id;
+      if (take_if_first(h, rays[i], hits[i])) found |= 1u << i;
+    }
+  }
+  return found;
+}
+#endif
+
+}  // namespace
+
+// The closest hits of up to kPacketSize rays (bit i: rays[i] hit hits[i], and its tmax is
+// narrowed to it), each what intersect() finds for it alone. With AVX the rays walk the tree
+// together (core/accel/bvh_packet.h); without it, one after another.
+[[gnu::flatten]] unsigned intersect_packet(const Bvh& bvh, Ray* rays, Hit* hits, int count) {
+  unsigned found = 0;
+#if defined(__AVX__)
+  if (count > 1) {
+    for (int i = 0; i < count; ++i) hits[i] = Hit{};
+    intersect_packet_walk(bvh, rays, count, [&](uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays) {
+      found |= nearest_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, hits);
+    });
+    for (unsigned m = found; m; m &= m - 1) settle(rays[__builtin_ctz(m)], hits[__builtin_ctz(m)], true);
+    return found;
+  }
+#endif
+  for (int i = 0; i < count; ++i)
+    if (intersect(bvh, rays[i], hits[i])) found |= 1u << i;
+  return found;
 }
 
 [[gnu::flatten]] bool visit_hits(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor) {
@@ -224,7 +296,9 @@ bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit
 
 }  // namespace
 
-extern const BvhKernels kKernels{RTCLI_ISA, &intersect, &intersect_cutout, &occluded, &occluded_packet, &visit_hits};
+extern const BvhKernels kKernels{RTCLI_ISA,        &intersect,       &intersect_cutout,
+                                 &intersect_packet, &occluded,        &occluded_packet,
+                                 &visit_hits};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

@@ -25,6 +25,36 @@ std::vector<LatticeSample> take_border(std::vector<std::vector<LatticeSample>>& 
 
 Vec3 average(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (a + b + c + d) * 0.25f; }
 
+// Lattice points traced a packet of neighbours at a time: add() queues a point, (x, y) in key
+// units from the image's top-left corner, and where its sample goes; flush() traces what is
+// queued (add() does when the packet is full). A point's random numbers are keyed by its place,
+// so when it is traced changes nothing.
+class PointBatch {
+ public:
+  explicit PointBatch(PixelContext& ctx) : ctx_(ctx) {}
+  void add(int64_t x, int64_t y, LatticeSample* to) {
+    const auto point = static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x);
+    const SampleStream samples(ctx_.settings.seed, ctx_.frame, ctx_.point_key(point), 0);
+    to_[batch_.count] = to;
+    batch_.add(CameraSample{static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, 1.0f}, 0);
+    if (batch_.full()) flush();
+  }
+  void flush() {
+    if (batch_.count == 0) return;
+    batch_.trace(ctx_);
+    for (int i = 0; i < batch_.count; ++i) {
+      const Vec3& r = batch_.radiance[i];
+      *to_[i] = LatticeSample{r, {srgb8(r.x), srgb8(r.y), srgb8(r.z)}, true};
+    }
+    batch_.clear();
+  }
+
+ private:
+  PixelContext& ctx_;
+  CameraBatch batch_;
+  LatticeSample* to_[kPacketSize];
+};
+
 }  // namespace
 
 // The (cells + 1)^2 lattice points of one pixel, and which of them its cells used. A point
@@ -81,16 +111,6 @@ bool AdaptiveSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile&
   return positions_ == SamplePositions::kCorners ? render_corners(tile, ctx, out) : render_centres(tile, ctx, out);
 }
 
-// One camera ray through lattice point (x, y), in key units from the image's top-left corner.
-LatticeSample AdaptiveSampler::trace(int64_t x, int64_t y, PixelContext& ctx) const {
-  const RenderSettings& s = ctx.settings;
-  const auto point = static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x);
-  const SampleStream samples(s.seed, ctx.frame, ctx.point_key(point), 0);
-  const Vec3 radiance =
-      trace_camera_sample(static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, ctx);
-  return LatticeSample{radiance, {srgb8(radiance.x), srgb8(radiance.y), srgb8(radiance.z)}, true};
-}
-
 // The contrast measure: the largest difference between the four samples' displayed values in
 // any one channel (8-bit sRGB codes), compared with the threshold.
 bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c,
@@ -107,11 +127,20 @@ bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, con
 // The cell with top-left lattice point (i, j) and `size` lattice steps per side, at `depth`.
 Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int size, int depth,
                                      PixelContext& ctx) const {
+  // Each point is traced once, by the first cell that needs it (the row's pixel corners and a
+  // split's new points are traced ahead, a packet at a time).
+  const auto trace_ahead = [&](PointBatch& batch, int ci, int cj) {
+    const size_t k = lattice.index(ci, cj);
+    if (lattice.known[k] == lattice.generation) return;
+    batch.add(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, &lattice.points[k]);
+    lattice.known[k] = lattice.generation;
+  };
   const auto corner = [&](int ci, int cj) -> const LatticeSample& {
     const size_t k = lattice.index(ci, cj);
     if (lattice.known[k] != lattice.generation) {
-      lattice.points[k] = trace(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, ctx);
-      lattice.known[k] = lattice.generation;
+      PointBatch one(ctx);
+      trace_ahead(one, ci, cj);
+      one.flush();
     }
     if (lattice.counted[k] != lattice.generation) {
       lattice.counted[k] = lattice.generation;
@@ -128,6 +157,14 @@ Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int si
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
   const int h = size / 2;
+  // The five points the quarters add, traced together before the quarters ask for them.
+  PointBatch split(ctx);
+  trace_ahead(split, i + h, j);
+  trace_ahead(split, i, j + h);
+  trace_ahead(split, i + h, j + h);
+  trace_ahead(split, i + size, j + h);
+  trace_ahead(split, i + h, j + size);
+  split.flush();
   return average(refine_corners(lattice, i, j, h, depth + 1, ctx), refine_corners(lattice, i + h, j, h, depth + 1, ctx),
                  refine_corners(lattice, i, j + h, h, depth + 1, ctx),
                  refine_corners(lattice, i + h, j + h, h, depth + 1, ctx));
@@ -143,11 +180,30 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       take_border(right_borders_, grid_.left(tile.index), static_cast<size_t>(tile.height() * n + 1));
   std::vector<LatticeSample> right_border(static_cast<size_t>(tile.height() * n + 1));
   std::vector<LatticeSample> left(static_cast<size_t>(n + 1));
+  std::vector<LatticeSample> bottom(static_cast<size_t>(tile.width() + 1));  // the pixel row's lower corners
   PixelLattice lattice(n);
 
   for (int y = tile.y0; y < tile.y1; ++y) {
     const int row = (y - tile.y0) * n;
     std::copy_n(left_border.begin() + row, n + 1, left.begin());
+    // The row's pixel corners, which every pixel's first cell needs, traced a packet of
+    // neighbours at a time: the upper ones that no tile or row above traced (the first may be
+    // the left tile's), and the lower ones (the first, again, may be the left tile's).
+    {
+      PointBatch corners(ctx);
+      if (!above[0].known) above[0] = left[0];
+      for (int x = tile.x0; x <= tile.x1; ++x) {
+        LatticeSample& upper = above[static_cast<size_t>((x - tile.x0) * n)];
+        if (!upper.known) corners.add(int64_t{x} * kKeyCells, int64_t{y} * kKeyCells, &upper);
+      }
+      bottom[0] = left[static_cast<size_t>(n)];
+      for (int x = tile.x0; x <= tile.x1; ++x) {
+        LatticeSample& lower = bottom[static_cast<size_t>(x - tile.x0)];
+        if (x == tile.x0 && lower.known) continue;
+        corners.add(int64_t{x} * kKeyCells, int64_t{y + 1} * kKeyCells, &lower);
+      }
+      corners.flush();
+    }
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (ctx.cancelled()) return false;
       const int column = (x - tile.x0) * n;
@@ -157,6 +213,8 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
         lattice.hand_in(k, 0, above[static_cast<size_t>(column + k)]);
         lattice.hand_in(0, k, left[static_cast<size_t>(k)]);
       }
+      lattice.hand_in(0, n, bottom[static_cast<size_t>(x - tile.x0)]);
+      lattice.hand_in(n, n, bottom[static_cast<size_t>(x - tile.x0 + 1)]);
       FilmPixel& pixel = out.at(x, y);
       pixel.color = refine_corners(lattice, 0, 0, n, 0, ctx);
       pixel.depth = static_cast<uint8_t>(lattice.deepest);
@@ -178,10 +236,13 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
 // its four quarters' centres, or of its four quarters refined the same way.
 Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const {
   const int q = size / 4;
-  const LatticeSample a = trace(x + q, y + q, ctx);
-  const LatticeSample b = trace(x + 3 * q, y + q, ctx);
-  const LatticeSample c = trace(x + q, y + 3 * q, ctx);
-  const LatticeSample d = trace(x + 3 * q, y + 3 * q, ctx);
+  LatticeSample a, b, c, d;
+  PointBatch centres(ctx);
+  centres.add(x + q, y + q, &a);
+  centres.add(x + 3 * q, y + q, &b);
+  centres.add(x + q, y + 3 * q, &c);
+  centres.add(x + 3 * q, y + 3 * q, &d);
+  centres.flush();
   pixel.samples = static_cast<uint16_t>(pixel.samples + 4);
   if (depth == max_depth_ || !differ(a, b, c, d)) {
     pixel.depth = static_cast<uint8_t>(std::max<int>(pixel.depth, depth));

@@ -44,7 +44,6 @@ class AdaptiveSampler final : public PixelSampler {
   bool render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out);
   Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, PixelContext& ctx) const;
   Vec3 refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const;
-  LatticeSample trace(int64_t x, int64_t y, PixelContext& ctx) const;
   bool differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c, const LatticeSample& d) const;
 
   float threshold_levels_;  // the threshold in levels of 255

@@ -24,10 +24,9 @@ struct DebugHit {
 template <Vec3 (*View)(const DebugHit&, const Scene&)>
 class DebugIntegrator final : public Integrator {
  public:
-  Vec3 radiance(const Ray& camera_ray, int /*depth*/, TraceContext& ctx) const override {
+  Vec3 radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int /*depth*/, TraceContext& ctx) const override {
     DebugHit h{camera_ray, {}, 0.0f, false};
-    SceneHit met;
-    if (!ctx.scene.intersect(h.ray, met)) return Vec3(0.0f);
+    if (!met.surface && !met.light) return Vec3(0.0f);
     h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
     if (met.light) {
       h.light = true;

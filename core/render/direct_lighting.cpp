@@ -82,17 +82,17 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // twice: measured, and left out.)
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
-        LightSample samples[kPacketSize];
+        LightSample batch_samples[kPacketSize];
         Ray shadows[kPacketSize];
         int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
         int rays = 0;
         for (int j = 0; j < batch; ++j) {
-          samples[j] = sample_at(base + j);
-          ray_of[j] = shadow_ray(samples[j], shadows[rays]) ? rays++ : -1;
+          batch_samples[j] = sample_at(base + j);
+          ray_of[j] = shadow_ray(batch_samples[j], shadows[rays]) ? rays++ : -1;
         }
         const unsigned blocked = scene.occluded_packet(shadows, rays);
         for (int j = 0; j < batch; ++j)
-          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += lit(samples[j], Vec3(1.0f));
+          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += lit(batch_samples[j], Vec3(1.0f));
       }
     }
     sum += light_sum / static_cast<float>(count);

@@ -32,7 +32,15 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   // Radiance arriving along `ray`; depth = number of bounces already taken.
-  virtual Vec3 radiance(const Ray& ray, int depth, TraceContext& ctx) const = 0;
+  Vec3 radiance(const Ray& ray, int depth, TraceContext& ctx) const {
+    Ray r = ray;
+    SceneHit met;
+    ctx.scene.intersect(r, met);
+    return radiance_from_hit(r, met, depth, ctx);
+  }
+  // The same for a ray whose first meeting is already known: `met` and ray.tmax as
+  // Scene::intersect leaves them (camera rays, found a packet at a time).
+  virtual Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const = 0;
 };
 
 // The integrator registered under `name`, or nullptr if there is none.

@@ -1,23 +1,45 @@
 #include "core/render/pixel_sampler.h"
 
+#include <algorithm>
+
 #include "core/render/adaptive_sampler.h"
 
 namespace rt {
 
-Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx, float spacing) {
+void CameraBatch::trace(PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   const Camera& camera = ctx.view();
-  if (!camera.sees(px, py, s.width, s.height)) return Vec3(0.0f);  // outside a fisheye's circle
-  TraceContext trace{ctx.scene,
-                     s,
-                     ctx.counters,
-                     samples,
-                     spacing * camera.pixel_spread(s.width, s.height),
-                     spacing * camera.pixel_footprint(s.width, s.height)};
-  ++ctx.counters[RayKind::kCamera];
-  // The lens sample is keyed like every other number: a pinhole camera ignores it.
-  const Vec2 lens = trace.samples.get2(SamplePurpose::kLens, 0, 0);
-  return ctx.integrator.radiance(camera.generate_ray(px, py, s.width, s.height, lens), 0, trace);
+  Ray rays[kPacketSize];
+  int ray_of[kPacketSize];  // which ray a sample has; -1: none (outside a fisheye's circle)
+  int rays_made = 0;
+  for (int i = 0; i < count; ++i) {
+    const CameraSample& c = sample[i];
+    if (!camera.sees(c.px, c.py, s.width, s.height)) {
+      ray_of[i] = -1;
+      continue;
+    }
+    // The lens sample is keyed like every other number: a pinhole camera ignores it.
+    const Vec2 lens = c.samples.get2(SamplePurpose::kLens, 0, 0);
+    rays[rays_made] = camera.generate_ray(c.px, c.py, s.width, s.height, lens);
+    ray_of[i] = rays_made++;
+  }
+  SceneHit met[kPacketSize];
+  ctx.scene.intersect_packet(rays, met, rays_made);
+  ctx.counters[RayKind::kCamera] += static_cast<uint64_t>(rays_made);
+  for (int i = 0; i < count; ++i) {
+    if (ray_of[i] < 0) {
+      radiance[i] = Vec3(0.0f);
+      continue;
+    }
+    const CameraSample& c = sample[i];
+    TraceContext trace{ctx.scene,
+                       s,
+                       ctx.counters,
+                       c.samples,
+                       c.spacing * camera.pixel_spread(s.width, s.height),
+                       c.spacing * camera.pixel_footprint(s.width, s.height)};
+    radiance[i] = ctx.integrator.radiance_from_hit(rays[ray_of[i]], met[ray_of[i]], 0, trace);
+  }
 }
 
 namespace {
@@ -29,54 +51,61 @@ SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx
   return SampleStream(s.seed, ctx.frame, ctx.point_key(pixel_index), sample);
 }
 
-// A sampler whose pixels are independent of each other: the tile is its pixels in turn.
-class PerPixelSampler : public PixelSampler {
- public:
-  bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override {
-    return render_pixels(tile, ctx, out, [&](int x, int y) { return pixel(x, y, ctx); });
-  }
-
- private:
-  virtual FilmPixel pixel(int x, int y, PixelContext& ctx) const = 0;
-};
-
-// One ray through the pixel centre: the proposal's baseline, aliased edges and all.
-class CentreSampler final : public PerPixelSampler {
-  FilmPixel pixel(int x, int y, PixelContext& ctx) const override {
-    const Vec3 c = trace_camera_sample(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f,
-                                       pixel_stream(x, y, 0, ctx), ctx);
-    return FilmPixel{c, 1, 0};
-  }
-};
-
 // n x n rays on a regular sub-pixel grid, averaged with equal weights: at the cell centres, or
 // with `jitter` at a keyed random point of each cell (stratified sampling: edges turn from stair
-// steps into fine noise).
-class UniformSampler final : public PerPixelSampler {
+// steps into fine noise). n = 1 without jitter: one ray through the pixel centre, the proposal's
+// baseline, aliased edges and all. A tile row's samples are traced in packets of neighbours, and
+// each pixel sums its own in sample order, as one at a time would.
+class UniformSampler final : public PixelSampler {
  public:
   UniformSampler(int n, bool jitter) : n_(n), jitter_(jitter) {}
 
- private:
-  FilmPixel pixel(int x, int y, PixelContext& ctx) const override {
-    Vec3 sum(0.0f);
+  bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override {
     const float step = 1.0f / static_cast<float>(n_);
-    for (int j = 0; j < n_; ++j)
-      for (int i = 0; i < n_; ++i) {
-        const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
-        const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
-        sum += trace_camera_sample(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, ctx,
-                                   step);
+    // The sums of the pixels with samples in flight, by x modulo kOpen: at most a packet's worth
+    // and one more, as every packet is traced once full.
+    constexpr int kOpen = 2 * kPacketSize;
+    Vec3 sums[kOpen];
+    std::fill(sums, sums + kOpen, Vec3(0.0f));
+    CameraBatch batch;
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      int written = tile.x0;  // the pixels left of this one are in `out`
+      // Traces what is queued, then writes out the pixels left of x: all their samples are in.
+      const auto drain = [&](int x) {
+        batch.trace(ctx);
+        for (int k = 0; k < batch.count; ++k) sums[batch.tag[k] % kOpen] += batch.radiance[k];
+        batch.clear();
+        for (; written < x; ++written) {
+          Vec3& sum = sums[written % kOpen];
+          out.at(written, y) = FilmPixel{sum * (step * step), static_cast<uint16_t>(n_ * n_), 0};
+          sum = Vec3(0.0f);
+        }
+      };
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        if (ctx.cancelled()) return false;
+        for (int j = 0; j < n_; ++j)
+          for (int i = 0; i < n_; ++i) {
+            const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
+            const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
+            batch.add(CameraSample{static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
+                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, step},
+                      static_cast<uint32_t>(x));
+            if (batch.full()) drain(x);
+          }
       }
-    return FilmPixel{sum * (step * step), static_cast<uint16_t>(n_ * n_), 0};
+      drain(tile.x1);
+      ctx.row_done(tile.width());
+    }
+    return true;
   }
 
+ private:
   int n_;
   bool jitter_;
 };
 
 std::unique_ptr<PixelSampler> make_centre(const AntialiasSettings&, const TileGrid&) {
-  return std::make_unique<CentreSampler>();
+  return std::make_unique<UniformSampler>(1, false);
 }
 std::unique_ptr<PixelSampler> make_uniform(const AntialiasSettings& aa, const TileGrid& grid) {
   if (aa.samples <= 1 && !aa.jitter) return make_centre(aa, grid);  // the same single ray

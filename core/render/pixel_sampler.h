@@ -72,10 +72,34 @@ bool render_pixels(const Tile& tile, const PixelContext& ctx, FilmTile& out, Pix
   return true;
 }
 
-// Radiance of one camera ray through continuous pixel position (px, py), with the keyed numbers
-// of its sample (its lens position among them). Counts the camera ray. `spacing`: the distance in
-// pixels to the neighbouring camera samples (1 / n for n x n per pixel), which narrows the ray
-// cone that picks texture mip levels.
-Vec3 trace_camera_sample(float px, float py, const SampleStream& samples, PixelContext& ctx, float spacing = 1.0f);
+// One camera sample: the continuous pixel position (px, py) its ray goes through, the keyed
+// numbers of the sample (its lens position among them), and `spacing`: the distance in pixels to
+// the neighbouring camera samples (1 / n for n x n per pixel), which narrows the ray cone that
+// picks texture mip levels.
+struct CameraSample {
+  float px = 0.0f, py = 0.0f;
+  SampleStream samples;
+  float spacing = 1.0f;
+};
+
+// Camera samples queued and traced kPacketSize at a time: their rays meet the scene as one packet
+// (Scene::intersect_packet), then each is shaded alone, with the radiance it would have alone.
+// A sampler adds samples with a tag of its own (which pixel), and once full() calls trace(), reads
+// radiance[i] and tag[i] for i < count in the order added, and clear()s.
+struct CameraBatch {
+  CameraSample sample[kPacketSize];
+  uint32_t tag[kPacketSize];
+  Vec3 radiance[kPacketSize];
+  int count = 0;
+
+  bool full() const { return count == kPacketSize; }
+  void add(const CameraSample& s, uint32_t t) {
+    sample[count] = s;
+    tag[count++] = t;
+  }
+  // Fills radiance[0, count); counts the camera rays.
+  void trace(PixelContext& ctx);
+  void clear() { count = 0; }
+};
 
 }  // namespace rt

@@ -13,19 +13,24 @@ float index_of(const MediumStack& media, const Scene& scene) {
 
 }  // namespace
 
-Vec3 WhittedIntegrator::radiance(const Ray& camera_ray, int depth, TraceContext& ctx) const {
+Vec3 WhittedIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int depth,
+                                          TraceContext& ctx) const {
   PathState state;
   state.depth = depth;
   state.cone_spread = ctx.pixel_spread;
   state.cone_width = ctx.pixel_footprint;
-  return trace(camera_ray, state, ctx);
+  return shade(camera_ray, met, state, ctx);
 }
 
 Vec3 WhittedIntegrator::trace(const Ray& incoming, const PathState& state, TraceContext& ctx) const {
-  const Scene& scene = ctx.scene;
   Ray ray = incoming;
   SceneHit met;
-  scene.intersect(ray, met);
+  ctx.scene.intersect(ray, met);
+  return shade(ray, met, state, ctx);
+}
+
+Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const {
+  const Scene& scene = ctx.scene;
   Vec3 radiance = scene.background;
   // An area light's face seen before any surface shows its emitted radiance, so mirrors show
   // the light's shape.

@@ -12,7 +12,7 @@ namespace rt {
 
 class WhittedIntegrator final : public Integrator {
  public:
-  Vec3 radiance(const Ray& ray, int depth, TraceContext& ctx) const override;
+  Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const override;
 
   // Where a ray is in its tree: passed by value, so branches never see each other's state.
   struct PathState {
@@ -32,6 +32,8 @@ class WhittedIntegrator final : public Integrator {
   static constexpr float kMinWeight = 1.0f / 512.0f;
 
   Vec3 trace(const Ray& ray, const PathState& state, TraceContext& ctx) const;
+  // trace() once the ray's first meeting is known (ray.tmax at it).
+  Vec3 shade(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const;
   // Branch kinds for child_path.
   enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay };
 

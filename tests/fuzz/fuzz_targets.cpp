@@ -239,6 +239,8 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (occluded && !found_b) return "occluded() found a hit brute force did not";
     if (found_b && robust_hit(prims.triangles[hb.prim], original, hb.t)) {
       if (!found_a || ha.t != hb.t) return "the BVH missed the closest hit brute force found";
+      // Equal distances go to the lower id, as brute force's id order finds them.
+      if (ha.prim != hb.prim) return "the BVH and brute force chose different primitives at the same distance";
       if (!occluded) return "occluded() missed a hit brute force found";
     }
     // The any-hit visitor: every crossing it reports is one brute force reports too, at the same
@@ -270,6 +272,21 @@ std::string bvh_build(const uint8_t* data, size_t size) {
       const unsigned mask = bvh.occluded_packet(packet, count);
       for (int i = 0; i < count; ++i)
         if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "occluded_packet() and occluded() disagree";
+      // Each ray of a packet gets its own closest hit, bit for bit, and its tmax narrowed alike.
+      Ray walked[kPacketSize];
+      Hit hits[kPacketSize];
+      std::copy(packet, packet + count, walked);
+      const unsigned found = bvh.intersect_packet(walked, hits, count);
+      for (int i = 0; i < count; ++i) {
+        Ray alone = packet[i];
+        Hit h;
+        const bool hit = bvh.intersect(alone, h);
+        if (hit != bool(found >> i & 1u) ||
+            (hit && (std::memcmp(&h.t, &hits[i].t, 4) != 0 || std::memcmp(&h.b1, &hits[i].b1, 4) != 0 ||
+                     std::memcmp(&h.b2, &hits[i].b2, 4) != 0 || h.prim != hits[i].prim || h.part != hits[i].part ||
+                     std::memcmp(&alone.tmax, &walked[i].tmax, 4) != 0)))
+          return "intersect_packet() and intersect() disagree";
+      }
     }
   }
   return "";
