@@ -49,8 +49,8 @@ struct PacketSlabs {
     for (int a = 0; a < 3; ++a) {
       const Float8 lo = (splat8(node.bounds[2 * a][c]) - origin[a]) * inv[a];
       const Float8 hi = (splat8(node.bounds[2 * a + 1][c]) - origin[a]) * inv[a];
-      near = max8(near, positive[a] ? lo : hi);
-      far = min8(far, positive[a] ? hi : lo);
+      near = max8(positive[a] ? lo : hi, near);  // NaN-proof as the single-ray test (RaySlabs)
+      far = min8(positive[a] ? hi : lo, far);
     }
     enter = movemask8(near <= far * splat8(1.0000004f));
     return near;

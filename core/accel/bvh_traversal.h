@@ -59,13 +59,16 @@ struct RaySlabs {
   }
 
   // Bit i set when child i's box is entered within [tmin, tmax]; tnear[i] gets its entry distance.
-  // The far distance is widened by a few ulps so rounding never loses a grazed box (pbrt-v4).
+  // The far distance is widened by a few ulps so rounding never loses a grazed box (pbrt-v4). A
+  // slab that gives NaN (0 * inf: a direction component of 0, the origin on the box's plane)
+  // constrains nothing: the running bound is the second operand, which min/max return when the
+  // comparison is false, so [tmin, tmax] is never lost to a NaN.
   unsigned test(const BvhNode& node, float tmin, float tmax, float* tnear) const {
 #if defined(__AVX__)
     Float8 lo = splat8(tmin), hi = splat8(tmax);
     for (int a = 0; a < 3; ++a) {
-      lo = max8(lo, (load8(node.bounds[near_row[a]]) - origin[a]) * inv_dir[a]);
-      hi = min8(hi, (load8(node.bounds[far_row[a]]) - origin[a]) * inv_dir[a]);
+      lo = max8((load8(node.bounds[near_row[a]]) - origin[a]) * inv_dir[a], lo);
+      hi = min8((load8(node.bounds[far_row[a]]) - origin[a]) * inv_dir[a], hi);
     }
     std::memcpy(tnear, &lo, sizeof lo);
     return movemask8(lo <= hi * splat8(1.0000004f));
@@ -74,8 +77,8 @@ struct RaySlabs {
     for (int half = 0; half < kBvhWidth; half += 4) {
       Float4 lo = splat4(tmin), hi = splat4(tmax);
       for (int a = 0; a < 3; ++a) {
-        lo = max4(lo, (load4(node.bounds[near_row[a]] + half) - origin[a]) * inv_dir[a]);
-        hi = min4(hi, (load4(node.bounds[far_row[a]] + half) - origin[a]) * inv_dir[a]);
+        lo = max4((load4(node.bounds[near_row[a]] + half) - origin[a]) * inv_dir[a], lo);
+        hi = min4((load4(node.bounds[far_row[a]] + half) - origin[a]) * inv_dir[a], hi);
       }
       std::memcpy(tnear + half, &lo, sizeof lo);
       mask |= movemask4(lo <= hi * splat4(1.0000004f)) << half;
@@ -107,7 +110,9 @@ bool traverse(const Bvh& bvh, Ray& ray, LeafVisitor&& visit_leaf) {
   stack[top++] = StackEntry{bvh.root(), ray.tmin};
   while (top > 0) {
     const StackEntry entry = stack[--top];
-    if (entry.t > ray.tmax) continue;
+    // A closer hit found since the entry was pushed. (Any-hit never narrows tmax: no test, so
+    // that a packet's walk, which has none, enters exactly the boxes a single ray enters.)
+    if (kNearestFirst && entry.t > ray.tmax) continue;
     uint32_t ref = entry.ref;
     while (!BvhRef::is_leaf(ref)) {
       alignas(32) float t[kBvhWidth];
