@@ -215,7 +215,7 @@ namespace {
 [[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays, Ray* rays,
                                 Hit* hits) {
   unsigned found = 0;
-  if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) == 1) {
+  if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) < kMinPacket) {
     for (unsigned m = lanes; m; m &= m - 1) {
       const int i = __builtin_ctz(m);
       if (nearest_in_leaf(bvh, leaf, quad_rays[i], rays[i], hits[i])) found |= 1u << i;
@@ -257,12 +257,12 @@ namespace {
 }  // namespace
 
 // The closest hits of up to kPacketSize rays (bit i: rays[i] hit hits[i], and its tmax is
-// narrowed to it), each what intersect() finds for it alone. With AVX the rays walk the tree
-// together (core/accel/bvh_packet.h); without it, one after another.
+// narrowed to it), each what intersect() finds for it alone. With AVX and at least kMinPacket
+// rays they walk the tree together (core/accel/bvh_packet.h); else one after another.
 [[gnu::flatten]] unsigned intersect_packet(const Bvh& bvh, Ray* rays, Hit* hits, int count) {
   unsigned found = 0;
 #if defined(__AVX__)
-  if (count > 1) {
+  if (count >= kMinPacket) {
     for (int i = 0; i < count; ++i) hits[i] = Hit{};
     intersect_packet_walk(bvh, rays, count, [&](uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays) {
       found |= nearest_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, hits);
