@@ -140,6 +140,6 @@ SECTIONS = [
      "how": "tools/povray/twin.py writes each twin by documented rules; compare.py times both; "
             "build/embree_compare traces one ray set through both BVHs.",
      "tables": [("docs/benchmark.md", "## Against POV-Ray"), ("docs/benchmark.md", "### Steps on the BVH, before and after"),
-                ("docs/benchmark.md", "### Shadow-ray packets"),
+                ("docs/benchmark.md", "### Shadow-ray packets"), ("docs/benchmark.md", "### Camera-ray packets"),
                 ("docs/benchmark.md", "### Robust ray origins: what they cost")]},
 ]
