@@ -70,12 +70,14 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
 
     const SignalBlock block;  // each temporary file is always renamed or removed
     bool ok = true;
+    const DisplayTransform& display = settings.display;
     if (!stereo.enabled()) {
-      ok = sinks[0].add(encode_srgb8(film.color), frame, error);
+      ok = sinks[0].add(encode_srgb8(film.color, display), frame, error);
     } else if (stereo.mode == StereoMode::kPair) {
-      ok = sinks[0].add(encode_srgb8(left), frame, error) && sinks[1].add(encode_srgb8(film.color), frame, error);
+      ok = sinks[0].add(encode_srgb8(left, display), frame, error) &&
+           sinks[1].add(encode_srgb8(film.color, display), frame, error);
     } else {
-      ok = sinks[0].add(encode_srgb8(compose_stereo(left, film.color, stereo)), frame, error);
+      ok = sinks[0].add(encode_srgb8(compose_stereo(left, film.color, stereo), display), frame, error);
     }
     if (!ok) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());

@@ -53,6 +53,14 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--secondary-shadows", render.secondary_shadows,
                          "scaled: shadow rays at reflected, refracted and glossy hits scaled by their weight in the "
                          "pixel; full: all shadow_samples at every hit (overrides the scene)");
+  render_cmd
+      ->add_option("--exposure", render.exposure,
+                   "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
+                   "scene)")
+      ->check(real_number(-kMaxExposure, kMaxExposure));
+  render_cmd->add_option("--tone-map", render.tone_map,
+                         "clamp: values above 1 cut to white; filmic: highlights rolled off (ACES fit) "
+                         "(overrides the scene)");
   render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: none, uniform or adaptive (overrides the scene)");
   render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
       ->check(whole_number(1, kMaxSamplesPerAxis));

@@ -64,6 +64,8 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   }
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
   if (cmd.secondary_shadows) s.scale_secondary_shadows = *cmd.secondary_shadows == "scaled";
+  if (cmd.exposure) s.display.exposure = *cmd.exposure;
+  if (cmd.tone_map) s.display.curve = *cmd.tone_map == "filmic" ? ToneMap::kFilmic : ToneMap::kClamp;
   if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
   if (cmd.aa_threshold) s.antialias.threshold = *cmd.aa_threshold;
@@ -110,6 +112,7 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   if (cmd.secondary_shadows &&
       !check_name("--secondary-shadows", "secondary shadow rule", *cmd.secondary_shadows, secondary_shadow_names()))
     return std::nullopt;
+  if (cmd.tone_map && !check_name("--tone-map", "tone curve", *cmd.tone_map, tone_map_names())) return std::nullopt;
   if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
     std::fprintf(stderr, "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
                  cmd.fps ? "--fps" : "--animation",

@@ -25,6 +25,8 @@ struct RenderCommand {
   std::optional<int> glossy_samples;
   std::optional<int> shadow_samples;
   std::optional<std::string> secondary_shadows;  // "full" or "scaled"
+  std::optional<float> exposure;                 // stops
+  std::optional<std::string> tone_map;           // "clamp" or "filmic"
   bool preview = false;                          // the draft preset (preview_settings)
   std::optional<std::string> aa_mode;
   std::optional<int> aa_samples;

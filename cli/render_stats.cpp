@@ -29,6 +29,8 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"secondary_shadows", secondary_shadow_names()[in.settings.scale_secondary_shadows ? 1 : 0]},
       {"glossy_samples", in.settings.glossy ? in.settings.glossy_samples : 0},
       {"max_depth", in.settings.max_depth},
+      {"exposure", in.settings.display.exposure},
+      {"tone_map", tone_map_names()[static_cast<size_t>(in.settings.display.curve)]},
       {"seconds", {{"render", t.seconds}, {"placing", t.place_seconds}, {"load", in.load_seconds}}},
       {"rays", rays},
       {"rays_per_pixel", pixels > 0 ? static_cast<double>(t.rays.total()) / pixels : 0.0},

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/texture/texture.h"
+#include "core/tone_map.h"
 
 namespace rt {
 
@@ -50,6 +51,8 @@ struct RenderSettings {
   // false ("full"): every hit takes shadow_samples.
   bool scale_secondary_shadows = true;
   SurfaceDetailSwitches detail;
+  // Linear radiance to display: exposure in stops and the tone curve (core/tone_map.h).
+  DisplayTransform display;
 };
 
 // Limits on what settings may ask for (docs/errors-and-limits.md, "Limits"). The film holds 12 bytes a pixel

@@ -44,7 +44,8 @@ class PointBatch {
     batch_.trace(ctx_);
     for (int i = 0; i < batch_.count; ++i) {
       const Vec3& r = batch_.radiance[i];
-      *to_[i] = LatticeSample{r, {srgb8(r.x), srgb8(r.y), srgb8(r.z)}, true};
+      const Vec3 shown = ctx_.settings.display.apply(r);  // what the picture shows of it
+      *to_[i] = LatticeSample{r, {srgb8(shown.x), srgb8(shown.y), srgb8(shown.z)}, true};
     }
     batch_.clear();
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/tone_map.h"
 
 namespace rt {
 
@@ -15,9 +16,10 @@ struct Rgb8Image {
   std::vector<uint8_t> rgb;  // row-major, 3 bytes per pixel, row 0 at the top
 };
 
-// Tone mapping rule for 8-bit output: each linear channel is clamped to [0, 1] (NaN counts as 0),
-// encoded with the sRGB transfer function and rounded to the nearest of 256 levels (srgb8 in
-// core/color.h, an exact table).
-Rgb8Image encode_srgb8(const Image& image);
+// 8-bit output: each linear channel through the display transform (exposure and tone curve,
+// core/tone_map.h; by default none), clamped to [0, 1] (NaN counts as 0), encoded with the sRGB
+// transfer function and rounded to the nearest of 256 levels (srgb8 in core/color.h, an exact
+// table).
+Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display = {});
 
 }  // namespace rt

@@ -18,6 +18,7 @@ constexpr NumberRule kGlossySamples{1, kMaxGlossySamples, false, false, true};
 constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
 constexpr NumberRule kThreshold{0, 1, false, false, false};  // a difference of displayed values
 constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
+constexpr NumberRule kExposure{-kMaxExposure, kMaxExposure, false, false, false};  // stops
 
 // render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
 // the scene's parameters.
@@ -52,6 +53,10 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
   if (const Json* m = o.get("secondary_shadows")) {
     if (const auto k = read_choice(r, *m, o.child("secondary_shadows"), secondary_shadow_names()))
       s.scale_secondary_shadows = *k == 1;
+  }
+  if (const auto e = o.number("exposure", kExposure)) s.display.exposure = static_cast<float>(*e);
+  if (const Json* t = o.get("tone_map")) {
+    if (const auto k = read_choice(r, *t, o.child("tone_map"), tone_map_names())) s.display.curve = static_cast<ToneMap>(*k);
   }
   if (const Json* i = o.get("integrator")) {
     if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))

@@ -297,3 +297,37 @@ TEST_CASE("cli: --preview renders a draft: one ray a pixel, a quarter of the sha
   s = read_file(stats);
   CHECK_THAT(s, Catch::Contains("\"shadow_samples\": 9") && Catch::Contains("\"antialias\": \"none\""));
 }
+
+TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_map in a scene", "[cli][tonemap]") {
+  Run r = rtcli("render scenes/default.json --tone-map film");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--tone-map: unknown tone curve \"film\"") &&
+                           Catch::Contains("expected one of: clamp, filmic"));
+  r = rtcli("render scenes/default.json --exposure 21");
+  CHECK(r.code == 2);
+  // The clamp rule with exposure 0 is the default: the same bytes as without the options.
+  const std::string plain = output_path("tone_plain.png"), clamp = output_path("tone_clamp.png");
+  const std::string filmic = output_path("tone_filmic.png"), stats = output_path("tone.json");
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("-o '" + plain + "'")).code == 0);
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--tone-map clamp --exposure 0 -o '" + clamp + "'")).code == 0);
+  CHECK(read_file(plain) == read_file(clamp));
+  r = rtcli("render scenes/soft_shadows.json " +
+            small("--tone-map filmic --exposure 1.5 -o '" + filmic + "' --stats '" + stats + "'"));
+  REQUIRE(r.code == 0);
+  CHECK(read_file(filmic) != read_file(plain));
+  const std::string s = read_file(stats);
+  CHECK_THAT(s, Catch::Contains("\"tone_map\": \"filmic\"") && Catch::Contains("\"exposure\": 1.5"));
+  // The scene keys, and a bad one reported with its place.
+  std::string scene = write_file("tone_scene.json", R"({"render": {"width": 16, "height": 9, "tone_map": "filmic", "exposure": -1},
+    "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+    "lights": [{"type": "point", "position": [1, 2, 3]}],
+    "materials": {"m": {"kd": 0.8}}, "nodes": [{"shape": "sphere", "material": "m"}]})");
+  r = rtcli("render '" + scene + "' -q -o '" + output_path("tone_scene.png") + "' --stats '" + stats + "'");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(read_file(stats), Catch::Contains("\"tone_map\": \"filmic\"") && Catch::Contains("\"exposure\": -1.0"));
+  scene = write_file("tone_bad.json", R"({"render": {"tone_map": "aces"}, "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+    "nodes": []})");
+  r = rtcli("validate '" + scene + "'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("/render/tone_map") && Catch::Contains("aces"));
+}
