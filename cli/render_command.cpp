@@ -72,6 +72,8 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.aa_depth) s.antialias.max_depth = *cmd.aa_depth;
   if (cmd.aa_positions)
     s.antialias.positions = *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
+  // A debug view's values are data (a normal, a depth): shown as they are, never tone mapped.
+  if (!integrator_shows_radiance(s.integrator)) s.display = DisplayTransform{};
   return s;
 }
 

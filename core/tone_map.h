@@ -6,8 +6,9 @@
 //   f(x) = x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14),
 // per channel, a display-linear value that is then sRGB-encoded. Nothing above 1 turns white
 // abruptly (f(1) = 0.80, f(4) = 0.97; the fit reaches 1 at x = 7.24 and is clamped there), and
-// mid grey is lifted a little (f(0.18) = 0.27). Both integrators use the same transform; the
-// adaptive sampler compares displayed values, so it sees what the picture shows.
+// mid grey is lifted a little (f(0.18) = 0.27). Every integrator that makes radiance goes through
+// it (debug views do not: cli/render_command.cpp); the adaptive sampler compares displayed
+// values, so it sees what the picture shows.
 #pragma once
 
 #include <cmath>

@@ -9,6 +9,7 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<Integrator> (*make)();
+  bool radiance;  // false: a debug view (integrator_shows_radiance)
 };
 
 template <class T>
@@ -18,8 +19,9 @@ std::unique_ptr<Integrator> make() {
 
 // The name table. Adding an integrator = one file and one line here.
 constexpr Entry kIntegrators[] = {
-    {"whitted", &make<WhittedIntegrator>}, {"normals", &make<NormalsIntegrator>}, {"uv", &make<UvIntegrator>},
-    {"depth", &make<DepthIntegrator>},     {"albedo", &make<AlbedoIntegrator>},
+    {"whitted", &make<WhittedIntegrator>, true}, {"normals", &make<NormalsIntegrator>, false},
+    {"uv", &make<UvIntegrator>, false},          {"depth", &make<DepthIntegrator>, false},
+    {"albedo", &make<AlbedoIntegrator>, false},
 };
 
 }  // namespace
@@ -28,6 +30,12 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name) {
   for (const Entry& e : kIntegrators)
     if (name == e.name) return e.make();
   return nullptr;
+}
+
+bool integrator_shows_radiance(std::string_view name) {
+  for (const Entry& e : kIntegrators)
+    if (name == e.name) return e.radiance;
+  return true;
 }
 
 std::vector<std::string> integrator_names() {

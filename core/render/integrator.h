@@ -45,6 +45,10 @@ class Integrator {
 
 // The integrator registered under `name`, or nullptr if there is none.
 std::unique_ptr<Integrator> make_integrator(std::string_view name);
+// Whether the integrator registered under `name` makes radiance, which goes to the display
+// through exposure and the tone curve (core/tone_map.h), rather than a debug view's data
+// (normals, uv, depth, albedo), which is shown as it is.
+bool integrator_shows_radiance(std::string_view name);
 std::vector<std::string> integrator_names();
 
 }  // namespace rt

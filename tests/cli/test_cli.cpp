@@ -317,6 +317,14 @@ TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_m
   CHECK(read_file(filmic) != read_file(plain));
   const std::string s = read_file(stats);
   CHECK_THAT(s, Catch::Contains("\"tone_map\": \"filmic\"") && Catch::Contains("\"exposure\": 1.5"));
+  // A debug view is data, never tone mapped.
+  const std::string normals_plain = output_path("tone_normals_plain.png"), normals = output_path("tone_normals.png");
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--integrator normals -o '" + normals_plain + "'")).code == 0);
+  REQUIRE(rtcli("render scenes/soft_shadows.json " +
+                small("--integrator normals --tone-map filmic --exposure 2 -o '" + normals + "' --stats '" + stats + "'"))
+              .code == 0);
+  CHECK(read_file(normals) == read_file(normals_plain));
+  CHECK_THAT(read_file(stats), Catch::Contains("\"tone_map\": \"clamp\"") && Catch::Contains("\"exposure\": 0.0"));
   // The scene keys, and a bad one reported with its place.
   std::string scene = write_file("tone_scene.json", R"({"render": {"width": 16, "height": 9, "tone_map": "filmic", "exposure": -1},
     "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
