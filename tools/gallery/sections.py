@@ -123,6 +123,17 @@ SECTIONS = [
      "how": "Longitude across, latitude down; in stereo each column's eye sits on the viewing circle.",
      "scene": "scenes/panorama.json",
      "renders": [("panorama", "--stereo none", "A room all round in one 2:1 image", "The whole room")]},
+    {"id": "tone-mapping", "title": "Extra: exposure and tone mapping",
+     "what": "Radiance to display: render.exposure in stops, then a tone curve per channel; clamp cuts at 1, "
+             "filmic rolls highlights off with Narkowicz's ACES fit f(x) = x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14).",
+     "how": "core/tone_map.h, applied to every radiance image before the sRGB encoding; the adaptive sampler "
+            "measures contrast after it.",
+     "scene": "scenes/soft_shadows.json",
+     "renders": [("tone-clamp", "--exposure 1", "The soft-shadow scene one stop brighter, its lit floor burnt to "
+                  "flat white", "+1 stop, clamp: the floor clips"),
+                 ("tone-filmic", "--exposure 1 --tone-map filmic", "The same one stop brighter, the floor's "
+                  "falloff kept", "+1 stop, filmic: highlights roll off")],
+     "compare": ("tone-clamp", "tone-filmic")},
     {"id": "final", "title": "10. The final scene: toys left behind",
      "what": "Every objective in one picture: a toy box, marbles, balls, dice, jacks, cards and blocks on a table.",
      "how": "scenes/toys/toys.json, written by tools/make_toys_scene.py.",
