@@ -46,13 +46,7 @@ bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ra
   for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
     Float4 t, b1, b2;
     for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
-      const int lane = __builtin_ctz(mask);
-      Hit candidate;
-      candidate.t = t[lane];
-      candidate.b1 = b1[lane];
-      candidate.b2 = b2[lane];
-      candidate.part = 0;
-      candidate.prim = quads[q].id[lane];
+      const Hit candidate = quad_lane_hit(quads[q], __builtin_ctz(mask), t, b1, b2);
       // The order first: keep() may read a texture.
       if (precedes(candidate, hit) && keep(candidate.prim, candidate.b1, candidate.b2)) found |= take_if_first(candidate, r, hit);
     }

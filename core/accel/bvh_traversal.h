@@ -167,14 +167,8 @@ bool visit_quad_crossings(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray
   for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
     Float4 t, b1, b2;
     for (unsigned mask = intersect_quad(quads[q], quad_ray, ray.tmin, ray.tmax, t, b1, b2); mask; mask &= mask - 1) {
-      const int lane = __builtin_ctz(mask);
-      Hit hit;
-      hit.t = t[lane];
-      hit.b1 = b1[lane];
-      hit.b2 = b2[lane];
-      hit.part = 0;
-      hit.prim = quads[q].id[lane];
-      if (visit(static_cast<const Hit&>(hit))) return true;
+      const Hit hit = quad_lane_hit(quads[q], __builtin_ctz(mask), t, b1, b2);
+      if (visit(hit)) return true;
     }
   }
   return false;

@@ -49,6 +49,17 @@ RT_SIMD_INLINE unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, 
   return movemask4(inside);
 }
 
+// The hit record of lane `lane` of an intersect_quad result: the triangle's id as prim.
+RT_SIMD_INLINE Hit quad_lane_hit(const TriangleQuad& q, int lane, Float4 t, Float4 b1, Float4 b2) {
+  Hit hit;
+  hit.t = t[lane];
+  hit.b1 = b1[lane];
+  hit.b2 = b2[lane];
+  hit.part = 0;
+  hit.prim = q.id[lane];
+  return hit;
+}
+
 // Lane `lane` of `quad` set to `tri`, primitive `id`.
 inline void set_quad_lane(TriangleQuad& quad, int lane, const PackedTriangle& tri, uint32_t id = ~0u) {
   quad.id[lane] = id;
