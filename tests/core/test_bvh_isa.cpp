@@ -74,6 +74,22 @@ bool same_hit(const Hit& a, const Hit& b) {
          std::memcmp(&a.b2, &b.b2, sizeof a.b2) == 0 && a.prim == b.prim && a.part == b.part;
 }
 
+// Packet p of a sequence: 1 to 8 rays (count), half the packets coherent (one origin, towards a
+// square of side 2 * spread around a target within +-target_range), half rays from anywhere; a
+// third of the rays end at tmax_lo + tmax_span * u, the rest never.
+void make_packet(Rng& rng, int p, int count, float target_range, float spread, float tmax_lo, float tmax_span,
+                 Ray* packet) {
+  const Vec3 origin = random_in(rng, -14.0f, 14.0f), target = random_in(rng, -target_range, target_range);
+  for (int i = 0; i < count; ++i) {
+    Ray& r = packet[i];
+    r.origin = p % 2 ? origin : random_in(rng, -14.0f, 14.0f);
+    r.direction = (p % 2 ? target + random_in(rng, -spread, spread) : random_in(rng, -3.0f, 3.0f)) - r.origin;
+    if (glm::length(r.direction) < 1e-3f) r.direction = Vec3(0.0f, 1.0f, 0.0f);
+    r.tmin = 1e-4f;
+    r.tmax = i % 3 == 0 ? tmax_lo + tmax_span * rng.next_float() : kInfinity;
+  }
+}
+
 }  // namespace
 
 TEST_CASE("BVH kernels: every instruction set this CPU runs gives the baseline's hits, bit for bit", "[bvh][isa]") {
@@ -132,19 +148,10 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own occlusion answer, o
     Rng rng(7);
     int rays = 0, blocked = 0, differences = 0;
     for (int p = 0; p < 6000; ++p) {
-      // Half the packets coherent (one origin, towards a small square, as a point's shadow rays
-      // to an area light), half rays from anywhere; 1 to 8 rays, some with a finite interval.
+      // The coherent half as a point's shadow rays to an area light.
       const int count = 1 + p % kPacketSize;
-      const Vec3 origin = random_in(rng, -14.0f, 14.0f), target = random_in(rng, -4.0f, 4.0f);
       Ray packet[kPacketSize];
-      for (int i = 0; i < count; ++i) {
-        Ray& r = packet[i];
-        r.origin = p % 2 ? origin : random_in(rng, -14.0f, 14.0f);
-        r.direction = (p % 2 ? target + random_in(rng, -0.5f, 0.5f) : random_in(rng, -3.0f, 3.0f)) - r.origin;
-        if (glm::length(r.direction) < 1e-3f) r.direction = Vec3(0.0f, 1.0f, 0.0f);
-        r.tmin = 1e-4f;
-        r.tmax = i % 3 == 0 ? 0.2f + rng.next_float() : kInfinity;
-      }
+      make_packet(rng, p, count, 4.0f, 0.5f, 0.2f, 1.0f, packet);
       const unsigned mask = bvh.occluded_packet(packet, count);
       for (int i = 0; i < count; ++i) {
         const bool alone = bvh.occluded(packet[i]);
@@ -174,19 +181,10 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own closest hit, on eve
     Rng rng(11);
     int rays = 0, hits = 0, twins = 0, differences = 0;
     for (int p = 0; p < 6000; ++p) {
-      // Half the packets coherent (one origin, towards a small square, as neighbouring camera
-      // rays), half rays from anywhere; 1 to 8 rays, some with a finite interval.
+      // The coherent half as neighbouring camera rays.
       const int count = 1 + p % kPacketSize;
-      const Vec3 origin = random_in(rng, -14.0f, 14.0f), target = random_in(rng, -6.0f, 6.0f);
       Ray packet[kPacketSize];
-      for (int i = 0; i < count; ++i) {
-        Ray& r = packet[i];
-        r.origin = p % 2 ? origin : random_in(rng, -14.0f, 14.0f);
-        r.direction = (p % 2 ? target + random_in(rng, -1.0f, 1.0f) : random_in(rng, -3.0f, 3.0f)) - r.origin;
-        if (glm::length(r.direction) < 1e-3f) r.direction = Vec3(0.0f, 1.0f, 0.0f);
-        r.tmin = 1e-4f;
-        r.tmax = i % 3 == 0 ? 1.0f + 20.0f * rng.next_float() : kInfinity;
-      }
+      make_packet(rng, p, count, 6.0f, 1.0f, 1.0f, 20.0f, packet);
       Ray walked[kPacketSize];
       std::copy(packet, packet + count, walked);
       Hit got[kPacketSize];
