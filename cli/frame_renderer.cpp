@@ -63,8 +63,9 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
         return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
       }
       totals.seconds += totals.last.seconds;
-      for (size_t k = 0; k < kRayKindCount; ++k) totals.rays.count[k] += totals.last.rays.count[k];
+      totals.rays += totals.last.rays;
       for (const uint8_t d : film.depth) totals.refined += d > 0;
+      for (const uint16_t n : film.samples) totals.samples += n;
       if (pass == 0 && totals.passes == 2) left = film.color;
     }
 

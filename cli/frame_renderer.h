@@ -20,6 +20,7 @@ struct RenderTotals {
   double seconds = 0.0;        // rendering, all frames
   double place_seconds = 0.0;  // placing animated frames (top-level BVHs)
   size_t refined = 0;          // pixels refined by adaptive anti-aliasing, all frames and eyes
+  uint64_t samples = 0;        // camera samples the pixels average, all frames and eyes
   int passes = 1;              // renders per frame: 2 in stereo
 };
 

@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)")
       ->check(whole_number(0, UINT64_MAX));
   render_cmd->add_option("--integrator", render.integrator,
-                         "whitted (default), or a debug view: normals, uv, depth, albedo (overrides the scene)");
+                         "whitted (default), path (path tracing), or a debug view: normals, uv, depth, albedo "
+                         "(overrides the scene)");
   render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
       ->check(whole_number(1, kMaxGlossySamples));
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
@@ -58,6 +59,22 @@ int main(int argc, char** argv) {
                    "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
                    "scene)")
       ->check(real_number(-kMaxExposure, kMaxExposure));
+  render_cmd
+      ->add_option("--spp", render.spp,
+                   "Path tracer: the most samples per pixel (overrides the scene's render.samples_per_pixel)")
+      ->check(whole_number(1, kMaxSamplesPerPixel));
+  render_cmd
+      ->add_option("--noise-threshold", render.noise_threshold,
+                   "Path tracer: a pixel stops sampling once its relative error is below T (0: off; overrides "
+                   "the scene)")
+      ->check(real_number(0.0, 1.0));
+  render_cmd
+      ->add_option("--clamp", render.clamp,
+                   "Path tracer: the largest value one sample may add, against fireflies (0: off; biased; "
+                   "overrides the scene)")
+      ->check(real_number(0.0, 1e30));
+  render_cmd->add_flag("--samples-debug", render.samples_debug,
+                       "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
   render_cmd->add_option("--tone-map", render.tone_map,
                          "clamp: values above 1 cut to white; filmic: highlights rolled off (ACES fit) "
                          "(overrides the scene)");

@@ -66,6 +66,9 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.secondary_shadows) s.scale_secondary_shadows = *cmd.secondary_shadows == "scaled";
   if (cmd.exposure) s.display.exposure = *cmd.exposure;
   if (cmd.tone_map) s.display.curve = *cmd.tone_map == "filmic" ? ToneMap::kFilmic : ToneMap::kClamp;
+  if (cmd.spp) s.path.samples_per_pixel = *cmd.spp;
+  if (cmd.noise_threshold) s.path.noise_threshold = *cmd.noise_threshold;
+  if (cmd.clamp) s.path.clamp = *cmd.clamp;
   if (cmd.aa_mode) s.antialias.mode = *cmd.aa_mode;
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
   if (cmd.aa_threshold) s.antialias.threshold = *cmd.aa_threshold;
@@ -101,6 +104,7 @@ struct RenderRequest {
 struct RenderOutputs {
   std::vector<std::string> paths;  // each frame's file (or the one PNG or GIF), then --aa-debug's two
   std::string aa_refined, aa_depth;
+  std::string samples_map;  // --samples-debug's
 };
 
 std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
@@ -141,6 +145,11 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
   }
   if (cmd.aa_debug && cmd.stereo && *cmd.stereo != "none") {
     std::fprintf(stderr, "rtcli: error: --aa-debug shows one image's refinement; it does not go with --stereo\n");
+    return std::nullopt;
+  }
+  if (cmd.samples_debug && ((cmd.stereo && *cmd.stereo != "none") || r.kind != OutputKind::kPng)) {
+    std::fprintf(stderr, "rtcli: error: --samples-debug writes one image beside one PNG (no --stereo, no \"%s\")\n",
+                 r.output.c_str());
     return std::nullopt;
   }
   if (cmd.aa_debug && r.kind != OutputKind::kPng) {
@@ -191,6 +200,10 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
     out.paths.push_back(out.aa_refined);
     out.paths.push_back(out.aa_depth);
   }
+  if (cmd.samples_debug) {
+    out.samples_map = beside(request.output, ".samples");
+    out.paths.push_back(out.samples_map);
+  }
   std::string error;
   for (const std::string& path : out.paths) {
     if (!check_output(path, error) || output_is_an_input(path, inputs, error)) {
@@ -230,7 +243,8 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
 }
 
 // Finishes the output (the GIF is written at the end) and --aa-debug's images.
-bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks, const Film& film, unsigned threads) {
+bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks, const Film& film, unsigned threads,
+                    int most_samples) {
   const SignalBlock block;
   std::string error;
   const auto write = [&](const std::string& path, const Image& image) {
@@ -244,6 +258,8 @@ bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks,
       return false;
     }
   }
+  if (!outputs.samples_map.empty() && !write(outputs.samples_map, sample_count_heat_map(film, most_samples)))
+    return false;
   return outputs.aa_refined.empty() ||
          (write(outputs.aa_refined, refined_pixels_in_red(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
 }
@@ -268,9 +284,23 @@ void print_summary(const RenderCommand& cmd, const RenderSettings& settings, con
                  threads == 1 ? "" : "s", isa);
   }
   const double pixels = static_cast<double>(pixel_count(settings)) * frames.count() * t.passes;
-  std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
-               static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
-               100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
+  if (!integrator_samples_pixels(settings.integrator)) {
+    std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
+                 static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
+                 100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
+  } else {
+    const double samples = static_cast<double>(t.samples);
+    std::fprintf(stderr,
+                 "  path tracing: %.2f rays per pixel, %.1f samples per pixel (at most %d%s), %.3f Msamples/s, %.2f "
+                 "rays per sample\n",
+                 static_cast<double>(t.rays.total()) / pixels, samples / pixels, settings.path.samples_per_pixel,
+                 settings.path.noise_threshold > 0.0f ? ", adaptive" : "",
+                 t.seconds > 0 ? samples / t.seconds / 1e6 : 0.0,
+                 samples > 0 ? static_cast<double>(t.rays.total()) / samples : 0.0);
+    if (t.rays.invalid_samples > 0)
+      std::fprintf(stderr, "rtcli: warning: %llu samples were not a finite, non-negative colour and were dropped\n",
+                   static_cast<unsigned long long>(t.rays.invalid_samples));
+  }
   if (t.passes == 2) std::fprintf(stderr, "  stereo: each eye rendered at %dx%d\n", settings.width, settings.height);
   if (written.size() <= 3) {
     for (const std::string& w : written) std::printf("wrote %s\n", w.c_str());
@@ -344,7 +374,12 @@ int run_render(const RenderCommand& cmd) {
     return *stop;
 
   // Write and summarise.
-  if (!finish_outputs(*outputs, sinks, film, totals.last.threads)) return kExitFailure;
+  const int most_samples = integrator_samples_pixels(settings.integrator)
+                               ? settings.path.samples_per_pixel
+                               : static_cast<int>(std::min<uint64_t>(max_camera_rays_per_frame(settings) /
+                                                                         std::max<uint64_t>(1, pixel_count(settings)),
+                                                                     65535));
+  if (!finish_outputs(*outputs, sinks, film, totals.last.threads, most_samples)) return kExitFailure;
   std::vector<std::string> written;
   for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
   if (!cmd.stats.empty()) {
@@ -359,6 +394,9 @@ int run_render(const RenderCommand& cmd) {
   if (!cmd.quiet) {
     print_summary(cmd, settings, frames, totals, load_seconds, written, loaded->scene.bvh.isa());
     if (!cmd.stats.empty()) std::printf("wrote %s (the render's figures)\n", cmd.stats.c_str());
+    if (cmd.samples_debug)
+      std::printf("wrote %s (samples per pixel: black 0, blue, green, orange, white %d)\n",
+                  outputs->samples_map.c_str(), most_samples);
     if (cmd.aa_debug) {
       std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
       std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",

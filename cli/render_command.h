@@ -27,6 +27,10 @@ struct RenderCommand {
   std::optional<std::string> secondary_shadows;  // "full" or "scaled"
   std::optional<float> exposure;                 // stops
   std::optional<std::string> tone_map;           // "clamp" or "filmic"
+  std::optional<int> spp;                        // the path tracer's samples per pixel
+  std::optional<float> noise_threshold;          // its adaptive stop (0: off)
+  std::optional<float> clamp;                    // its largest sample value (0: off)
+  bool samples_debug = false;                    // also write <output>.samples.png
   bool preview = false;                          // the draft preset (preview_settings)
   std::optional<std::string> aa_mode;
   std::optional<int> aa_samples;

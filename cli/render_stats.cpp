@@ -1,5 +1,6 @@
 #include "cli/render_stats.h"
 
+#include "core/render/integrator.h"
 #include "io/image/atomic_file.h"
 #include "io/json/document.h"
 
@@ -11,7 +12,7 @@ std::string render_stats_json(const RenderStatsInput& in) {
   Json rays = Json::object();
   for (size_t k = 0; k < kRayKindCount; ++k) rays[kRayKindNames[k]] = t.rays.count[k];
   rays["total"] = t.rays.total();
-  const Json out = {
+  Json out = {
       {"rtcli", RTCLI_VERSION},
       {"scene", in.scene},
       {"outputs", in.outputs},
@@ -38,6 +39,17 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"refined_pixels", pixels > 0 ? static_cast<double>(t.refined) / pixels : 0.0},
       {"mrays_per_second", t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds / 1e6 : 0.0},
   };
+  if (integrator_samples_pixels(in.settings.integrator)) {
+    const double samples = static_cast<double>(t.samples);
+    out["path"] = {
+        {"samples_per_pixel", in.settings.path.samples_per_pixel},
+        {"noise_threshold", in.settings.path.noise_threshold},
+        {"clamp", in.settings.path.clamp},
+        {"mean_samples_per_pixel", pixels > 0 ? samples / pixels : 0.0},
+        {"msamples_per_second", t.seconds > 0 ? samples / t.seconds / 1e6 : 0.0},
+        {"invalid_samples", t.rays.invalid_samples},
+    };
+  }
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 

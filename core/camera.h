@@ -14,6 +14,7 @@
 #include <algorithm>
 
 #include "core/aabb.h"
+#include "core/direction_sampling.h"
 #include "core/ray.h"
 #include "core/stereo.h"
 
@@ -119,16 +120,6 @@ struct Camera {
   // perspective also shifts its window so that the convergence plane has no parallax (off-axis,
   // never toe-in); equirectangular offsets each column's origin on the viewing circle (ODS).
   Camera eye_camera(int eye) const;
-
-  // Uniform point of the unit disk from a point of the unit square.
-  static Vec2 concentric_disk(Vec2 u) {
-    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
-    if (a == 0.0f && b == 0.0f) return Vec2(0.0f);
-    const bool wide = std::fabs(a) > std::fabs(b);
-    const float radius = wide ? a : b;
-    const float phi = wide ? (kPi / 4.0f) * (b / a) : (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
-    return radius * Vec2(std::cos(phi), std::sin(phi));
-  }
 
  private:
   bool inside_fisheye_circle(float x, float y, int width, int height) const;

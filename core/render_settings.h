@@ -34,6 +34,16 @@ struct SurfaceDetailSwitches {
   TextureFilter filter = TextureFilter::kTrilinear;
 };
 
+// The path tracer's own settings (docs/rendering.md, "Path tracing"); max_depth above is shared.
+struct PathSettings {
+  int samples_per_pixel = 64;  // render.samples_per_pixel / --spp: the most camera samples of a pixel
+  // render.noise_threshold / --noise-threshold: a pixel stops once its estimated relative error
+  // is below this (0: off, every pixel takes samples_per_pixel).
+  float noise_threshold = 0.0f;
+  // render.clamp: the largest value (max channel) one camera sample may add; 0: off. Biased.
+  float clamp = 0.0f;
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 480;
@@ -53,6 +63,7 @@ struct RenderSettings {
   SurfaceDetailSwitches detail;
   // Linear radiance to display: exposure in stops and the tone curve (core/tone_map.h).
   DisplayTransform display;
+  PathSettings path;
 };
 
 // Limits on what settings may ask for (docs/errors-and-limits.md, "Limits"). The film holds 12 bytes a pixel
@@ -64,6 +75,7 @@ inline constexpr int kMaxAdaptiveDepth = 4;  // 16 x 16 cells, like the largest 
 inline constexpr int kMaxRecursionDepth = 64;
 inline constexpr int kMaxGlossySamples = 256;
 inline constexpr int kMaxShadowSamples = 1024;
+inline constexpr int kMaxSamplesPerPixel = 65535;  // the film's sample count is 16 bits
 // Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
 inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
 

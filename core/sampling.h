@@ -14,7 +14,7 @@
 
 namespace rt {
 
-enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy };
+enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy, kBsdf, kRoulette };
 
 class SampleStream {
  public:

@@ -8,6 +8,7 @@
 
 #include "core/accel/bvh.h"
 #include "core/camera.h"
+#include "core/lights/emitters.h"
 #include "core/lights/light.h"
 #include "core/scene_assets.h"
 
@@ -35,6 +36,9 @@ struct Scene {
   // occlusion kernel, not the transmittance visitor. False (the visitor, always right) unless
   // whoever builds the scene has checked.
   bool all_opaque = false;
+  // The emissive mesh triangles, for the path tracer's light sampling (empty unless whoever
+  // builds the scene makes it: SceneGraph::at does).
+  Emitters emitters;
 
   const std::vector<Material>& materials() const { return assets->materials; }
   const std::vector<Texture>& textures() const { return assets->textures; }

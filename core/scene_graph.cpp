@@ -117,6 +117,7 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.bvh = Bvh(placed, options);
   scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
                                   [](const Material& m) { return m.transmissive(); });
+  scene.emitters = Emitters(scene.bvh, *assets);
   return scene;
 }
 

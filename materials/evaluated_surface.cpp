@@ -80,6 +80,10 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
       roughness *= t.y;
       metallic *= t.z;
     }
+    s.pbr = true;
+    s.base_color = kd;
+    s.metallic = std::clamp(metallic, 0.0f, 1.0f);
+    s.roughness = std::clamp(roughness, 0.0f, 1.0f);
     const PhongTerms p = pbr_to_phong(kd, metallic, roughness);
     s.diffuse = p.kd * (Vec3(1.0f) - m.transmission);
     s.specular = p.ks;
@@ -104,6 +108,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   if (m.unlit) {  // shown as it is: nothing reflected, scattered or passed on
     s.emission += kd;
     s.diffuse = s.specular = s.reflectivity = s.transmission = Vec3(0.0f);
+    s.pbr = false;
   }
   return s;
 }

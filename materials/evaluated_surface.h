@@ -34,6 +34,12 @@ struct EvaluatedSurface {
   Vec3 absorption{0.0f};
   float glossy = 0.0f;
   Vec3 emission{0.0f};  // radiance the surface gives off itself (emissive, unlit)
+  // glTF's metallic-roughness at this point, for the path tracer's microfacet model (the Phong
+  // terms above are Whitted's conversion of it). pbr false: a Phong material.
+  bool pbr = false;
+  Vec3 base_color{0.0f};  // textured, times COLOR_0
+  float metallic = 0.0f;
+  float roughness = 1.0f;
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };

@@ -14,6 +14,13 @@ constexpr int kMinShadowPacket = 4;
 
 }  // namespace
 
+Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction) {
+  if (s.shadow_lift == Vec3(0.0f)) return offset_ray_origin(s.position, s.position_error, s.ng, direction);
+  // The lifted point's bound: the sum's own rounding on top of the point's.
+  const Vec3 lifted_error = s.position_error + float_gamma(1) * glm::abs(s.position + s.shadow_lift);
+  return offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, direction);
+}
+
 Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
@@ -23,9 +30,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   // One sample of an area light sits at its centre when the scene asks for one (a hard shadow, as
   // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
   const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
-  // The lifted point's bound: the sum's own rounding on top of the point's.
   const bool lifted = s.shadow_lift != Vec3(0.0f);
-  const Vec3 lifted_error = s.position_error + float_gamma(1) * glm::abs(s.position + s.shadow_lift);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     // A point light is one sample; an area light shadow_samples points stratified over it, one
@@ -53,8 +58,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       if (max_component(ls.radiance) <= 0.0f) return false;  // the dark back of an area light
       // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
       // far beside a lift of a fraction of a facet.
-      shadow.origin = lifted ? offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, ls.direction)
-                             : offset_ray_origin(s.position, s.position_error, s.ng, ls.direction);
+      shadow.origin = shadow_ray_origin(s, ls.direction);
       shadow.direction = ls.direction;
       shadow.tmin = 0.0f;
       // Stop just short of the light so a surface the light sits on does not shadow it.

@@ -13,4 +13,8 @@ namespace rt {
 // (render.secondary_shadows, core/render_settings.h).
 Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx);
 
+// Where a shadow ray from the surface towards `direction` starts: off the surface by its rounding
+// bound, from the lifted point on a smooth mesh (Hanika; SurfaceInteraction::shadow_lift).
+Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction);
+
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "core/render/integrator.h"
 
 #include "core/render/debug_integrators.h"
+#include "core/render/path_integrator.h"
 #include "core/render/whitted_integrator.h"
 
 namespace rt {
@@ -10,6 +11,7 @@ struct Entry {
   const char* name;
   std::unique_ptr<Integrator> (*make)();
   bool radiance;  // false: a debug view (integrator_shows_radiance)
+  bool samples_pixels = false;  // integrator_samples_pixels
 };
 
 template <class T>
@@ -19,8 +21,11 @@ std::unique_ptr<Integrator> make() {
 
 // The name table. Adding an integrator = one file and one line here.
 constexpr Entry kIntegrators[] = {
-    {"whitted", &make<WhittedIntegrator>, true}, {"normals", &make<NormalsIntegrator>, false},
-    {"uv", &make<UvIntegrator>, false},          {"depth", &make<DepthIntegrator>, false},
+    {"whitted", &make<WhittedIntegrator>, true},
+    {"path", &make<PathIntegrator>, true, true},
+    {"normals", &make<NormalsIntegrator>, false},
+    {"uv", &make<UvIntegrator>, false},
+    {"depth", &make<DepthIntegrator>, false},
     {"albedo", &make<AlbedoIntegrator>, false},
 };
 
@@ -36,6 +41,12 @@ bool integrator_shows_radiance(std::string_view name) {
   for (const Entry& e : kIntegrators)
     if (name == e.name) return e.radiance;
   return true;
+}
+
+bool integrator_samples_pixels(std::string_view name) {
+  for (const Entry& e : kIntegrators)
+    if (name == e.name) return e.samples_pixels;
+  return false;
 }
 
 std::vector<std::string> integrator_names() {

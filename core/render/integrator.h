@@ -49,6 +49,9 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name);
 // through exposure and the tone curve (core/tone_map.h), rather than a debug view's data
 // (normals, uv, depth, albedo), which is shown as it is.
 bool integrator_shows_radiance(std::string_view name);
+// Whether the integrator registered under `name` takes its own samples per pixel (the path
+// tracer: render.samples_per_pixel, core/render/path_sampler.h) rather than render.antialias's.
+bool integrator_samples_pixels(std::string_view name);
 std::vector<std::string> integrator_names();
 
 }  // namespace rt

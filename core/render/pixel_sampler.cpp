@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/render/adaptive_sampler.h"
+#include "core/render/path_sampler.h"
 
 namespace rt {
 
@@ -126,6 +127,7 @@ constexpr Entry kSamplers[] = {{"none", &make_centre}, {"uniform", &make_uniform
 }  // namespace
 
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid) {
+  if (integrator_samples_pixels(settings.integrator)) return std::make_unique<PathSampler>(settings.path);
   for (const Entry& e : kSamplers)
     if (settings.antialias.mode == e.name) return e.make(settings.antialias, grid);
   return nullptr;

@@ -53,7 +53,8 @@ class PixelSampler {
   virtual bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) = 0;
 };
 
-// The sampler registered under settings.antialias.mode, for an image cut into `grid`;
+// The sampler registered under settings.antialias.mode, for an image cut into `grid` (the path
+// sampler, whatever the mode, for an integrator that samples pixels itself);
 // nullptr if no sampler has that name.
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid);
 std::vector<std::string> pixel_sampler_names();

@@ -33,4 +33,18 @@ inline Image refinement_heat_map(const Film& film) {
   return out;
 }
 
+// Each pixel coloured by the camera samples it took (the path tracer's --samples-debug), out of
+// `most`: the heat-map colours above spread evenly from 0 (black) to `most` (white), blended.
+inline Image sample_count_heat_map(const Film& film, int most) {
+  Image out(film.width(), film.height());
+  const float top = static_cast<float>(kRefinementColors.size() - 1);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const float t = std::clamp(static_cast<float>(film.samples[film.index(x, y)]) / static_cast<float>(std::max(1, most)), 0.0f, 1.0f) * top;
+      const size_t i = std::min(static_cast<size_t>(t), kRefinementColors.size() - 2);
+      out.at(x, y) = glm::mix(kRefinementColors[i], kRefinementColors[i + 1], t - static_cast<float>(i));
+    }
+  return out;
+}
+
 }  // namespace rt

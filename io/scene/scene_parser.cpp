@@ -19,6 +19,8 @@ constexpr NumberRule kShadowSamples{1, kMaxShadowSamples, false, false, true};
 constexpr NumberRule kThreshold{0, 1, false, false, false};  // a difference of displayed values
 constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
 constexpr NumberRule kExposure{-kMaxExposure, kMaxExposure, false, false, false};  // stops
+constexpr NumberRule kSamplesPerPixel{1, kMaxSamplesPerPixel, false, false, true};
+constexpr NumberRule kNoiseThreshold{0, 1, false, false, false};  // a relative error
 
 // render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
 // the scene's parameters.
@@ -55,6 +57,9 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
       s.scale_secondary_shadows = *k == 1;
   }
   if (const auto e = o.number("exposure", kExposure)) s.display.exposure = static_cast<float>(*e);
+  if (const auto n = o.number("samples_per_pixel", kSamplesPerPixel)) s.path.samples_per_pixel = static_cast<int>(*n);
+  if (const auto t = o.number("noise_threshold", kNoiseThreshold)) s.path.noise_threshold = static_cast<float>(*t);
+  if (const auto c = o.number("clamp", kNonNegative)) s.path.clamp = static_cast<float>(*c);
   if (const Json* t = o.get("tone_map")) {
     if (const auto k = read_choice(r, *t, o.child("tone_map"), tone_map_names())) s.display.curve = static_cast<ToneMap>(*k);
   }

@@ -119,7 +119,7 @@ TEST_CASE("schema: the integrator and pixel sampler enums are the renderer's nam
   auto samplers = pixel_sampler_names();
   std::sort(integrators.begin(), integrators.end());
   std::sort(samplers.begin(), samplers.end());
-  CHECK(integrators.size() == 5);
+  CHECK(integrators.size() == 6);
   CHECK(names_at("/definitions/render/properties/integrator/enum") == integrators);
   CHECK(names_at("/definitions/render/properties/antialias/properties/mode/enum") == samplers);
 }

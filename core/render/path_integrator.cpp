@@ -1,0 +1,190 @@
+#include "core/render/path_integrator.h"
+
+#include "core/render/direct_lighting.h"
+#include "core/render/medium_stack.h"
+
+namespace rt {
+namespace {
+
+float index_of(const MediumStack& media, const Scene& scene) {
+  return media.empty() ? 1.0f : scene.materials()[media.innermost()].ior;
+}
+
+// The ray cone's spread after a smooth (diffuse or glossy) bounce: such rays scatter widely, and
+// their hits only need a coarse texture level (a fine one is as right, and slower).
+constexpr float kScatteredSpread = 0.05f;
+
+// A shadow ray from the surface to a point `distance` away along unit `direction`; false when
+// something blocks it. Stops just short of the point, so the surface the point lies on does not.
+bool visible(const EvaluatedSurface& s, Vec3 direction, float distance, TraceContext& ctx) {
+  Ray shadow;
+  shadow.origin = shadow_ray_origin(s, direction);
+  shadow.direction = direction;
+  shadow.tmin = 0.0f;
+  shadow.tmax = distance * (1.0f - kShadowEpsilon);
+  ++ctx.counters[RayKind::kShadow];
+  return !ctx.scene.occluded(shadow);
+}
+
+}  // namespace
+
+Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, int bounce, TraceContext& ctx) const {
+  const Scene& scene = ctx.scene;
+  const uint64_t path = static_cast<uint64_t>(bounce);
+  Vec3 sum(0.0f);
+  for (size_t l = 0; l < scene.lights.size(); ++l) {
+    const Light& light = scene.lights[l];
+    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, l);
+    if (const RectLight* rect = std::get_if<RectLight>(&light)) {
+      // An area emitter of radiance `color`: a point drawn uniformly by area, density d^2 /
+      // (cos A) per solid angle.
+      const Vec3 to = rect->point(u) - s.position;
+      const float d2 = glm::dot(to, to);
+      if (!(d2 > 0.0f)) continue;
+      const float distance = std::sqrt(d2);
+      const Vec3 wi = to / distance;
+      const Vec3 normal_area = glm::cross(rect->edge1, rect->edge2);
+      const float area = glm::length(normal_area);
+      float cos_light = -glm::dot(wi, normal_area) / area;
+      if (rect->two_sided) cos_light = std::fabs(cos_light);
+      if (!(cos_light > 0.0f)) continue;
+      const Vec3 f = bsdf.eval(wi);
+      if (max_component(f) <= 0.0f) continue;
+      const float light_pdf = d2 / (cos_light * area);
+      if (!visible(s, wi, distance, ctx)) continue;
+      sum += f * rect->color * (power_heuristic(light_pdf, bsdf.pdf(wi)) / light_pdf);
+      continue;
+    }
+    // Point, spot, directional: a delta, reached by light sampling alone.
+    const LightSample ls = sample_light(light, s.position, u);
+    if (max_component(ls.radiance) <= 0.0f) continue;
+    const Vec3 f = bsdf.eval(ls.direction);
+    if (max_component(f) <= 0.0f) continue;
+    if (!visible(s, ls.direction, ls.distance, ctx)) continue;
+    sum += f * ls.radiance * kDeltaLightScale;
+  }
+  if (!scene.emitters.empty()) {
+    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size());
+    const float u_pick = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size() + 1).x;
+    const EmitterSample e = scene.emitters.sample(u_pick, u);
+    const Vec3 to = e.point - s.position;
+    const float d2 = glm::dot(to, to);
+    if (d2 > 0.0f && e.area_pdf > 0.0f) {
+      const float distance = std::sqrt(d2);
+      const Vec3 wi = to / distance;
+      const Vec3 f = bsdf.eval(wi);
+      if (max_component(f) > 0.0f) {
+        // The emitter's own record at the point, as a ray from here would meet it.
+        Ray towards;
+        towards.origin = s.position;
+        towards.direction = wi;
+        Hit hit = e.hit;
+        hit.t = distance;
+        const SurfaceInteraction si = scene.surface(towards, hit);
+        const float cos_light = std::fabs(glm::dot(si.geometric_normal, wi));
+        if (cos_light > 0.0f) {
+          const EvaluatedSurface emitter = evaluate_surface(scene.materials()[si.material], si, wi, scene.textures(),
+                                                            0.0f, ctx.settings.detail);
+          const float light_pdf = e.area_pdf * d2 / cos_light;
+          if (max_component(emitter.emission) > 0.0f && visible(s, wi, distance, ctx))
+            sum += f * emitter.emission * (power_heuristic(light_pdf, bsdf.pdf(wi)) / light_pdf);
+        }
+      }
+    }
+  }
+  return sum;
+}
+
+Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& first, int, TraceContext& ctx) const {
+  const Scene& scene = ctx.scene;
+  const RenderSettings& settings = ctx.settings;
+  Vec3 radiance(0.0f);
+  Vec3 beta(1.0f);  // the path's throughput so far
+  Ray ray = camera_ray;
+  SceneHit met = first;
+  MediumStack media;
+  bool delta = true;      // the last bounce was a delta lobe (or the camera): what it meets counts fully
+  float bsdf_pdf = 0.0f;  // the density of the last bounce's direction, for MIS where it meets a light
+  float cone_width = ctx.pixel_footprint, cone_spread = ctx.pixel_spread;
+  for (int bounce = 0;; ++bounce) {
+    const float length = glm::length(ray.direction);
+    const Vec3 dir = ray.direction / length;
+    const float distance = ray.tmax * length;
+    // Beer-Lambert along the segment just travelled, inside the innermost medium.
+    if (!media.empty()) {
+      const Material& m = scene.materials()[media.innermost()];
+      for (int c = 0; c < 3; ++c)
+        if (m.absorption[c] > 0.0f) beta[c] *= std::exp(-m.absorption[c] * distance);
+    }
+    if (!met.surface && !met.light) {  // into the background: a uniform environment
+      radiance += beta * scene.background;
+      break;
+    }
+    if (met.light) {
+      const RectLight& rect = *met.light;
+      float weight = 1.0f;
+      if (!delta) {
+        const Vec3 normal_area = glm::cross(rect.edge1, rect.edge2);
+        const float area = glm::length(normal_area);
+        const float cos_light = std::fabs(glm::dot(dir, normal_area)) / area;
+        weight = power_heuristic(bsdf_pdf, distance * distance / (cos_light * area));
+      }
+      radiance += beta * rect.color * weight;
+      break;
+    }
+    const SurfaceInteraction si = scene.surface(ray, met.hit);
+    const Material& material = scene.materials()[si.material];
+    cone_width += cone_spread * distance;
+    const EvaluatedSurface s =
+        evaluate_surface(material, si, ray.direction, scene.textures(), cone_width, settings.detail);
+    if (s.emission != Vec3(0.0f)) {
+      float weight = 1.0f;
+      if (!delta && scene.emitters.draws(met.hit.prim)) {
+        const float cos_light = std::fabs(glm::dot(si.geometric_normal, dir));
+        weight = power_heuristic(bsdf_pdf, scene.emitters.area_pdf(material.emission) * distance * distance / cos_light);
+      }
+      radiance += beta * s.emission * weight;
+    }
+    if (bounce >= settings.max_depth) break;
+
+    // The indices on both sides, by the medium stack's rule (as Whitted's refraction).
+    float eta = 1.0f;
+    MediumStack beyond = media;
+    if (s.transmissive()) {
+      beyond = s.entering ? media.entered(s.medium) : media.left(s.medium);
+      const float n1 = s.entering ? index_of(media, scene) : scene.materials()[s.medium].ior;
+      eta = index_of(beyond, scene) / n1;
+    }
+    const Bsdf bsdf(s, eta);
+    if (bsdf.has_smooth_lobes()) radiance += beta * direct_light(s, bsdf, bounce, ctx);
+
+    const Vec2 pick = ctx.samples.get2(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 0);
+    const Vec2 u = ctx.samples.get2(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 1);
+    BsdfSample b;
+    if (!bsdf.sample(pick.x, u, b)) break;
+    beta *= b.weight;
+    delta = b.delta;
+    bsdf_pdf = b.pdf;
+    if (b.transmitted) media = beyond;
+    if (!delta) cone_spread = std::max(cone_spread, kScatteredSpread);
+    if (bounce + 1 >= kRouletteStart) {
+      // Survive with a probability that follows the throughput, and make up for the paths ended.
+      const float survive = max_component(beta);
+      if (survive < 1.0f) {
+        if (ctx.samples.get2(SamplePurpose::kRoulette, static_cast<uint64_t>(bounce), 0).x >= survive) break;
+        beta /= survive;
+      }
+    }
+    if (!(max_component(beta) > 0.0f) || !is_finite(beta)) break;
+
+    ray = Ray{};
+    ray.origin = offset_ray_origin(s.position, s.position_error, s.ng, b.wi);
+    ray.direction = b.wi;
+    ++ctx.counters[RayKind::kBounce];
+    met = SceneHit{};
+    scene.intersect(ray, met);
+  }
+  return radiance;
+}
+
+}  // namespace rt

@@ -1,0 +1,33 @@
+// The path tracer's pixel sampler: up to render.samples_per_pixel camera samples per pixel, each
+// through a keyed random point of the pixel (a box filter), averaged. With render.noise_threshold
+// a pixel stops early once its estimated relative error is below the threshold:
+//   error = standard error of the mean luminance / max(mean luminance, kNoiseFloor),
+// checked after every packet of samples once kMinSamples are in. A pixel's samples and its stop
+// depend only on its own keys, so the image is the same for any thread count or tile order.
+// Each sample's radiance passes render.clamp (if set) and the check that drops anything but a
+// finite, non-negative colour (counted in RayCounters::invalid_samples).
+#pragma once
+
+#include "core/render/pixel_sampler.h"
+
+namespace rt {
+
+class PathSampler final : public PixelSampler {
+ public:
+  static constexpr int kMinSamples = 16;
+  // Below this mean luminance the error is measured against it rather than the mean: dark pixels
+  // need not be known to a percent of almost nothing (0.02 is 0.15 after sRGB encoding).
+  static constexpr float kNoiseFloor = 0.02f;
+
+  explicit PathSampler(const PathSettings& settings) : settings_(settings) {}
+  bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override;
+
+ private:
+  PathSettings settings_;
+};
+
+// The relative error of a pixel's mean from n samples whose luminances sum to `sum` and whose
+// squares sum to `sum_squares` (PathSampler's rule).
+float pixel_relative_error(double sum, double sum_squares, int n);
+
+}  // namespace rt

@@ -1,0 +1,204 @@
+#include "materials/bsdf.h"
+
+#include "materials/optics.h"
+
+namespace rt {
+namespace {
+
+// Below this alpha (roughness ~0.03) GGX is a mirror for any purpose, and its density too sharp
+// for float: the lobe becomes a delta.
+constexpr float kSmoothAlpha = 1e-3f;
+
+float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+
+// The normalised Phong lobe about the mirror direction r (local): weight (n + 2) / (2 pi) cos^n.
+float phong_lobe(Vec3 wi, Vec3 r, float exponent) {
+  const float c = glm::dot(wi, r);
+  return c > 0.0f ? (exponent + 2.0f) * (0.5f / kPi) * std::pow(c, exponent) : 0.0f;
+}
+float phong_pdf(Vec3 wi, Vec3 r, float exponent) {
+  const float c = glm::dot(wi, r);
+  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * std::pow(c, exponent) : 0.0f;
+}
+Vec3 sample_phong(Vec3 r, float exponent, Vec2 u) {
+  const float cos_a = std::pow(u.x, 1.0f / (exponent + 1.0f));
+  const float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
+  const float phi = 2.0f * kPi * u.y;
+  return ShadingFrame(r).to_world(Vec3(sin_a * std::cos(phi), sin_a * std::sin(phi), cos_a));
+}
+
+Vec3 mirror_local(Vec3 wo) { return Vec3(-wo.x, -wo.y, wo.z); }
+
+// glTF's dielectric Fresnel term for the diffuse layer (F0 = 0.04).
+float dielectric_schlick(float cos_theta) {
+  const float m = std::clamp(1.0f - cos_theta, 0.0f, 1.0f);
+  return 0.04f + 0.96f * (m * m) * (m * m) * m;
+}
+
+}  // namespace
+
+Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(eta) {
+  wo_local_ = frame_.to_local(s.wo);
+  const float cos_o = std::max(wo_local_.z, 0.0f);
+  float weight[kLobeCount] = {};
+  if (s.pbr) {
+    pbr_ = true;
+    const Vec3 transmission = s.transmission * (1.0f - s.metallic);  // metal lets nothing through
+    layer_ = 1.0f - std::clamp(max_component(transmission), 0.0f, 1.0f);
+    base_diffuse_ = (1.0f - s.metallic) * layer_ * s.base_color;
+    f0_ = glm::mix(Vec3(0.04f), s.base_color, s.metallic);
+    ggx_.alpha = s.roughness * s.roughness;
+    const Vec3 fresnel = layer_ * schlick_fresnel(f0_, cos_o);
+    weight[kDiffuse] = average(base_diffuse_) * (1.0f - dielectric_schlick(cos_o));
+    if (ggx_.alpha < kSmoothAlpha) {
+      mirror_ = fresnel;
+      weight[kMirror] = average(mirror_);
+    } else {
+      weight[kSpecular] = average(fresnel);
+    }
+    glass_reflect_ = transmission;
+    glass_refract_ = transmission * s.base_color;
+    weight[kGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
+  } else {
+    // The transmitted share T goes to the dielectric; the opaque lobes share what is left.
+    const Vec3 opaque = Vec3(1.0f) - s.transmission;
+    diffuse_ = s.diffuse;  // kd (1 - T) already
+    specular_ = s.specular * opaque;
+    specular_exponent_ = std::max(s.shininess, 0.0f);
+    const Vec3 reflect = s.reflectivity * opaque;
+    if (s.glossy > 0.0f) {
+      glossy_ = reflect;
+      glossy_exponent_ = glossy_exponent(s.glossy);
+    } else {
+      mirror_ = reflect;
+    }
+    glass_reflect_ = glass_refract_ = s.transmission;
+    const float total = max_component(diffuse_ + specular_ + reflect + s.transmission);
+    if (total > 1.0f) {
+      const float scale = 1.0f / total;
+      diffuse_ *= scale;
+      specular_ *= scale;
+      glossy_ *= scale;
+      mirror_ *= scale;
+      glass_reflect_ *= scale;
+      glass_refract_ *= scale;
+    }
+    weight[kDiffuse] = average(diffuse_);
+    weight[kSpecular] = average(specular_);
+    weight[kGlossy] = average(glossy_);
+    weight[kMirror] = average(mirror_);
+    weight[kGlass] = average(glass_reflect_);
+  }
+  float sum = 0.0f;
+  for (const float w : weight) sum += w;
+  if (sum > 0.0f)
+    for (int i = 0; i < kLobeCount; ++i) probability_[i] = weight[i] / sum;
+  smooth_ = probability_[kDiffuse] > 0.0f || probability_[kSpecular] > 0.0f || probability_[kGlossy] > 0.0f;
+}
+
+Vec3 Bsdf::eval_local(Vec3 wi) const {
+  const Vec3 wo = wo_local_;
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return Vec3(0.0f);
+  if (pbr_) {
+    const Vec3 h = glm::normalize(wo + wi);
+    const float wo_h = std::max(glm::dot(wo, h), 0.0f);
+    Vec3 f = base_diffuse_ * ((1.0f - dielectric_schlick(wo_h)) * wi.z / kPi);
+    if (probability_[kSpecular] > 0.0f)
+      f += layer_ * schlick_fresnel(f0_, wo_h) * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
+    return f;
+  }
+  const Vec3 r = mirror_local(wo);
+  Vec3 f = diffuse_ * (wi.z / kPi);
+  if (probability_[kSpecular] > 0.0f) f += specular_ * (phong_lobe(wi, r, specular_exponent_) * wi.z);
+  if (probability_[kGlossy] > 0.0f) f += glossy_ * (phong_lobe(wi, r, glossy_exponent_) * wi.z);
+  return f;
+}
+
+float Bsdf::pdf_local(Vec3 wi) const {
+  const Vec3 wo = wo_local_;
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
+  float p = probability_[kDiffuse] * wi.z / kPi;
+  if (pbr_) {
+    if (probability_[kSpecular] > 0.0f)
+      p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
+    return p;
+  }
+  const Vec3 r = mirror_local(wo);
+  if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * phong_pdf(wi, r, specular_exponent_);
+  if (probability_[kGlossy] > 0.0f) p += probability_[kGlossy] * phong_pdf(wi, r, glossy_exponent_);
+  return p;
+}
+
+Vec3 Bsdf::eval(Vec3 wi) const {
+  if (!smooth_ || glm::dot(wi, ng_) <= 0.0f) return Vec3(0.0f);  // smooth lobes only reflect
+  return eval_local(frame_.to_local(wi));
+}
+
+float Bsdf::pdf(Vec3 wi) const {
+  if (!smooth_ || glm::dot(wi, ng_) <= 0.0f) return 0.0f;
+  return pdf_local(frame_.to_local(wi));
+}
+
+bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
+  int lobe = 0;
+  float below = 0.0f;  // the probability of the lobes before `lobe`
+  for (; lobe < kLobeCount - 1; ++lobe) {
+    if (u_lobe < below + probability_[lobe]) break;
+    below += probability_[lobe];
+  }
+  const float p = probability_[lobe];
+  if (p <= 0.0f) return false;
+  const Vec3 wo = frame_.to_world(wo_local_);
+  out = BsdfSample{};
+  if (lobe == kMirror || lobe == kGlass) {
+    out.delta = true;
+    Vec3 mirror = reflect(-wo, frame_.n);
+    if (glm::dot(mirror, ng_) <= 0.0f) mirror = reflect(-wo, ng_);  // never into the surface
+    if (lobe == kMirror) {
+      out.wi = mirror;
+      out.weight = mirror_ / p;
+      out.pdf = p;
+      return true;
+    }
+    // The dielectric: reflect with the Fresnel probability, else refract (u_lobe's remainder
+    // within the lobe decides, so that no other number is needed).
+    const float fresnel = fresnel_dielectric(wo_local_.z, eta_);
+    const float within = (u_lobe - below) / p;
+    if (within < fresnel) {
+      out.wi = mirror;
+      out.weight = glass_reflect_ / p;
+      out.pdf = p * fresnel;
+      return true;
+    }
+    Vec3 refracted;
+    if (!refract(-wo, frame_.n, 1.0f / eta_, refracted) || glm::dot(refracted, ng_) >= 0.0f) {
+      if (!refract(-wo, ng_, 1.0f / eta_, refracted)) return false;
+    }
+    out.wi = refracted;
+    out.weight = glass_refract_ / p;
+    out.pdf = p * (1.0f - fresnel);
+    out.transmitted = true;
+    return true;
+  }
+  Vec3 wi_local;
+  if (lobe == kDiffuse) {
+    wi_local = cosine_hemisphere(u);
+  } else if (pbr_) {
+    if (wo_local_.z <= 0.0f) return false;
+    const Vec3 h = ggx_.sample_visible(wo_local_, u);
+    wi_local = reflect(-wo_local_, h);
+  } else {
+    const float exponent = lobe == kSpecular ? specular_exponent_ : glossy_exponent_;
+    wi_local = sample_phong(mirror_local(wo_local_), exponent, u);
+  }
+  const Vec3 wi = frame_.to_world(wi_local);
+  if (wi_local.z <= 0.0f || glm::dot(wi, ng_) <= 0.0f) return false;
+  const float density = pdf_local(wi_local);
+  if (!(density > 0.0f)) return false;
+  out.wi = wi;
+  out.pdf = density;
+  out.weight = eval_local(wi_local) / density;
+  return true;
+}
+
+}  // namespace rt
