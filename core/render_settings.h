@@ -42,6 +42,11 @@ struct PathSettings {
   float noise_threshold = 0.0f;
   // render.clamp: the largest value (max channel) one camera sample may add; 0: off. Biased.
   float clamp = 0.0f;
+  // How lights that both strategies can find (rect lights, emissive meshes) are found: both,
+  // combined by multiple importance sampling (the default), or one alone. Every choice converges
+  // to the same image; the test of MIS renders all three (tests/render/test_path_tracer.cpp).
+  enum class Strategy { kMis, kLights, kBsdf };
+  Strategy strategy = Strategy::kMis;
 };
 
 struct RenderSettings {

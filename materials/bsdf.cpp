@@ -11,10 +11,14 @@ constexpr float kSmoothAlpha = 1e-3f;
 
 float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
-// The normalised Phong lobe about the mirror direction r (local): weight (n + 2) / (2 pi) cos^n.
-float phong_lobe(Vec3 wi, Vec3 r, float exponent) {
+// The Phong lobe about the mirror direction r (local), as f: (n + 1) / (2 pi) cos^n(alpha) /
+// max(cos theta_i, cos theta_o). The density of the lobe over the larger cosine (Ashikhmin and
+// Shirley's denominator) keeps it reciprocal, gives back at most ks at every angle and close to ks
+// wherever the lobe stays above the surface; the classic normalisation, (n + 2) / (2 pi) cos^n,
+// gives back only about ks cos(theta_o), so glossy rims went dark.
+float phong_lobe(Vec3 wi, Vec3 wo, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
-  return c > 0.0f ? (exponent + 2.0f) * (0.5f / kPi) * std::pow(c, exponent) : 0.0f;
+  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * std::pow(c, exponent) / std::max(wi.z, wo.z) : 0.0f;
 }
 float phong_pdf(Vec3 wi, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
@@ -109,8 +113,8 @@ Vec3 Bsdf::eval_local(Vec3 wi) const {
   }
   const Vec3 r = mirror_local(wo);
   Vec3 f = diffuse_ * (wi.z / kPi);
-  if (probability_[kSpecular] > 0.0f) f += specular_ * (phong_lobe(wi, r, specular_exponent_) * wi.z);
-  if (probability_[kGlossy] > 0.0f) f += glossy_ * (phong_lobe(wi, r, glossy_exponent_) * wi.z);
+  if (probability_[kSpecular] > 0.0f) f += specular_ * (phong_lobe(wi, wo, r, specular_exponent_) * wi.z);
+  if (probability_[kGlossy] > 0.0f) f += glossy_ * (phong_lobe(wi, wo, r, glossy_exponent_) * wi.z);
   return f;
 }
 

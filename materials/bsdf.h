@@ -3,7 +3,7 @@
 // both material kinds (docs/rendering.md, "Path tracing: materials"):
 //   Phong material                       glTF metallic-roughness material
 //   diffuse  kd x (1 - T): Lambert        (1 - metallic)(1 - F(0.04)) base / pi: Lambert
-//   specular ks: normalised Phong lobe    F(mix(0.04, base, metallic)) D G / (4 cos cos): GGX
+//   specular ks: a Phong lobe             F(mix(0.04, base, metallic)) D G / (4 cos cos): GGX
 //   reflectivity: a mirror (delta), or with glossy width a a Phong lobe of exponent 12 / a^2
 //   transmission T: smooth dielectric (delta), Fresnel-split into reflection and refraction
 // A Phong material whose weights add up to more than 1 in a channel is scaled down to 1, so that

@@ -26,16 +26,30 @@ bool visible(const EvaluatedSurface& s, Vec3 direction, float distance, TraceCon
   return !ctx.scene.occluded(shadow);
 }
 
+// The MIS weight of a light sample (density light_pdf) that BSDF sampling finds with bsdf_pdf.
+float light_weight(PathSettings::Strategy strategy, float light_pdf, float bsdf_pdf) {
+  return strategy == PathSettings::Strategy::kLights ? 1.0f : power_heuristic(light_pdf, bsdf_pdf);
+}
+// The MIS weight of a light met by a BSDF-sampled ray, which light sampling finds with light_pdf.
+float bsdf_weight(PathSettings::Strategy strategy, float bsdf_pdf, float light_pdf) {
+  if (strategy == PathSettings::Strategy::kBsdf) return 1.0f;
+  if (strategy == PathSettings::Strategy::kLights) return 0.0f;
+  return power_heuristic(bsdf_pdf, light_pdf);
+}
+
 }  // namespace
 
 Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, int bounce, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
   const uint64_t path = static_cast<uint64_t>(bounce);
+  const PathSettings::Strategy strategy = ctx.settings.path.strategy;
+  const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // rect lights and emissive surfaces
   Vec3 sum(0.0f);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, l);
     if (const RectLight* rect = std::get_if<RectLight>(&light)) {
+      if (!sample_areas) continue;
       // An area emitter of radiance `color`: a point drawn uniformly by area, density d^2 /
       // (cos A) per solid angle.
       const Vec3 to = rect->point(u) - s.position;
@@ -52,7 +66,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
       if (max_component(f) <= 0.0f) continue;
       const float light_pdf = d2 / (cos_light * area);
       if (!visible(s, wi, distance, ctx)) continue;
-      sum += f * rect->color * (power_heuristic(light_pdf, bsdf.pdf(wi)) / light_pdf);
+      sum += f * rect->color * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
       continue;
     }
     // Point, spot, directional: a delta, reached by light sampling alone.
@@ -63,7 +77,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
     if (!visible(s, ls.direction, ls.distance, ctx)) continue;
     sum += f * ls.radiance * kDeltaLightScale;
   }
-  if (!scene.emitters.empty()) {
+  if (sample_areas && !scene.emitters.empty()) {
     const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size());
     const float u_pick = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size() + 1).x;
     const EmitterSample e = scene.emitters.sample(u_pick, u);
@@ -87,7 +101,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
                                                             0.0f, ctx.settings.detail);
           const float light_pdf = e.area_pdf * d2 / cos_light;
           if (max_component(emitter.emission) > 0.0f && visible(s, wi, distance, ctx))
-            sum += f * emitter.emission * (power_heuristic(light_pdf, bsdf.pdf(wi)) / light_pdf);
+            sum += f * emitter.emission * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
         }
       }
     }
@@ -127,7 +141,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         const Vec3 normal_area = glm::cross(rect.edge1, rect.edge2);
         const float area = glm::length(normal_area);
         const float cos_light = std::fabs(glm::dot(dir, normal_area)) / area;
-        weight = power_heuristic(bsdf_pdf, distance * distance / (cos_light * area));
+        weight = bsdf_weight(settings.path.strategy, bsdf_pdf, distance * distance / (cos_light * area));
       }
       radiance += beta * rect.color * weight;
       break;
@@ -141,7 +155,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       float weight = 1.0f;
       if (!delta && scene.emitters.draws(met.hit.prim)) {
         const float cos_light = std::fabs(glm::dot(si.geometric_normal, dir));
-        weight = power_heuristic(bsdf_pdf, scene.emitters.area_pdf(material.emission) * distance * distance / cos_light);
+        weight = bsdf_weight(settings.path.strategy, bsdf_pdf,
+                             scene.emitters.area_pdf(material.emission) * distance * distance / cos_light);
       }
       radiance += beta * s.emission * weight;
     }
