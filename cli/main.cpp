@@ -140,10 +140,15 @@ int main(int argc, char** argv) {
 
   BenchCommand bench;
   bench.scene = std::string(RTCLI_SOURCE_DIR) + "/scenes/primitives.json";
+  bench.path_scene = std::string(RTCLI_SOURCE_DIR) + "/scenes/cornell_box.json";
   CLI::App* bench_cmd = app.add_subcommand("bench", "Measure BVH build time, ray throughput and render time");
   bench_cmd->add_option("model", bench.model,
                         "Mesh to trace (.glb/.gltf/.json; default: a generated 300k-triangle mesh)");
   bench_cmd->add_option("--scene", bench.scene, "Scene whose render time is measured last ('' to skip)")
+      ->capture_default_str();
+  bench_cmd
+      ->add_option("--path-scene", bench.path_scene,
+                   "Scene path traced last, at most 160 pixels a side and 16 samples per pixel ('' to skip)")
       ->capture_default_str();
   bench_cmd->add_option("--repeats", bench.repeats, "Timed runs of each figure, after a warm-up; the median is shown")
       ->check(CLI::Range(1, 100))

@@ -54,6 +54,47 @@ void print_ray_table(const std::vector<RayBenchmarkResult>& results, const std::
   }
 }
 
+// The render time of a scene on each thread count; `path`: path traced, small (at most 160
+// pixels a side, 16 samples per pixel), with samples per second. False if it did not load.
+bool bench_render(const std::string& path, bool path_traced, Isa isa, const std::vector<unsigned>& thread_counts,
+                  int repeats) {
+  Diagnostics diags;
+  const auto scene = load_scene(path, cli_load_options(0, std::nullopt, false, isa), diags);
+  if (!scene) {
+    print_diagnostics(stderr, diags);
+    std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", path.c_str());
+    return false;
+  }
+  RenderSettings settings = scene->settings;
+  if (path_traced) {
+    settings.integrator = "path";
+    const int side = std::max(settings.width, settings.height);
+    if (side > 160) {
+      settings.width = std::max(1, settings.width * 160 / side);
+      settings.height = std::max(1, settings.height * 160 / side);
+    }
+    settings.path.samples_per_pixel = 16;
+    settings.path.noise_threshold = 0.0f;
+  }
+  std::printf("\n%s %s (%dx%d%s), s:", path_traced ? "path trace" : "render",
+              std::filesystem::path(path).filename().c_str(), settings.width, settings.height,
+              path_traced ? ", 16 spp" : "");
+  std::vector<RenderBenchmark> renders;
+  for (const unsigned t : thread_counts) {
+    renders.push_back(time_render(scene->scene, settings, t, repeats));
+    const RenderBenchmark& r = renders.back();
+    std::printf("  %u thread%s %s (%.2f Mrays/s", t, t == 1 ? "" : "s",
+                with_range(r.seconds.median, r.seconds.min, r.seconds.max, "%.3f").c_str(),
+                static_cast<double>(r.rays.total()) / r.seconds.median / 1e6);
+    if (path_traced)
+      std::printf(", %.3f Msamples/s", static_cast<double>(r.rays[RayKind::kCamera]) / r.seconds.median / 1e6);
+    std::printf(")");
+  }
+  if (renders.size() > 1) std::printf("  (%.2fx)", renders.front().seconds.median / renders.back().seconds.median);
+  std::printf("\nrays: %s\n", format_ray_counts(renders.front().rays).c_str());
+  return true;
+}
+
 }  // namespace
 
 int run_bench(const BenchCommand& cmd) {
@@ -100,26 +141,9 @@ int run_bench(const BenchCommand& cmd) {
     std::printf(" %s %.2f", t.name.c_str(), t.rays ? static_cast<double>(t.hits) / static_cast<double>(t.rays) : 0.0);
   std::printf("\n");
 
-  if (cmd.scene.empty()) return kExitSuccess;
-  Diagnostics diags;
-  const auto scene = load_scene(cmd.scene, cli_load_options(0, std::nullopt, false, *isa), diags);
-  if (!scene) {
-    print_diagnostics(stderr, diags);
-    std::fprintf(stderr, "rtcli bench: skipped the scene render: %s did not load\n", cmd.scene.c_str());
+  if (!cmd.scene.empty() && !bench_render(cmd.scene, false, *isa, thread_counts, cmd.repeats)) return kExitBadInput;
+  if (!cmd.path_scene.empty() && !bench_render(cmd.path_scene, true, *isa, thread_counts, cmd.repeats))
     return kExitBadInput;
-  }
-  std::printf("\nrender %s (%dx%d), s:", std::filesystem::path(cmd.scene).filename().c_str(), scene->settings.width,
-              scene->settings.height);
-  std::vector<RenderBenchmark> renders;
-  for (const unsigned t : thread_counts) {
-    renders.push_back(time_render(scene->scene, scene->settings, t, cmd.repeats));
-    const RenderBenchmark& r = renders.back();
-    std::printf("  %u thread%s %s (%.2f Mrays/s)", t, t == 1 ? "" : "s",
-                with_range(r.seconds.median, r.seconds.min, r.seconds.max, "%.3f").c_str(),
-                static_cast<double>(r.rays.total()) / r.seconds.median / 1e6);
-  }
-  if (renders.size() > 1) std::printf("  (%.2fx)", renders.front().seconds.median / renders.back().seconds.median);
-  std::printf("\nrays: %s\n", format_ray_counts(renders.front().rays).c_str());
   return kExitSuccess;
 }
 

@@ -132,6 +132,7 @@ Scene small_scene() {
   csg.finish();
   prims.csgs.push_back(std::move(csg));
   scene.bvh = Bvh(prims, {});
+  scene.emitters = Emitters(scene.bvh, *assets);  // the leaf material's mesh emits: light sampling draws it
   return scene;
 }
 
@@ -140,14 +141,16 @@ Scene small_scene() {
 struct OneTile {
   Scene scene = small_scene();
   RenderSettings settings;
-  std::unique_ptr<Integrator> integrator = make_integrator("whitted");
+  std::unique_ptr<Integrator> integrator;
   RayCounters counters;
   PixelContext ctx{scene, settings, *integrator, counters, 0};
   TileGrid grid{64, 48, 64};
   std::unique_ptr<PixelSampler> sampler;
   FilmTile film;
 
-  explicit OneTile(const AntialiasSettings& antialias) {
+  explicit OneTile(const AntialiasSettings& antialias, const char* integrator_name = "whitted")
+      : integrator(make_integrator(integrator_name)) {
+    settings.integrator = integrator_name;
     settings.width = grid.width;
     settings.height = grid.height;
     settings.antialias = antialias;
@@ -212,4 +215,21 @@ TEST_CASE("the adaptive sampler allocates a few buffers per tile, none per ray",
   const long after = g_allocations.load();
   CHECK(counters[RayKind::kCamera] > 65u * 49u);  // some pixels were refined
   CHECK(after - before <= 9);  // the tile's edge buffers, a row's lower corners and one pixel lattice
+}
+
+TEST_CASE("the path tracer allocates nothing per sample", "[render][alloc][path]") {
+  OneTile t{AntialiasSettings{}, "path"};
+  t.settings.path.samples_per_pixel = 4;
+  t.settings.max_depth = 8;
+  t.sampler = make_pixel_sampler(t.settings, t.grid);
+  const RayCounters& counters = t.counters;
+  REQUIRE_FALSE(t.scene.emitters.empty());
+
+  const long before = g_allocations.load();
+  t.render();
+  const long after = g_allocations.load();
+  CHECK(counters[RayKind::kCamera] == 64u * 48u * 4u);
+  CHECK(counters[RayKind::kBounce] > 0);
+  CHECK(counters[RayKind::kShadow] > 0);
+  CHECK(after - before == 0);
 }
