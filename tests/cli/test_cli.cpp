@@ -178,19 +178,22 @@ TEST_CASE("cli: an output that cannot be written is refused before rendering", "
 TEST_CASE("cli: bench runs on a small model, and replays the rays it saved", "[cli][bench]") {
   const std::string rays = output_path("gem.rays");
   fs::remove(rays);
-  Run r = rtcli("bench scenes/models/gem.gltf --scene scenes/default.json --repeats 1 --save-rays '" + rays + "'");
+  Run r = rtcli("bench scenes/models/gem.gltf --scene scenes/default.json --path-scene scenes/default.json --repeats 1 "
+                "--save-rays '" + rays + "'");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("BVH build, cold") && Catch::Contains("BVH build, warm") &&
                            Catch::Contains("incoherent (Mray/s)") && Catch::Contains("occlusion (Mray/s)") &&
                            Catch::Contains("the median of 1 runs") && Catch::Contains("render default.json"));
+  CHECK_THAT(r.output, Catch::Contains("path trace default.json (160x100, 16 spp)") && Catch::Contains("Msamples/s") &&
+                           Catch::Contains(" bounce"));
   CHECK_THAT(r.output, Catch::Contains("rays: generated: primary 2073600 incoherent 2000000 occlusion "));
   REQUIRE(fs::exists(rays));
-  r = rtcli("bench scenes/models/gem.gltf --scene '' --repeats 1 --rays '" + rays + "'");
+  r = rtcli("bench scenes/models/gem.gltf --scene '' --path-scene '' --repeats 1 --rays '" + rays + "'");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("gem.rays: primary 2073600 incoherent 2000000 occlusion "));
   // A ray file cut short is refused before anything is built, and named.
   fs::resize_file(rays, 1000);
-  r = rtcli("bench --rays '" + rays + "'");
+  r = rtcli("bench --path-scene '' --rays '" + rays + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("gem.rays: ray set 1 of 3 is cut short or malformed"));
   fs::remove(rays);

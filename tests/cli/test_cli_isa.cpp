@@ -67,7 +67,7 @@ TEST_CASE("cli: RTCLI_ISA picks the kernels unless --isa is given; auto is the b
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("rtcli: error: RTCLI_ISA=neon: expected sse, avx2, avx512 or auto"));
   // The bench names the kernels it measures.
-  r = rtcli("bench scenes/models/knot.glb --scene '' --repeats 1 --isa sse");
+  r = rtcli("bench scenes/models/knot.glb --scene '' --path-scene '' --repeats 1 --isa sse");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("BVH kernels: sse (of sse"));
   CHECK(rtcli("bench --isa avx3").code == 2);
