@@ -9,6 +9,7 @@
 #include "core/accel/bvh.h"
 #include "core/camera.h"
 #include "core/lights/emitters.h"
+#include "core/lights/environment.h"
 #include "core/lights/light.h"
 #include "core/scene_assets.h"
 
@@ -28,7 +29,7 @@ struct SceneHit {
 struct Scene {
   std::shared_ptr<const SceneAssets> assets = std::make_shared<const SceneAssets>();
   Camera camera;
-  Vec3 background{0.0f};  // radiance of rays that hit nothing
+  Environment background;  // radiance of rays that meet nothing: a colour or an HDR image
   Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
   std::vector<Light> lights;
   Bvh bvh;  // top level: analytic shapes and mesh instances (each pointing into assets->meshes)

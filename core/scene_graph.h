@@ -83,7 +83,7 @@ struct SceneGraph {
   bool animated = false;  // the scene or its files define an animation
   CameraPlacement camera;
   std::vector<LightPlacement> lights;
-  Vec3 background{0.0f};
+  Environment background;
   Vec3 ambient{0.0f};
 
   // The tree at frame `frame` of the timeline (time frame / fps), or at any time.

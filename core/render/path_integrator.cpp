@@ -106,6 +106,19 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
       }
     }
   }
+  // An environment image: a direction drawn by its luminance. (A uniform colour is left to BSDF
+  // sampling, which draws a diffuse surface's directions as well as uniform sampling would.)
+  const Environment& sky = scene.background;
+  if (sample_areas && sky.is_image()) {
+    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size() + 2);
+    Vec3 wi, emitted;
+    float light_pdf = 0.0f;
+    if (sky.sample(u, wi, emitted, light_pdf)) {
+      const Vec3 f = bsdf.eval(wi);
+      if (max_component(f) > 0.0f && max_component(emitted) > 0.0f && visible(s, wi, kInfinity, ctx))
+        sum += f * emitted * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
+    }
+  }
   return sum;
 }
 
@@ -130,8 +143,11 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       for (int c = 0; c < 3; ++c)
         if (m.absorption[c] > 0.0f) beta[c] *= std::exp(-m.absorption[c] * distance);
     }
-    if (!met.surface && !met.light) {  // into the background: a uniform environment
-      radiance += beta * scene.background;
+    if (!met.surface && !met.light) {  // into the background: a uniform colour or an HDR image
+      const Environment& sky = scene.background;
+      float weight = 1.0f;
+      if (!delta && sky.is_image()) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, sky.pdf(dir));
+      radiance += beta * sky.radiance(dir) * weight;
       break;
     }
     if (met.light) {

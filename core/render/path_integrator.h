@@ -2,8 +2,8 @@
 // (materials/bsdf.h), with next-event estimation at every smooth bounce (a shadow ray to each
 // light and one to a point of the emissive surfaces) and multiple importance sampling (Veach's
 // power heuristic) wherever both strategies can find the same light: rect lights, emissive mesh
-// triangles. Point, spot and directional lights are reached by light sampling alone, the
-// background (a uniform environment) by BSDF sampling alone. Russian roulette ends paths whose
+// triangles, an environment image. Point, spot and directional lights are reached by light
+// sampling alone, a uniform background colour by BSDF sampling alone. Russian roulette ends paths whose
 // throughput is low after kRouletteStart bounces. docs/rendering.md, "Path tracing".
 #pragma once
 

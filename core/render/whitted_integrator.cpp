@@ -17,7 +17,7 @@ float index_of(const MediumStack& media, const Scene& scene) {
 [[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met,
                                                             const PathState& state, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
-  Vec3 radiance = scene.background;
+  Vec3 radiance = scene.background.radiance(ray.direction);
   // An area light's face seen before any surface shows its emitted radiance, so mirrors show
   // the light's shape.
   if (met.light) radiance = met.light->color;

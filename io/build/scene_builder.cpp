@@ -9,6 +9,7 @@
 #include "io/build/placement_warnings.h"
 #include "io/build/scene_warnings.h"
 #include "io/build/texture_library.h"
+#include "io/image/environment_file.h"
 #include "io/gltf/loader.h"
 #include "io/json/locate.h"
 #include "io/json/reader.h"
@@ -106,7 +107,17 @@ class Builder {
     const auto color = [](const std::optional<std::array<float, 3>>& c, Vec3 otherwise) {
       return c ? Vec3((*c)[0], (*c)[1], (*c)[2]) : otherwise;
     };
-    g.background = color(options_.background, desc_.background);
+    g.background = Environment(color(options_.background, desc_.background));
+    if (desc_.environment && !options_.background) {  // --background replaces an image too
+      const EnvironmentReference& e = *desc_.environment;
+      std::string why;
+      auto image = load_environment_image(e.resolved_path, options_.limits, usage_, why);
+      if (!image) error(e.pointer, why);
+      else {
+        files_.push_back(e.resolved_path);
+        g.background = Environment(std::move(image), e.intensity, e.rotate);
+      }
+    }
     g.ambient = color(options_.ambient, desc_.ambient);
     set_timeline(g);
     const CameraDescription& c = desc_.camera;
@@ -148,7 +159,7 @@ class Builder {
                                                     : g.at(g.pose(frame), bvh_options_);
     if (!diags_.has_errors()) {  // a scene with errors (a node left out) would get false alarms
       warn_camera_inside(g, rest, scene.camera.position, pointers_, report_);
-      warn_unlit_or_empty(scene, geometry, light_pointers(g), report_);
+      warn_unlit_or_empty(scene, desc_.render.integrator == "path", geometry, light_pointers(g), report_);
     }
     return BuiltScene{std::move(g), frame, std::move(scene)};
   }

@@ -70,7 +70,7 @@ bool inside_shape(ShapeKind kind, const Mat4& to_world, Vec3 point) {
   return false;
 }
 
-void warn_unlit_or_empty(const Scene& scene, const std::vector<Aabb>& geometry,
+void warn_unlit_or_empty(const Scene& scene, bool path_traced, const std::vector<Aabb>& geometry,
                          const std::vector<std::string>& light_pointers, Reporter& report) {
   const bool empty = std::all_of(geometry.begin(), geometry.end(), [](const Aabb& b) { return b.empty(); });
   if (empty) {
@@ -81,10 +81,17 @@ void warn_unlit_or_empty(const Scene& scene, const std::vector<Aabb>& geometry,
   }
   const bool emissive = std::any_of(scene.materials().begin(), scene.materials().end(),
                                     [](const Material& m) { return glm::dot(m.emission, Vec3(1.0f)) > 0.0f; });
-  if (scene.lights.empty() && glm::dot(scene.ambient, Vec3(1.0f)) <= 0.0f && !emissive)
-    report.warning("",
-                   "the scene has no light, no ambient and no emissive material: every surface will render black "
-                   "(add a light to \"lights\", or an \"ambient\" colour)");
+  const bool sky = scene.background.is_image() || glm::dot(scene.background.colour(), Vec3(1.0f)) > 0.0f;
+  if (scene.lights.empty() && glm::dot(scene.ambient, Vec3(1.0f)) <= 0.0f && !emissive && !(sky && path_traced)) {
+    if (!sky)
+      report.warning("",
+                     "the scene has no light, no ambient and no emissive material: every surface will render black "
+                     "(add a light to \"lights\", or an \"ambient\" colour)");
+    else
+      report.warning("",
+                     "the scene has no light, no ambient and no emissive material: Whitted renders every surface "
+                     "black; only the path tracer (--integrator path) is lit by the background");
+  }
   for (size_t i = 0; i < scene.lights.size() && i < light_pointers.size(); ++i) {
     if (light_pointers[i].empty()) continue;
     const Light& light = scene.lights[i];

@@ -29,7 +29,8 @@ std::vector<Aabb> geometry_bounds(const PrimitiveSet& placed);
 // `geometry`: the world bounds of what the frame places (each shape and mesh instance; the loose
 // triangles as one box). `light_pointers`: per scene.lights entry, where it is described (empty
 // for the light rtcli adds to a model on its own, which is never warned about).
-void warn_unlit_or_empty(const Scene& scene, const std::vector<Aabb>& geometry,
+// `path_traced`: the scene asks for the path tracer, which its background lights.
+void warn_unlit_or_empty(const Scene& scene, bool path_traced, const std::vector<Aabb>& geometry,
                          const std::vector<std::string>& light_pointers, Reporter& report);
 
 // pointers: per node, where the scene describes it.

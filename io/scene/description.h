@@ -91,11 +91,21 @@ struct AnimationDescription {
   std::vector<TrackDescription> tracks;
 };
 
+// background: {"environment": FILE, "intensity": k, "rotate": degrees}: an HDR image around the scene.
+struct EnvironmentReference {
+  std::string file;           // as written
+  std::string resolved_path;  // against the scene file's folder
+  float intensity = 1.0f;     // multiplies the image's radiance
+  float rotate = 0.0f;        // degrees about +Y
+  std::string pointer;        // of the file name
+};
+
 struct SceneDescription {
   std::string path;  // the scene file, as named by the user
   RenderSettings render;
   CameraDescription camera;
   Vec3 background{0.0f};
+  std::optional<EnvironmentReference> environment;  // replaces `background` when given
   Vec3 ambient{0.0f};
   std::vector<MaterialDescription> materials;
   std::vector<Light> lights;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "io/base/input_file.h"
 #include "io/json/locate.h"
 #include "io/scene/animation_parser.h"
 #include "io/scene/camera_parser.h"
@@ -21,6 +22,7 @@ constexpr NumberRule kAdaptiveDepth{0, kMaxAdaptiveDepth, false, false, true};
 constexpr NumberRule kExposure{-kMaxExposure, kMaxExposure, false, false, false};  // stops
 constexpr NumberRule kSamplesPerPixel{1, kMaxSamplesPerPixel, false, false, true};
 constexpr NumberRule kNoiseThreshold{0, 1, false, false, false};  // a relative error
+constexpr NumberRule kRotateDegrees{-360, 360, false, false, false};
 
 // render.antialias: every key is read whatever the mode, so that --aa can switch modes and keep
 // the scene's parameters.
@@ -42,6 +44,31 @@ void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr,
       aa.positions = *k == 0 ? SamplePositions::kCorners : SamplePositions::kCentres;
   }
   a.finish();
+}
+
+// background as an object: {"environment": FILE, "intensity": k >= 0, "rotate": degrees}.
+std::optional<EnvironmentReference> parse_environment(const JsonReader& r, const Json& v, const std::string& ptr,
+                                                      const std::string& folder) {
+  ObjectReader o(r, v, ptr);
+  EnvironmentReference e;
+  bool ok = false;
+  if (const Json* f = o.get("environment", true, "the path of a Radiance .hdr or OpenEXR .exr image")) {
+    if (const auto file = read_string(r, *f, o.child("environment"))) {
+      if (file->empty()) {
+        r.expected(o.child("environment"), "the path of a Radiance .hdr or OpenEXR .exr image", *f);
+      } else {
+        e.file = *file;
+        e.resolved_path = resolve_path(folder, *file);
+        e.pointer = o.child("environment");
+        ok = true;
+      }
+    }
+  }
+  if (const auto k = o.number("intensity", kNonNegative)) e.intensity = static_cast<float>(*k);
+  if (const auto d = o.number("rotate", kRotateDegrees)) e.rotate = static_cast<float>(*d);
+  o.finish();
+  if (!ok) return std::nullopt;
+  return e;
 }
 
 void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options, RenderSettings& s) {
@@ -285,9 +312,15 @@ SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions&
   if (const Json* v = top.get("render")) parse_render(r, *v, options, scene.render);
   if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
     parse_camera(r, *v, scene.camera);
-  if (const auto bg = top.color("background")) scene.background = *bg;
-  if (const auto ambient = top.color("ambient")) scene.ambient = *ambient;
   const std::string folder = std::filesystem::path(doc.path).parent_path().string();
+  if (const Json* bg = top.get("background")) {
+    if (bg->is_object()) {
+      scene.environment = parse_environment(r, *bg, "/background", folder);
+    } else if (const auto c = read_color(r, *bg, "/background")) {
+      scene.background = *c;
+    }
+  }
+  if (const auto ambient = top.color("ambient")) scene.ambient = *ambient;
   if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v, folder);
   if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
   if (const Json* v = top.get("nodes", true, "an array of nodes")) {

@@ -184,4 +184,42 @@ Rgb8Image render_pattern(const Pattern& p) {
   return image;
 }
 
+const HdrPattern& sky_pattern() {
+  static const HdrPattern sky{"sky.hdr", 256, 128, "test environment: blue sky, brown ground, a bright sun"};
+  return sky;
+}
+
+HdrImage render_sky(const HdrPattern& p) {
+  // Directions as the environment maps them (core/lights/environment.h): u from -Z round by +X,
+  // v from +Y down.
+  const Vec3 sun = glm::normalize(Vec3(std::sin(radians(40.0f)) * std::cos(radians(35.0f)), std::sin(radians(35.0f)),
+                                       -std::cos(radians(40.0f)) * std::cos(radians(35.0f))));
+  const float sun_cos = std::cos(radians(1.5f));
+  HdrImage image;
+  image.width = p.width;
+  image.height = p.height;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      Vec3 sum(0.0f);
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const float u = (static_cast<float>(x) + (static_cast<float>(i) + 0.5f) / 4.0f) / static_cast<float>(p.width);
+          const float v = (static_cast<float>(y) + (static_cast<float>(j) + 0.5f) / 4.0f) / static_cast<float>(p.height);
+          const float longitude = (u - 0.5f) * 2.0f * kPi, theta = v * kPi;
+          const Vec3 d(std::sin(theta) * std::sin(longitude), std::cos(theta), -std::sin(theta) * std::cos(longitude));
+          Vec3 c;
+          if (d.y >= 0.0f) {
+            const float t = std::pow(d.y, 0.6f);
+            c = glm::mix(Vec3(0.95f, 0.97f, 1.0f), Vec3(0.22f, 0.42f, 0.95f), t) * 1.2f;
+            if (glm::dot(d, sun) > sun_cos) c = Vec3(400.0f, 380.0f, 340.0f);
+          } else {
+            c = Vec3(0.30f, 0.24f, 0.17f) * (0.6f + 0.4f * std::exp(8.0f * d.y));
+          }
+          sum += c;
+        }
+      image.texels.push_back(sum / 16.0f);
+    }
+  return image;
+}
+
 }  // namespace rt::textures

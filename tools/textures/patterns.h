@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "io/image/hdr_file.h"
 #include "io/image/rgb8_image.h"
 
 namespace rt::textures {
@@ -24,5 +25,17 @@ const std::vector<Pattern>& patterns();
 
 // The pattern as an 8-bit image, each texel the average of 4 x 4 points so that edges are smooth.
 Rgb8Image render_pattern(const Pattern& p);
+
+// The test environment (scenes/textures/sky.hdr, written as a Radiance .hdr file): an
+// equirectangular sky in linear radiance, 256 x 128, a blue gradient over a brown ground with a
+// small, very bright sun (3 degrees across, radiance 400) at 35 degrees
+// elevation, each texel the average of 4 x 4 points.
+struct HdrPattern {
+  std::string file;
+  int width = 0, height = 0;
+  const char* what = "";
+};
+const HdrPattern& sky_pattern();
+HdrImage render_sky(const HdrPattern& p);
 
 }  // namespace rt::textures
