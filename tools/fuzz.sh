@@ -12,6 +12,7 @@
 #   texture_file  the same bytes as a scene file's texture file: load, build, render 4x4
 #   gltf_image    the same bytes as a glTF image in a buffer view, used in every material slot
 #   extras_image  the same bytes as the image file a glTF material's rtcli_bump extras name
+#   environment   Radiance .hdr bytes: decode, build the sampling distribution, sample and look up
 #
 #   tools/fuzz.sh all SECONDS    every target in turn, SECONDS each
 #
@@ -21,7 +22,7 @@
 # Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-targets="scene gltf bvh texture texture_file gltf_image extras_image"
+targets="scene gltf bvh texture texture_file gltf_image extras_image environment"
 if [ $# -lt 2 ] || ! [[ " $targets all " == *" $1 "* ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
   echo "usage: tools/fuzz.sh ${targets// /|}|all SECONDS [libFuzzer options...]" >&2
   exit 2
@@ -53,6 +54,7 @@ if [ -z "$(ls -A "$corpus")" ]; then
     scene) seed "$root"/scenes/*.json "$root"/tests/data/**/*.json ;;
     gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
     bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
+    environment) seed "$root"/scenes/textures/*.hdr ;;
     texture | texture_file | gltf_image | extras_image)
       seed "$root"/tests/data/images/* "$root"/tests/data/bad/textures/*.png "$root"/tests/fuzz/regressions/texture/*
       if [ "$target" = texture ]; then seed "$root"/scenes/textures/*.png "$root"/../shared/gltf/**/*.png; fi ;;

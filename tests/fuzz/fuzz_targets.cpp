@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/lights/environment.h"
+#include "io/image/hdr_file.h"
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_traversal.h"
@@ -390,6 +392,32 @@ std::string texture_image(const uint8_t* data, size_t size) {
           for (const float footprint : {0.0f, 0.01f, 1e9f})
             if (!is_finite(texture->sample(uv, wrap, filter, footprint))) return "a texture sample is not finite";
   }
+  return "";
+}
+
+std::string environment_image(const uint8_t* data, size_t size) {
+  std::string error;
+  auto image = decode_hdr(std::span<const unsigned char>(data, size), uint64_t{1} << 20, error);
+  if (!image) return error.empty() ? "decode_hdr failed without saying why" : "";
+  if (image->width < 1 || image->height < 1 ||
+      image->texels.size() != static_cast<size_t>(image->width) * static_cast<size_t>(image->height))
+    return "a decoded .hdr image has no texels or the wrong number";
+  for (const Vec3& t : image->texels)
+    if (!is_finite(t) || std::min({t.x, t.y, t.z}) < 0.0f) return "a decoded .hdr texel is not finite and >= 0";
+  const Environment env(std::make_shared<const EnvironmentImage>(image->width, image->height, image->texels), 1.0f,
+                        33.0f);
+  Rng rng(static_cast<uint64_t>(size));
+  for (int k = 0; k < 64; ++k) {
+    Vec3 d, radiance;
+    float pdf = 0.0f;
+    if (!env.sample(Vec2(rng.next_float(), rng.next_float()), d, radiance, pdf)) break;
+    if (!is_finite(d) || std::fabs(glm::length(d) - 1.0f) > 1e-3f) return "an environment sample's direction is not unit";
+    if (!(pdf > 0.0f) || !std::isfinite(pdf)) return "an environment sample's density is not positive and finite";
+    if (!is_finite(radiance)) return "an environment sample's radiance is not finite";
+    if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d))) return "radiance or pdf at a sampled direction is not finite";
+  }
+  for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1e-30f, 1, 0), Vec3(0, 0, -1)})
+    if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d))) return "radiance or pdf at a pole is not finite";
   return "";
 }
 

@@ -28,6 +28,10 @@ std::string texture_image(const uint8_t* data, size_t size);
 // emission and alpha mask), and the image file a glTF material's rtcli_bump extras name.
 std::string texture_file(const uint8_t* data, size_t size);
 std::string gltf_image(const uint8_t* data, size_t size);
+// Environment image bytes (Radiance .hdr): decoded with a texel limit, made into an environment,
+// whose sampling must give finite directions with the density pdf() gives them, and finite
+// radiance everywhere.
+std::string environment_image(const uint8_t* data, size_t size);
 std::string extras_image(const uint8_t* data, size_t size);
 
 // For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.
