@@ -37,6 +37,7 @@ struct Material {
   float shininess = 32.0f;  // Phong exponent, > 0: larger = smaller, sharper highlight
   Vec3 reflectivity{0.0f};  // weight of the mirror-reflected colour, in [0, 1]
   Vec3 transmission{0.0f};  // weight of the light passing through (split by Fresnel), in [0, 1]
+  TextureSlot transmission_texture;  // glTF's transmissionTexture: its red channel scales transmission (linear)
   float ior = 1.5f;         // index of refraction of the inside, > 0; used where transmission > 0
   Vec3 absorption{0.0f};    // Beer-Lambert coefficient per unit distance inside, >= 0
   float glossy = 0.0f;      // blur-square width of reflections (0 = perfect mirror), >= 0
@@ -60,12 +61,15 @@ struct Material {
   AlphaCutoutParams cutout;
 
   // Every texture slot, for whoever renumbers textures (a glTF file's, added to a scene's).
-  std::array<TextureSlot*, 7> texture_slots() {
-    return {&texture,          &specular_texture, &bump.height,   &normal_map.map,
-            &emission_texture, &pbr.texture,      &cutout.texture};
+  std::array<TextureSlot*, 8> texture_slots() {
+    return {&texture,          &specular_texture, &bump.height,    &normal_map.map,
+            &emission_texture, &pbr.texture,      &cutout.texture, &transmission_texture};
   }
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
+  // What passes through the material, before textures: its transmission; under glTF's model
+  // tinted by the base colour factor, and none through metal (KHR_materials_transmission).
+  Vec3 transmittance() const { return pbr.enabled ? transmission * kd * (1.0f - pbr.metallic) : transmission; }
   bool absorbing() const { return max_component(absorption) > 0.0f; }
 };
 

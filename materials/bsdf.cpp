@@ -47,8 +47,9 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
   float weight[kLobeCount] = {};
   if (s.pbr) {
     pbr_ = true;
-    const Vec3 transmission = s.transmission * (1.0f - s.metallic);  // metal lets nothing through
-    layer_ = 1.0f - std::clamp(max_component(transmission), 0.0f, 1.0f);
+    // s.transmission is already tinted by the base colour and none through metal; the opaque
+    // layer keeps what the dielectric does not take.
+    layer_ = 1.0f - std::clamp(s.transmission_factor, 0.0f, 1.0f);
     base_diffuse_ = (1.0f - s.metallic) * layer_ * s.base_color;
     f0_ = glm::mix(Vec3(0.04f), s.base_color, s.metallic);
     ggx_.alpha = s.roughness * s.roughness;
@@ -60,8 +61,8 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
     } else {
       weight[kSpecular] = average(fresnel);
     }
-    glass_reflect_ = transmission;
-    glass_refract_ = transmission * s.base_color;
+    glass_reflect_ = Vec3(1.0f - layer_);
+    glass_refract_ = s.transmission;
     weight[kGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
   } else {
     // The transmitted share T goes to the dielectric; the opaque lobes share what is left.

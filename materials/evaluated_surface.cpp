@@ -73,6 +73,9 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   // The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
   Vec3 kd = m.kd * Vec3(si.color);
   if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, -s.wo, cone_width, detail);
+  Vec3 transmission = m.transmission;
+  if (detail.textures && m.transmission_texture.present() && m.transmissive())
+    transmission *= sample_at(m.transmission_texture, si, textures, -s.wo, cone_width, detail).x;
   if (m.pbr.enabled) {  // glTF's model, converted here so that its texture can vary it
     float metallic = m.pbr.metallic, roughness = m.pbr.roughness;
     if (detail.textures && m.pbr.texture.present()) {
@@ -85,13 +88,20 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     s.metallic = std::clamp(metallic, 0.0f, 1.0f);
     s.roughness = std::clamp(roughness, 0.0f, 1.0f);
     const PhongTerms p = pbr_to_phong(kd, metallic, roughness);
-    s.diffuse = p.kd * (Vec3(1.0f) - m.transmission);
+    // KHR_materials_transmission: metal lets nothing through; what passes is tinted by the base
+    // colour and blurred by the roughness (Whitted: refracted rays spread like glossy ones).
+    transmission *= 1.0f - s.metallic;
+    s.transmission_factor = max_component(transmission);
+    s.diffuse = p.kd * (Vec3(1.0f) - transmission);
+    transmission *= kd;
+    s.refraction_glossy = s.transmission_factor > 0.0f ? p.glossy : 0.0f;
     s.specular = p.ks;
     s.shininess = p.shininess;
     s.reflectivity = p.reflectivity;
     s.glossy = p.glossy;
   } else {
-    s.diffuse = kd * (Vec3(1.0f) - m.transmission);
+    s.transmission_factor = max_component(transmission);
+    s.diffuse = kd * (Vec3(1.0f) - transmission);
     s.specular = m.ks;
     if (detail.textures && m.specular_texture.present())
       s.specular *= sample_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
@@ -99,7 +109,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     s.reflectivity = m.reflectivity;
     s.glossy = m.glossy;
   }
-  s.transmission = m.transmission;
+  s.transmission = transmission;
   s.ior = m.ior;
   s.absorption = m.absorption;
   s.emission = m.emission;
@@ -108,6 +118,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   if (m.unlit) {  // shown as it is: nothing reflected, scattered or passed on
     s.emission += kd;
     s.diffuse = s.specular = s.reflectivity = s.transmission = Vec3(0.0f);
+    s.transmission_factor = 0.0f;
     s.pbr = false;
   }
   return s;

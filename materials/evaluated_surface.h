@@ -29,7 +29,9 @@ struct EvaluatedSurface {
   Vec3 specular{0.0f};
   float shininess = 32.0f;
   Vec3 reflectivity{0.0f};
-  Vec3 transmission{0.0f};
+  Vec3 transmission{0.0f};       // what passes (glTF: tinted by the base colour, none through metal)
+  float transmission_factor = 0.0f;  // how much passes, untinted: the share the dielectric takes
+  float refraction_glossy = 0.0f;  // blur-square width of refracted rays (glTF: from roughness, as `glossy`)
   float ior = 1.5f;
   Vec3 absorption{0.0f};
   float glossy = 0.0f;

@@ -18,7 +18,7 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
     if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
     // What passes the interface: transmission times (1 - F0), the interface taken between the
     // material and air (shadow rays do not track nested media).
-    through *= m.transmission * (1.0f - schlick_reflectance(1.0f, 1.0f, m.ior));
+    through *= m.transmittance() * (1.0f - schlick_reflectance(1.0f, 1.0f, m.ior));
     if (m.absorbing()) {
       const SurfaceInteraction si = scene.surface(ray, hit);  // which way it crosses
       depth += (si.front_face ? -hit.t : hit.t) * glm::length(ray.direction) * m.absorption;

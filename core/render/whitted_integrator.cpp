@@ -85,7 +85,9 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
     if (fresnel < 1.0f && (!refract(d, s.n, n1 / n2, refracted) || glm::dot(refracted, s.ng) >= 0.0f) &&
         !refract(d, s.ng, n1 / n2, refracted))
       fresnel = 1.0f;
-    reflect_weight += s.transmission * fresnel;
+    // A Phong material's transmission colours what the interface reflects too (its documented
+    // rule); glTF's tints only what passes through (KHR_materials_transmission).
+    reflect_weight += (s.pbr ? Vec3(s.transmission_factor) : s.transmission) * fresnel;
     refract_weight = s.transmission * (1.0f - fresnel);
     beyond = after;
   }
@@ -97,44 +99,50 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
     next.path = child_path(state.path, kReflected, 0);
     Vec3 mirror = reflect(d, s.n);
     if (glm::dot(mirror, s.ng) <= 0.0f) mirror = reflect(d, s.ng);  // never into the surface
-    sum += reflect_weight * reflected(s, mirror, next, ctx);
+    sum += reflect_weight * spread(s, mirror, s.glossy, RayKind::kReflection, next, ctx);
   }
   if (max_component(state.weight * refract_weight) >= kMinWeight) {
     next.weight = state.weight * refract_weight;
     next.media = beyond;
     next.path = child_path(state.path, kRefracted, 0);
-    sum += refract_weight * traced_from(s, refracted, RayKind::kRefraction, next, ctx);
+    sum += refract_weight * spread(s, refracted, s.refraction_glossy, RayKind::kRefraction, next, ctx);
   }
   return sum;
 }
 
-// The mirror ray, or the proposal's glossy rays around it: glossy_samples rays stratified over
-// the blur square (glossy.h), random numbers keyed by this ray's path (core/sampling.h). Rays that fall below the
-// surface are discarded and the rest averaged; if all fall below, the mirror ray stands in. Only
-// the first glossy hit of a path splits; glossy hits below it trace one jittered ray each, so a
-// ray tree costs glossy_samples x depth rays rather than glossy_samples ^ depth.
-Vec3 WhittedIntegrator::reflected(const EvaluatedSurface& s, Vec3 mirror, const PathState& state,
-                                  TraceContext& ctx) const {
-  if (!ctx.settings.glossy || s.glossy <= 0.0f || ctx.settings.glossy_samples < 1)
-    return traced_from(s, mirror, RayKind::kReflection, state, ctx);
+// The mirror (or refracted) ray, or the proposal's glossy rays around it: glossy_samples rays
+// stratified over the blur square of `width` (glossy.h), random numbers keyed by this ray's path
+// (core/sampling.h). Rays that fall on the wrong side of the surface (below it for a reflection,
+// above it for a refraction) are discarded and the rest averaged; if all fall there, the central
+// ray stands in. Only the first glossy hit of a path splits; glossy hits below it trace one
+// jittered ray each, so a ray tree costs glossy_samples x depth rays rather than
+// glossy_samples ^ depth. A refracted ray spreads for glTF's rough transmission.
+Vec3 WhittedIntegrator::spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind,
+                               const PathState& state, TraceContext& ctx) const {
+  if (!ctx.settings.glossy || width <= 0.0f || ctx.settings.glossy_samples < 1)
+    return traced_from(s, centre, kind, state, ctx);
+  const bool through = kind == RayKind::kRefraction;
   const int count = state.split ? 1 : ctx.settings.glossy_samples;
   const StratifiedGrid grid(count);
   Vec3 u, v;
-  hughes_moller_basis(mirror, u, v);
+  hughes_moller_basis(centre, u, v);
   PathState below = state;
   below.split = true;
   below.share = state.share / static_cast<float>(count);
+  const uint32_t branch = through ? kGlossyRefraction : kGlossyRay;
   Vec3 sum(0.0f);
   int kept = 0;
   for (int i = 0; i < count; ++i) {
-    const Vec2 jitter = ctx.samples.get2(SamplePurpose::kGlossy, state.path, static_cast<uint64_t>(i));
-    const Vec3 direction = glossy_direction(mirror, u, v, s.glossy, grid.point(i, jitter));
-    if (glm::dot(direction, s.ng) <= 0.0f) continue;
-    below.path = child_path(state.path, kGlossyRay, static_cast<uint32_t>(i));
-    sum += traced_from(s, direction, RayKind::kGlossy, below, ctx);
+    // Reflection keeps the keys it always had; refraction's are another path's.
+    const uint64_t key = through ? child_path(state.path, kGlossyRefraction, 0) : state.path;
+    const Vec2 jitter = ctx.samples.get2(SamplePurpose::kGlossy, key, static_cast<uint64_t>(i));
+    const Vec3 direction = glossy_direction(centre, u, v, width, grid.point(i, jitter));
+    if ((glm::dot(direction, s.ng) <= 0.0f) != through) continue;
+    below.path = child_path(state.path, branch, static_cast<uint32_t>(i));
+    sum += traced_from(s, direction, through ? RayKind::kRefraction : RayKind::kGlossy, below, ctx);
     ++kept;
   }
-  if (kept == 0) return traced_from(s, mirror, RayKind::kReflection, state, ctx);
+  if (kept == 0) return traced_from(s, centre, kind, state, ctx);
   return sum / static_cast<float>(kept);
 }
 

@@ -79,11 +79,20 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   }
   if (const auto* t = extension(m.extensions, "KHR_materials_transmission")) {
     out.transmission = Vec3(std::clamp(gltf_number(*t, "transmissionFactor").value_or(0.0f), 0.0f, 1.0f));
-    if (t->Has("transmissionTexture"))
-      report.warning(at + "/extensions/KHR_materials_transmission/transmissionTexture",
-                     where +
-                         ": KHR_materials_transmission's transmissionTexture is ignored; transmissionFactor alone "
-                         "sets how much light passes, over the whole material");
+    // transmissionTexture: a textureInfo whose red channel scales the factor (linear data).
+    const tinygltf::Value& info = t->Get("transmissionTexture");
+    const auto index = info.IsObject() ? gltf_number(info, "index") : std::nullopt;
+    if (index && *index >= 0 && out.transmissive()) {
+      const auto texcoord = gltf_number(info, "texCoord");
+      tinygltf::ExtensionMap extensions;
+      const tinygltf::Value& ext = info.Get("extensions");
+      if (ext.IsObject())
+        for (const std::string& key : ext.Keys()) extensions[key] = ext.Get(key);
+      out.transmission_texture =
+          images.slot(texture_ref(static_cast<int>(*index), texcoord ? static_cast<int>(*texcoord) : 0, extensions,
+                                  at + "/extensions/KHR_materials_transmission/transmissionTexture"),
+                      TextureEncoding::kLinear, where + " transmissionTexture");
+    }
   }
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
     const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);

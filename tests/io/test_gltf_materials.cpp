@@ -312,19 +312,35 @@ TEST_CASE("glTF samples: BoxTextured's image from a file and from the GLB's buff
   CHECK(embedded.files.size() == 1);
 }
 
-TEST_CASE("glTF materials: an ignored transmissionTexture is said in a whole sentence", "[gltf][materials]") {
-  const Json material = {
-      {"extensions",
-       {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", {{"index", 0}}}}}}}};
-  const std::string path = quad_file("transmission-texture.gltf", material);
-  rt::test::ImportProblems problems;
-  const auto model = import_gltf(path, std::nullopt, LoadLimits{}, problems);
-  REQUIRE(model);
-  CHECK(model->materials[0].transmission == Vec3(0.8f));
-  REQUIRE(problems.warnings.size() == 1);
-  CHECK_THAT(problems.warnings[0],
-             Catch::EndsWith("transmissionTexture is ignored; transmissionFactor alone sets how much light passes, "
-                             "over the whole material"));
+TEST_CASE("glTF materials: transmission is tinted by the base colour, scaled by transmissionTexture, none through metal",
+          "[gltf][materials]") {
+  // Texture 1's texels are (0, 128, 255): red 0, so the texture lets nothing through.
+  const auto material = [](double metallic, bool texture) {
+    Json transmission = {{"transmissionFactor", 0.8}};
+    if (texture) transmission["transmissionTexture"] = {{"index", 1}};
+    return Json{{"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 0.5, 0.25, 1.0}}, {"metallicFactor", metallic}}},
+                {"extensions", {{"KHR_materials_transmission", transmission}}}};
+  };
+  const auto passes = [&](double metallic, bool texture) {
+    const std::string path = quad_file(texture ? "transmission-texture.gltf" : "transmission.gltf", material(metallic, texture));
+    rt::test::ImportProblems problems;
+    const auto model = import_gltf(path, std::nullopt, LoadLimits{}, problems);
+    REQUIRE(model);
+    CHECK(problems.warnings.empty());
+    const Material& m = model->materials[0];
+    CHECK(m.transmission == Vec3(0.8f));
+    CHECK(m.transmission_texture.present() == texture);
+    SurfaceInteraction si;
+    si.geometric_normal = si.shading_normal = Vec3(0, 0, 1);
+    const EvaluatedSurface s = evaluate_surface(m, si, Vec3(0, 0, -1), model->textures);
+    return s.transmission;
+  };
+  const Vec3 dielectric = passes(0.0, false);
+  CHECK(dielectric.x == Approx(0.8f));
+  CHECK(dielectric.y == Approx(0.4f));  // tinted by the base colour
+  CHECK(dielectric.z == Approx(0.2f));
+  CHECK(passes(1.0, false) == Vec3(0.0f));  // metal lets nothing through
+  CHECK(passes(0.0, true) == Vec3(0.0f));   // the texture's red channel is 0
 }
 
 TEST_CASE("glTF extensions: the documented list of supported extensions is the code's", "[gltf][docs]") {
