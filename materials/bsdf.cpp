@@ -63,7 +63,8 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
     }
     glass_reflect_ = Vec3(1.0f - layer_);
     glass_refract_ = s.transmission;
-    weight[kGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
+    // Rough transmission is a GGX dielectric of the same roughness; a smooth one a delta.
+    weight[ggx_.alpha < kSmoothAlpha ? kGlass : kRoughGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
   } else {
     // The transmitted share T goes to the dielectric; the opaque lobes share what is left.
     const Vec3 opaque = Vec3(1.0f) - s.transmission;
@@ -98,19 +99,61 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
   for (const float w : weight) sum += w;
   if (sum > 0.0f)
     for (int i = 0; i < kLobeCount; ++i) probability_[i] = weight[i] / sum;
-  smooth_ = probability_[kDiffuse] > 0.0f || probability_[kSpecular] > 0.0f || probability_[kGlossy] > 0.0f;
+  smooth_ = probability_[kDiffuse] > 0.0f || probability_[kSpecular] > 0.0f || probability_[kGlossy] > 0.0f ||
+            probability_[kRoughGlass] > 0.0f;
+}
+
+// pbrt-v4's rough dielectric (DielectricBxDF), after Walter et al., "Microfacet Models for
+// Refraction through Rough Surfaces" (2007): the microfacet normal wm from wo and wi (the
+// generalised half vector), Fresnel at wo.wm splitting reflection from refraction, Smith's
+// separable masking of both directions, and the density of drawing wm by the visible normals,
+// carried to wi by the reflection's or refraction's Jacobian. Radiance is not scaled by 1 / eta^2
+// across the interface (nor is it for the smooth dielectric): a path into and out of glass
+// takes both factors, which cancel.
+void Bsdf::rough_glass(Vec3 wi, Vec3& f, float& pdf) const {
+  f = Vec3(0.0f);
+  pdf = 0.0f;
+  const Vec3 wo = wo_local_;
+  if (wo.z <= 0.0f || wi.z == 0.0f) return;
+  const bool reflect = wi.z > 0.0f;
+  const float etap = reflect ? 1.0f : eta_;
+  Vec3 wm = wi * etap + wo;
+  if (glm::dot(wm, wm) <= 0.0f) return;
+  wm = glm::normalize(wm);
+  if (wm.z < 0.0f) wm = -wm;
+  const float wo_m = glm::dot(wo, wm), wi_m = glm::dot(wi, wm);
+  if (wo_m <= 0.0f || wi_m * wi.z < 0.0f) return;  // a microfacet seen from behind
+  const float fresnel = fresnel_dielectric(wo_m, eta_);
+  const float d = ggx_.d(wm);
+  const Vec3 wi_up(wi.x, wi.y, std::fabs(wi.z));
+  const float g = ggx_.g1(wo) * ggx_.g1(wi_up);
+  const float visible = ggx_.g1(wo) * d * wo_m / wo.z;  // the density of drawing wm from wo
+  if (reflect) {
+    f = glass_reflect_ * (d * g * fresnel / (4.0f * wo.z));
+    pdf = visible / (4.0f * wo_m) * fresnel;
+  } else {
+    const float denom = (wi_m + wo_m / etap) * (wi_m + wo_m / etap);
+    if (!(denom > 0.0f)) return;
+    f = glass_refract_ * (d * g * (1.0f - fresnel) * std::fabs(wi_m * wo_m / (wo.z * denom)));
+    pdf = visible * std::fabs(wi_m) / denom * (1.0f - fresnel);
+  }
 }
 
 Vec3 Bsdf::eval_local(Vec3 wi) const {
   const Vec3 wo = wo_local_;
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return Vec3(0.0f);
+  Vec3 glass(0.0f);
+  if (probability_[kRoughGlass] > 0.0f) {
+    float unused;
+    rough_glass(wi, glass, unused);
+  }
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return glass;
   if (pbr_) {
     const Vec3 h = glm::normalize(wo + wi);
     const float wo_h = std::max(glm::dot(wo, h), 0.0f);
     Vec3 f = base_diffuse_ * ((1.0f - dielectric_schlick(wo_h)) * wi.z / kPi);
     if (probability_[kSpecular] > 0.0f)
       f += layer_ * schlick_fresnel(f0_, wo_h) * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
-    return f;
+    return f + glass;
   }
   const Vec3 r = mirror_local(wo);
   Vec3 f = diffuse_ * (wi.z / kPi);
@@ -121,12 +164,18 @@ Vec3 Bsdf::eval_local(Vec3 wi) const {
 
 float Bsdf::pdf_local(Vec3 wi) const {
   const Vec3 wo = wo_local_;
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
+  float glass = 0.0f;
+  if (probability_[kRoughGlass] > 0.0f) {
+    Vec3 unused;
+    rough_glass(wi, unused, glass);
+    glass *= probability_[kRoughGlass];
+  }
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return glass;
   float p = probability_[kDiffuse] * wi.z / kPi;
   if (pbr_) {
     if (probability_[kSpecular] > 0.0f)
       p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
-    return p;
+    return p + glass;
   }
   const Vec3 r = mirror_local(wo);
   if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * phong_pdf(wi, r, specular_exponent_);
@@ -134,14 +183,25 @@ float Bsdf::pdf_local(Vec3 wi) const {
   return p;
 }
 
+// wi must be on the same side of the geometric surface as of the shading one: a shading normal
+// tilted from the geometric one would otherwise let light leak through or reflect from inside.
+bool Bsdf::sides_agree(Vec3 wi, Vec3 wi_local) const {
+  const float geometric = glm::dot(wi, ng_);
+  if (geometric == 0.0f || wi_local.z == 0.0f) return false;
+  if ((geometric > 0.0f) != (wi_local.z > 0.0f)) return false;
+  return geometric > 0.0f || probability_[kRoughGlass] > 0.0f;  // only the rough dielectric lets light through
+}
+
 Vec3 Bsdf::eval(Vec3 wi) const {
-  if (!smooth_ || glm::dot(wi, ng_) <= 0.0f) return Vec3(0.0f);  // smooth lobes only reflect
-  return eval_local(frame_.to_local(wi));
+  if (!smooth_) return Vec3(0.0f);
+  const Vec3 local = frame_.to_local(wi);
+  return sides_agree(wi, local) ? eval_local(local) : Vec3(0.0f);
 }
 
 float Bsdf::pdf(Vec3 wi) const {
-  if (!smooth_ || glm::dot(wi, ng_) <= 0.0f) return 0.0f;
-  return pdf_local(frame_.to_local(wi));
+  if (!smooth_) return 0.0f;
+  const Vec3 local = frame_.to_local(wi);
+  return sides_agree(wi, local) ? pdf_local(local) : 0.0f;
 }
 
 bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
@@ -186,7 +246,19 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
     return true;
   }
   Vec3 wi_local;
-  if (lobe == kDiffuse) {
+  if (lobe == kRoughGlass) {
+    if (wo_local_.z <= 0.0f) return false;
+    const Vec3 h = ggx_.sample_visible(wo_local_, u);
+    const float fresnel = fresnel_dielectric(glm::dot(wo_local_, h), eta_);
+    // A reflection must stay above the surface and a refraction go below it: the other way
+    // round it is a direction whose density belongs to the other branch.
+    if ((u_lobe - below) / p < fresnel) {
+      wi_local = reflect(-wo_local_, h);
+      if (wi_local.z <= 0.0f) return false;
+    } else if (!refract(-wo_local_, h, 1.0f / eta_, wi_local) || wi_local.z >= 0.0f) {
+      return false;
+    }
+  } else if (lobe == kDiffuse) {
     wi_local = cosine_hemisphere(u);
   } else if (pbr_) {
     if (wo_local_.z <= 0.0f) return false;
@@ -197,12 +269,13 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
     wi_local = sample_phong(mirror_local(wo_local_), exponent, u);
   }
   const Vec3 wi = frame_.to_world(wi_local);
-  if (wi_local.z <= 0.0f || glm::dot(wi, ng_) <= 0.0f) return false;
+  if (!sides_agree(wi, wi_local)) return false;
   const float density = pdf_local(wi_local);
   if (!(density > 0.0f)) return false;
   out.wi = wi;
   out.pdf = density;
   out.weight = eval_local(wi_local) / density;
+  out.transmitted = wi_local.z < 0.0f;
   return true;
 }
 

@@ -5,7 +5,8 @@
 //   diffuse  kd x (1 - T): Lambert        (1 - metallic)(1 - F(0.04)) base / pi: Lambert
 //   specular ks: a Phong lobe             F(mix(0.04, base, metallic)) D G / (4 cos cos): GGX
 //   reflectivity: a mirror (delta), or with glossy width a a Phong lobe of exponent 12 / a^2
-//   transmission T: smooth dielectric (delta), Fresnel-split into reflection and refraction
+//   transmission T: smooth dielectric (delta), Fresnel-split into reflection and refraction;
+//                  glTF's with roughness: a rough GGX dielectric (Walter et al. 2007)
 // A Phong material whose weights add up to more than 1 in a channel is scaled down to 1, so that
 // no surface gives back more light than it receives. No virtual calls, nothing allocated.
 #pragma once
@@ -26,7 +27,7 @@ struct BsdfSample {
 
 class Bsdf {
  public:
-  enum Lobe { kDiffuse, kSpecular, kGlossy, kMirror, kGlass, kLobeCount };
+  enum Lobe { kDiffuse, kSpecular, kGlossy, kMirror, kGlass, kRoughGlass, kLobeCount };
 
   // `eta` is the index of refraction past the surface over the index on the ray's side (for
   // transmission; 1 when the surface lets nothing through).
@@ -34,7 +35,8 @@ class Bsdf {
 
   // Whether any lobe is smooth (not a delta): only then is light sampling worth a shadow ray.
   bool has_smooth_lobes() const { return smooth_; }
-  // f(wo, wi) |n.wi| summed over the smooth lobes, for wi in world space.
+  // f(wo, wi) |n.wi| summed over the smooth lobes, for wi in world space (through the surface
+  // too, for a rough dielectric).
   Vec3 eval(Vec3 wi) const;
   // The density with which sample() returns wi through a smooth lobe.
   float pdf(Vec3 wi) const;
@@ -48,6 +50,9 @@ class Bsdf {
  private:
   Vec3 eval_local(Vec3 wi_local) const;
   float pdf_local(Vec3 wi_local) const;
+  // The rough dielectric's f |cos| and its density (with its own reflect / refract split) at wi.
+  void rough_glass(Vec3 wi, Vec3& f, float& pdf) const;
+  bool sides_agree(Vec3 wi, Vec3 wi_local) const;
 
   ShadingFrame frame_;
   Vec3 ng_{0.0f};      // geometric normal, on wo's side

@@ -146,7 +146,15 @@ double albedo(const Bsdf& bsdf) {
 struct Case {
   const char* name;
   EvaluatedSurface (*make)(Vec3 wo);
+  float eta = 1.0f;  // past the surface over before it (the rough dielectric's)
 };
+
+EvaluatedSurface rough_glass(Vec3 wo, float roughness) {
+  EvaluatedSurface s = metal_rough(wo, Vec3(1.0f), 0.0f, roughness);
+  s.transmission = Vec3(1.0f);
+  s.transmission_factor = 1.0f;
+  return s;
+}
 
 const Case kSmoothCases[] = {
     {"Lambert", [](Vec3 wo) { return lambert(wo, 1.0f); }},
@@ -157,6 +165,8 @@ const Case kSmoothCases[] = {
     {"GGX metal roughness 0.2", [](Vec3 wo) { return metal_rough(wo, Vec3(1.0f), 1.0f, 0.2f); }},
     {"GGX dielectric roughness 0.6", [](Vec3 wo) { return metal_rough(wo, Vec3(1.0f), 0.0f, 0.6f); }},
     {"GGX half metal roughness 0.35", [](Vec3 wo) { return metal_rough(wo, Vec3(0.9f, 0.5f, 0.2f), 0.5f, 0.35f); }},
+    {"rough glass ior 1.5 roughness 0.3", [](Vec3 wo) { return rough_glass(wo, 0.3f); }, 1.5f},
+    {"rough glass leaving, ior 1/1.5 roughness 0.5", [](Vec3 wo) { return rough_glass(wo, 0.5f); }, 1.0f / 1.5f},
 };
 
 }  // namespace
@@ -164,7 +174,7 @@ const Case kSmoothCases[] = {
 TEST_CASE("BSDF sampling matches its density (chi-square over the sphere)", "[bsdf]") {
   for (const Case& c : kSmoothCases) {
     for (const float theta : {10.0f, 45.0f, 75.0f}) {
-      const Bsdf bsdf(c.make(direction(theta, 30.0f)), 1.0f);
+      const Bsdf bsdf(c.make(direction(theta, 30.0f)), c.eta);
       const ChiSquare test = chi_square(bsdf, 200000, 7);
       INFO(c.name << " at " << theta << " degrees: chi^2 = " << test.statistic << " over " << test.dof
                   << " cells, z = " << test.z << "; lost " << test.lost << " (expected " << test.expected_lost << ")");
@@ -178,7 +188,7 @@ TEST_CASE("BSDF sampling matches its density (chi-square over the sphere)", "[bs
 
 TEST_CASE("BSDF: the density is positive wherever sampling goes, and weight = f cos / pdf", "[bsdf]") {
   for (const Case& c : kSmoothCases) {
-    const Bsdf bsdf(c.make(direction(40.0f, 10.0f)), 1.0f);
+    const Bsdf bsdf(c.make(direction(40.0f, 10.0f)), c.eta);
     Rng rng(3);
     int checked = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -201,8 +211,8 @@ TEST_CASE("BSDF: f is reciprocal, f(wo, wi) = f(wi, wo)", "[bsdf]") {
     for (int k = 0; k < 200; ++k) {
       const Vec3 a = direction(85.0f * rng.next_float(), 360.0f * rng.next_float());
       const Vec3 b = direction(85.0f * rng.next_float(), 360.0f * rng.next_float());
-      const Vec3 fab = Bsdf(c.make(a), 1.0f).eval(b) / b.z;
-      const Vec3 fba = Bsdf(c.make(b), 1.0f).eval(a) / a.z;
+      const Vec3 fab = Bsdf(c.make(a), c.eta).eval(b) / b.z;
+      const Vec3 fba = Bsdf(c.make(b), c.eta).eval(a) / a.z;
       INFO(c.name);
       CHECK(fab.x == Approx(fba.x).epsilon(1e-3).margin(1e-6));
       CHECK(fab.z == Approx(fba.z).epsilon(1e-3).margin(1e-6));
@@ -214,13 +224,13 @@ TEST_CASE("BSDF: a white surface reflects at most what it receives", "[bsdf]") {
   for (const Case& c : kSmoothCases) {
     for (const float theta : {0.0f, 30.0f, 60.0f, 85.0f}) {
       const EvaluatedSurface s = c.make(direction(theta, 0.0f));
-      const double a = albedo(Bsdf(s, 1.0f));
+      const double a = albedo(Bsdf(s, c.eta));
       INFO(c.name << " at " << theta << " degrees: albedo " << a);
       // glTF's reference model is not strictly energy-conserving: its diffuse layer is weighted
       // by 1 - F(v.h) rather than by what the specular layer leaves, so a rough white dielectric
       // seen at grazing angles gives back a few percent more than it receives (1.051 at 85
       // degrees, roughness 0.6). The spec's model is kept as it is (docs/rendering.md).
-      const bool gltf_dielectric = s.pbr && s.metallic < 1.0f;
+      const bool gltf_dielectric = s.pbr && s.metallic < 1.0f && s.transmission_factor == 0.0f;
       CHECK(a <= (gltf_dielectric && theta > 60.0f ? 1.06 : 1.0 + 2e-3));
       if (theta <= 60.0f) CHECK(a > 0.3);  // at grazing angles a sharp lobe loses most of itself below the surface
     }

@@ -39,6 +39,8 @@ def render(rtcli, scene, options, out, stats, fast):
         args += ["--width", "160", "--height", str(max(2, round(h * scale)))]
         if "--shadow-samples" not in args:
             args += ["--shadow-samples", "4"]
+        if "--spp" not in args:  # the path tracer's samples (Whitted ignores them)
+            args += ["--spp", "8"]
         if "--frames" in args:
             args[args.index("--frames") + 1] = "0-3"
     subprocess.run(args, check=True, cwd=ROOT)
@@ -55,12 +57,17 @@ def count(n):
 
 def stats_line(s):
     rays = s["rays"]
-    kinds = ", ".join("%s %s" % (count(rays[k]), k) for k in ("camera", "shadow", "reflection", "refraction", "glossy")
-                      if rays[k] > 0)
+    kinds = ", ".join("%s %s" % (count(rays[k]), k)
+                      for k in ("camera", "shadow", "reflection", "refraction", "glossy", "bounce")
+                      if rays.get(k, 0) > 0)
     frames = s["frames"][1] - s["frames"][0] + 1
     size = "%d×%d" % (s["width"], s["height"]) + (", %d frames" % frames if frames > 1 else "")
-    return "%s in %.2f s on %d threads · %s rays (%s) · %.1f rays a pixel" % (
+    line = "%s in %.2f s on %d threads · %s rays (%s) · %.1f rays a pixel" % (
         size, s["seconds"]["render"], s["threads"], count(rays["total"]), kinds, s["rays_per_pixel"])
+    if "path" in s:  # path traced: its samples
+        line += " · %.0f samples a pixel, %.2f M samples/s" % (s["path"]["mean_samples_per_pixel"],
+                                                               s["path"]["msamples_per_second"])
+    return line
 
 
 def figure(name, image, full, alt, caption, stats, width):

@@ -134,6 +134,26 @@ SECTIONS = [
                  ("tone-filmic", "--exposure 1 --tone-map filmic", "The same one stop brighter, the floor's "
                   "falloff kept", "+1 stop, filmic: highlights roll off")],
      "compare": ("tone-clamp", "tone-filmic")},
+    {"id": "path-tracing", "title": "Extra: path tracing",
+     "what": "Global illumination: --integrator path renders the same scene files with light bouncing between "
+             "surfaces, the background as a sky, emissive surfaces as lights, environment images sampled by "
+             "luminance; energy-conserving Phong lobes, glTF's GGX, Fresnel glass; MIS, Russian roulette.",
+     "how": "core/render/path_integrator.cpp, materials/bsdf.cpp, core/lights/environment.cpp "
+            "(docs/rendering.md, \"Path tracing\").",
+     "scene": "scenes/toys/toys.json",
+     "scenes": {"cornell-box": "scenes/cornell_box.json", "cornell-16": "scenes/cornell_box.json",
+                "environment": "scenes/environment.json"},
+     "renders": [("toys-whitted", "--integrator whitted", "The toys by Whitted ray tracing: direct light only",
+                  "Whitted (the scene as it is)"),
+                 ("toys-path", "--integrator path --spp 32", "The same toys path traced: the pale sky lights the "
+                  "room, surfaces light each other", "Path traced, 32 samples a pixel"),
+                 ("cornell-box", "", "The Cornell box, path traced: red and green walls bleed onto white blocks",
+                  "The Cornell box, 256 samples a pixel"),
+                 ("cornell-16", "--spp 16", "The Cornell box at 16 samples a pixel, visibly noisy",
+                  "16 samples a pixel: noise falls as 1/sqrt(samples)"),
+                 ("environment", "", "Chrome, clay and glass balls lit only by an HDR sky with a small sun",
+                  "Lit by an environment image (scenes/textures/sky.hdr)")],
+     "compare": ("toys-whitted", "toys-path")},
     {"id": "final", "title": "10. The final scene: toys left behind",
      "what": "Every objective in one picture: a toy box, marbles, balls, dice, jacks, cards and blocks on a table.",
      "how": "scenes/toys/toys.json, written by tools/make_toys_scene.py.",
