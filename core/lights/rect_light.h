@@ -21,6 +21,11 @@ struct RectLight {
   Vec3 color{1.0f};  // linear RGB, already multiplied by the scene's "intensity"
   Attenuation attenuation;
   bool two_sided = false;
+  // The radiance of its face as the path tracer's area emitter. A scene file's rect light
+  // emits its colour (what Whitted shows on its face); one from a Blender area light of power P
+  // emits P / (4 A) x its colour, as Cycles' does (tools/cycles measures it), where Whitted's
+  // colour is set for its own rule (io/gltf/extras.cpp).
+  Vec3 radiance{1.0f};
 
   // Unit normal, the side it emits towards: edge1 x edge2. (io refuses parallel or zero edges.)
   Vec3 normal() const { return glm::normalize(glm::cross(edge1, edge2)); }

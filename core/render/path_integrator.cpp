@@ -66,7 +66,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
       if (max_component(f) <= 0.0f) continue;
       const float light_pdf = d2 / (cos_light * area);
       if (!visible(s, wi, distance, ctx)) continue;
-      sum += f * rect->color * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
+      sum += f * rect->radiance * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
       continue;
     }
     // Point, spot, directional: a delta, reached by light sampling alone.
@@ -159,7 +159,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         const float cos_light = std::fabs(glm::dot(dir, normal_area)) / area;
         weight = bsdf_weight(settings.path.strategy, bsdf_pdf, distance * distance / (cos_light * area));
       }
-      radiance += beta * rect.color * weight;
+      radiance += beta * rect.radiance * weight;
       break;
     }
     const SurfaceInteraction si = scene.surface(ray, met.hit);

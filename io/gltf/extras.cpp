@@ -45,6 +45,9 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   light.edge2 = Vec3(0.0f, -sy, 0.0f);
   const Vec3 c = color ? glm::max(Vec3((*color)[0], (*color)[1], (*color)[2]), Vec3(0.0f)) : Vec3(1.0f);
   light.color = c * (*power / (kPi * kPi));
+  // Cycles' area light of power P has radiance P / (4 A): head-on it lights like a point light
+  // of the same power (intensity P / (4 pi) W/sr, times pi for the cosine lobe's peak).
+  light.radiance = c * (*power / (4.0f * sx * sy));
   light.attenuation = Attenuation{0.0f, 0.0f, 1.0f};
   light.two_sided = flag(a, "two_sided");
   return light;
