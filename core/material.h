@@ -38,6 +38,9 @@ struct Material {
   Vec3 reflectivity{0.0f};  // weight of the mirror-reflected colour, in [0, 1]
   Vec3 transmission{0.0f};  // weight of the light passing through (split by Fresnel), in [0, 1]
   TextureSlot transmission_texture;  // glTF's transmissionTexture: its red channel scales transmission (linear)
+  // glTF's alphaMode BLEND made the transmission (1 - alpha, unbent): the surface covers only part
+  // of each point, and what it does not cover lets light through untinted, metal or not.
+  bool transmission_is_coverage = false;
   float ior = 1.5f;         // index of refraction of the inside, > 0; used where transmission > 0
   Vec3 absorption{0.0f};    // Beer-Lambert coefficient per unit distance inside, >= 0
   float glossy = 0.0f;      // blur-square width of reflections (0 = perfect mirror), >= 0
@@ -69,7 +72,9 @@ struct Material {
   bool transmissive() const { return max_component(transmission) > 0.0f; }
   // What passes through the material, before textures: its transmission; under glTF's model
   // tinted by the base colour factor, and none through metal (KHR_materials_transmission).
-  Vec3 transmittance() const { return pbr.enabled ? transmission * kd * (1.0f - pbr.metallic) : transmission; }
+  Vec3 transmittance() const {
+    return pbr.enabled && !transmission_is_coverage ? transmission * kd * (1.0f - pbr.metallic) : transmission;
+  }
   bool absorbing() const { return max_component(absorption) > 0.0f; }
 };
 

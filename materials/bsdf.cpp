@@ -63,8 +63,10 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
     }
     glass_reflect_ = Vec3(1.0f - layer_);
     glass_refract_ = s.transmission;
-    // Rough transmission is a GGX dielectric of the same roughness; a smooth one a delta.
-    weight[ggx_.alpha < kSmoothAlpha ? kGlass : kRoughGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
+    // Rough transmission is a GGX dielectric of the same roughness; a smooth one a delta, and so
+    // is an interface of equal indices (BLEND's coverage), through which light passes straight.
+    const bool smooth_glass = ggx_.alpha < kSmoothAlpha || eta_ == 1.0f;
+    weight[smooth_glass ? kGlass : kRoughGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
   } else {
     // The transmitted share T goes to the dielectric; the opaque lobes share what is left.
     const Vec3 opaque = Vec3(1.0f) - s.transmission;

@@ -90,11 +90,12 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     const PhongTerms p = pbr_to_phong(kd, metallic, roughness);
     // KHR_materials_transmission: metal lets nothing through; what passes is tinted by the base
     // colour and blurred by the roughness (Whitted: refracted rays spread like glossy ones).
-    transmission *= 1.0f - s.metallic;
+    // (BLEND's transmission is coverage: what the surface does not cover passes untinted.)
+    if (!m.transmission_is_coverage) transmission *= 1.0f - s.metallic;
     s.transmission_factor = max_component(transmission);
     s.diffuse = p.kd * (Vec3(1.0f) - transmission);
-    transmission *= kd;
-    s.refraction_glossy = s.transmission_factor > 0.0f ? p.glossy : 0.0f;
+    if (!m.transmission_is_coverage) transmission *= kd;
+    s.refraction_glossy = s.transmission_factor > 0.0f && !m.transmission_is_coverage ? p.glossy : 0.0f;
     s.specular = p.ks;
     s.shininess = p.shininess;
     s.reflectivity = p.reflectivity;

@@ -114,6 +114,7 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
       out.cutout.texture.mapping.filter = out.texture.mapping.filter;
     }
     if (m.alphaMode == "BLEND" && alpha < 1.0f) {
+      out.transmission_is_coverage = 1.0f - alpha > max_component(out.transmission);
       out.transmission = glm::max(out.transmission, Vec3(1.0f - alpha));
       if (!ior_given && !extension(m.extensions, "KHR_materials_transmission")) out.ior = 1.0f;  // see-through, unbent
     }

@@ -246,6 +246,16 @@ TEST_CASE("glTF materials: BLEND becomes unbent transmission, unlit shows the ba
   CHECK(model.materials[0].ior == 1.0f);
   CHECK(model.materials[0].cutout.enabled);
   CHECK(model.materials[0].cutout.factor == 1.0f);  // the factor went to transmission, not the mask
+  CHECK(model.materials[0].transmission_is_coverage);
+  // Coverage, not KHR transmission: what is not covered passes untinted, from a red metal too.
+  const Json red_metal = {{"alphaMode", "BLEND"},
+                          {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 0.25}}, {"metallicFactor", 1.0}}}};
+  const ImportedModel red = import_file(quad_file("blend-red.gltf", red_metal));
+  SurfaceInteraction si;
+  si.geometric_normal = si.shading_normal = Vec3(0, 0, 1);
+  const EvaluatedSurface through = evaluate_surface(red.materials[0], si, Vec3(0, 0, -1), red.textures);
+  CHECK(through.transmission == Vec3(0.75f));
+  CHECK(red.materials[0].transmittance() == Vec3(0.75f));
 
   const Json unlit = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}}},
                       {"extensions", {{"KHR_materials_unlit", Json::object()}}}};

@@ -257,6 +257,24 @@ TEST_CASE("BSDF: delta lobes (mirror, glass) reflect and refract with their weig
     CHECK(out.wi.z == Approx(direction(30.0f, 0.0f).z));
     CHECK(out.weight.x == Approx(0.8f));
   }
+  SECTION("a rough glTF surface of equal indices (BLEND's coverage) lets light straight through") {
+    EvaluatedSurface s = metal_rough(direction(40.0f, 0.0f), Vec3(1.0f, 0.2f, 0.2f), 0.0f, 0.6f);
+    s.transmission = Vec3(0.75f);
+    s.transmission_factor = 0.75f;
+    const Bsdf bsdf(s, 1.0f);
+    CHECK(bsdf.lobe_probability(Bsdf::kRoughGlass) == 0.0f);
+    REQUIRE(bsdf.lobe_probability(Bsdf::kGlass) > 0.0f);
+    int through = 0;
+    Rng rng(2);
+    for (int k = 0; k < 2000; ++k) {
+      BsdfSample out;
+      if (!bsdf.sample(rng.next_float(), Vec2(rng.next_float(), rng.next_float()), out) || !out.transmitted) continue;
+      ++through;
+      CHECK(out.wi.x == Approx(-direction(40.0f, 0.0f).x).margin(1e-5));  // unbent
+      CHECK(out.wi.z == Approx(-direction(40.0f, 0.0f).z).margin(1e-5));
+    }
+    CHECK(through > 500);
+  }
   SECTION("glass of ior 1.5 reflects with the Fresnel probability and refracts by Snell's law") {
     EvaluatedSurface s = surface(direction(60.0f, 0.0f));
     s.transmission = Vec3(1.0f);
