@@ -8,6 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
+
+#include "core/material.h"
 
 namespace rt {
 
@@ -45,5 +48,26 @@ class MediumStack {
   uint32_t materials_[kCapacity];  // [0, size_) in use; the rest is never read
   int size_ = 0;
 };
+
+// A transmissive surface crossed: the media beyond it and the indices on both sides. Entering:
+// from the innermost medium into `medium`. Leaving: out of it, into what remains once it is
+// removed. Whitted's refraction and the path tracer's dielectric both take it from here.
+struct MediumCrossing {
+  MediumStack beyond;
+  float n_before = 1.0f, n_after = 1.0f;
+};
+
+inline float medium_index(const MediumStack& media, const std::vector<Material>& materials) {
+  return media.empty() ? 1.0f : materials[media.innermost()].ior;
+}
+
+inline MediumCrossing cross_medium(const MediumStack& media, uint32_t medium, bool entering,
+                                   const std::vector<Material>& materials) {
+  MediumCrossing c;
+  c.beyond = entering ? media.entered(medium) : media.left(medium);
+  c.n_before = entering ? medium_index(media, materials) : materials[medium].ior;
+  c.n_after = medium_index(c.beyond, materials);
+  return c;
+}
 
 }  // namespace rt

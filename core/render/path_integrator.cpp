@@ -6,10 +6,6 @@
 namespace rt {
 namespace {
 
-float index_of(const MediumStack& media, const Scene& scene) {
-  return media.empty() ? 1.0f : scene.materials()[media.innermost()].ior;
-}
-
 // The ray cone's spread after a smooth (diffuse or glossy) bounce: such rays scatter widely, and
 // their hits only need a coarse texture level (a fine one is as right, and slower).
 constexpr float kScatteredSpread = 0.05f;
@@ -182,9 +178,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     float eta = 1.0f;
     MediumStack beyond = media;
     if (s.transmissive()) {
-      beyond = s.entering ? media.entered(s.medium) : media.left(s.medium);
-      const float n1 = s.entering ? index_of(media, scene) : scene.materials()[s.medium].ior;
-      eta = index_of(beyond, scene) / n1;
+      const MediumCrossing crossing = cross_medium(media, s.medium, s.entering, scene.materials());
+      beyond = crossing.beyond;
+      eta = crossing.n_after / crossing.n_before;
     }
     const Bsdf bsdf(s, eta);
     if (bsdf.has_smooth_lobes()) radiance += beta * direct_light(s, bsdf, bounce, ctx);

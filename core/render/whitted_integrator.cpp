@@ -5,13 +5,6 @@
 #include "materials/optics.h"
 
 namespace rt {
-namespace {
-
-float index_of(const MediumStack& media, const Scene& scene) {
-  return media.empty() ? 1.0f : scene.materials()[media.innermost()].ior;
-}
-
-}  // namespace
 
 // Inlined into trace(), the recursion's hot call: as a call of its own it cost glossy.json 2% (measured).
 [[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met,
@@ -74,11 +67,9 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
   Vec3 refracted(0.0f);
   MediumStack beyond = state.media;
   if (s.transmissive()) {
-    // Entering: from the innermost medium into this material. Leaving: out of it, into what
-    // remains once it is removed (the medium stack's rule).
-    const MediumStack after = s.entering ? state.media.entered(s.medium) : state.media.left(s.medium);
-    const float n1 = s.entering ? index_of(state.media, ctx.scene) : ctx.scene.materials()[s.medium].ior;
-    const float n2 = index_of(after, ctx.scene);
+    const MediumCrossing crossing = cross_medium(state.media, s.medium, s.entering, ctx.scene.materials());
+    const MediumStack& after = crossing.beyond;
+    const float n1 = crossing.n_before, n2 = crossing.n_after;
     float fresnel = schlick_reflectance(glm::dot(s.wo, s.n), n1, n2);
     // Total internal reflection sends everything to the reflected ray. A shading normal can bend
     // the refracted ray back out of the surface; then the geometric normal decides.
