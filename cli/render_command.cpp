@@ -347,6 +347,7 @@ int run_render(const RenderCommand& cmd) {
   if (request->frames_given) options.frame = request->frames.first;
   options.animation = cmd.animation;
   options.fps = cmd.fps;
+  options.integrator = cmd.integrator;
   if (cmd.background) options.background = parse_color(*cmd.background);
   if (cmd.ambient) options.ambient = parse_color(*cmd.ambient);
   Diagnostics diags;

@@ -24,6 +24,9 @@ struct MetallicRoughness {
 // alpha. (BLEND is mapped onto this and onto transmission by io/gltf/materials.cpp.)
 struct AlphaCutoutParams {
   bool enabled = false;
+  // glTF's BLEND: coverage is a fraction of the surface, not a mask. The path tracer keeps each
+  // point with probability = coverage (stochastic transparency); Whitted cuts at `cutoff`.
+  bool blend = false;
   float factor = 1.0f;  // baseColorFactor's alpha
   float cutoff = 0.5f;
   TextureSlot texture;  // the base colour image's alpha channel, as a grey texture

@@ -2,7 +2,7 @@
 
 namespace rt {
 
-void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
+void SceneAssets::add_mask(uint32_t mesh, uint32_t material, bool stochastic_blend) {
   const Material& m = materials[material];
   if (mask(mesh, material)) return;
   // Coverage that cannot vary and reaches the cutoff everywhere needs no test: drawn solid.
@@ -22,6 +22,7 @@ void SceneAssets::add_mask(uint32_t mesh, uint32_t material) {
   }
   p.cutout.factor = m.cutout.factor;
   p.cutout.cutoff = m.cutout.cutoff;
+  p.cutout.stochastic = m.cutout.blend && stochastic_blend;
   masks.push_back(p);
 }
 

@@ -40,8 +40,9 @@ struct SceneAssets {
   SceneAssets(const SceneAssets&) = delete;  // a copy's masks would point into the original
 
   // Adds the coverage test of `mesh` placed with `material`, if that material is alpha-masked
-  // and the pair has none yet.
-  void add_mask(uint32_t mesh, uint32_t material);
+  // and the pair has none yet. `stochastic_blend`: a BLEND material's coverage is a probability
+  // (the path tracer), not cut at 0.5.
+  void add_mask(uint32_t mesh, uint32_t material, bool stochastic_blend);
   // The test for that pair, or null: drawn solid.
   const AlphaCutout* mask(uint32_t mesh, uint32_t material) const;
 };

@@ -1,5 +1,9 @@
 #include "core/accel/alpha_cutout.h"
 
+#include <bit>
+
+#include "core/rng.h"
+
 namespace rt {
 
 bool AlphaCutout::front_facing(uint32_t triangle, Vec3 direction) const {
@@ -11,7 +15,21 @@ bool AlphaCutout::front_facing(uint32_t triangle, Vec3 direction) const {
   return facing < 0.0f;
 }
 
-bool AlphaCutout::covers(uint32_t triangle, float b1, float b2) const {
+namespace {
+
+// A number in [0, 1) that only this ray meeting this triangle draws.
+float ray_key(const Ray& ray, uint32_t triangle) {
+  uint64_t h = mix64(triangle);
+  for (int i = 0; i < 3; ++i) {
+    h = mix64(h ^ std::bit_cast<uint32_t>(ray.origin[i]));
+    h = mix64(h ^ std::bit_cast<uint32_t>(ray.direction[i]));
+  }
+  return static_cast<float>(h >> 40) * 0x1p-24f;
+}
+
+}  // namespace
+
+bool AlphaCutout::covers(uint32_t triangle, float b1, float b2, const Ray& ray) const {
   if (!masked) return true;
   const uint32_t i0 = mesh->indices[3 * triangle], i1 = mesh->indices[3 * triangle + 1],
                  i2 = mesh->indices[3 * triangle + 2];
@@ -26,7 +44,7 @@ bool AlphaCutout::covers(uint32_t triangle, float b1, float b2) const {
     coverage *= mapping.filter == TextureFilter::kNearest ? texture->nearest(at, mapping.wrap).x
                                                           : texture->bilinear(at, mapping.wrap).x;
   }
-  return coverage >= cutoff;
+  return stochastic ? coverage > ray_key(ray, triangle) : coverage >= cutoff;
 }
 
 }  // namespace rt

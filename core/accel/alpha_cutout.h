@@ -2,6 +2,9 @@
 // instances that need it:
 //  - glTF's alpha MASK: where coverage falls below the cutoff, closest-hit and any-hit both skip
 //    the point, so camera, reflection and shadow rays all see through it (covers());
+//  - glTF's alpha BLEND, path traced: each ray keeps the point with probability = coverage, by a
+//    hash of the ray and the triangle (stochastic transparency: the mean is the blend, and the
+//    image still depends only on the rays, never on which thread traced them);
 //  - glTF's doubleSided false: the back of each triangle is skipped by closest-hit queries (camera,
 //    reflection, refraction, glossy rays), not by shadow rays, so a single-sided closed mesh
 //    still casts its whole shadow (front_facing()).
@@ -10,6 +13,7 @@
 #include <cstdint>
 
 #include "core/mesh.h"
+#include "core/ray.h"
 #include "core/texture/texture.h"
 #include "core/texture/texture_slot.h"
 
@@ -22,11 +26,14 @@ struct AlphaCutout {
   float factor = 1.0f;               // baseColorFactor's alpha
   float cutoff = 0.5f;
   bool masked = false;        // the alpha test applies
+  bool stochastic = false;    // coverage is a probability per ray (BLEND, path traced), not cut
   bool single_sided = false;  // closest-hit queries skip back faces
 
-  // Whether the surface is there at barycentrics (b1, b2) of `triangle`: factor x texture
-  // (bilinear on the finest level, or nearest) x the COLOR_0 alpha >= cutoff.
-  bool covers(uint32_t triangle, float b1, float b2) const;
+  // Whether `ray` (in object space) finds the surface at barycentrics (b1, b2) of `triangle`:
+  // coverage = factor x texture (bilinear on the finest level, or nearest) x the COLOR_0 alpha;
+  // there if coverage >= cutoff, or, when stochastic, if coverage > a number in [0, 1) hashed
+  // from the ray and the triangle.
+  bool covers(uint32_t triangle, float b1, float b2, const Ray& ray) const;
   // Whether a ray along object-space `direction` meets the front of `triangle`, the side its
   // vertices run counter-clockwise seen from. In object space, so a mirroring transform (which
   // glTF says turns the world's winding) changes nothing. True unless single_sided.

@@ -97,7 +97,7 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
     if (BvhRef::is_quad_leaf(leaf)) {
       const auto kept = [&](uint32_t id, float b1, float b2) {
-        return cutout.front_facing(id, r.direction) && cutout.covers(id, b1, b2);
+        return cutout.front_facing(id, r.direction) && cutout.covers(id, b1, b2, r);
       };
       found |= nearest_in_quads(bvh, leaf, quad_ray, r, hit, kept);
       return false;
@@ -109,7 +109,7 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
       if (s.id < bvh.triangle_count() && intersect_triangle(s.triangle, r, candidate)) {
         candidate.prim = s.id;
         if (precedes(candidate, hit) && cutout.front_facing(s.id, r.direction) &&
-            cutout.covers(s.id, candidate.b1, candidate.b2))
+            cutout.covers(s.id, candidate.b1, candidate.b2, r))
           found |= take_if_first(candidate, r, hit);
       }
     }
@@ -165,7 +165,7 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
         continue;
       }
       // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
-      auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2); };
+      auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2, local); };
       if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
     }
   }

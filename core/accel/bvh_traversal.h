@@ -215,14 +215,15 @@ bool for_each_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
       } else {
         const MeshInstance& inst = bvh.instance(s.id);
         const uint32_t id = s.id;
+        const Ray local = object_ray(inst.transform, leaf_ray);
         auto relabel = [&](const Hit& h) {
-          if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2)) return false;  // cut out: go on
+          if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2, local)) return false;  // cut out: go on
           Hit g = h;
           g.part = h.prim;
           g.prim = id;
           return visit(static_cast<const Hit&>(g));
         };
-        stop = for_each_primitive_hit(*inst.bvh, object_ray(inst.transform, leaf_ray), relabel);
+        stop = for_each_primitive_hit(*inst.bvh, local, relabel);
       }
       if (stop) return true;
     }

@@ -60,6 +60,8 @@ struct LoadOptions {
   // frame rate its timeline is sampled at (--fps; default kModelFps, Blender's).
   std::optional<std::string> animation;
   std::optional<float> fps;
+  // The scene's integrator replaced (--integrator): what BLEND's coverage and the warnings follow.
+  std::optional<std::string> integrator;
   // The scene's background and ambient colours replaced (--background, --ambient), linear RGB.
   std::optional<std::array<float, 3>> background, ambient;
 };

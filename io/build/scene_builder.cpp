@@ -128,7 +128,7 @@ class Builder {
     // Masks point into the meshes and textures: made once the assets are where they stay.
     auto assets = std::make_shared<SceneAssets>(std::move(assets_));
     for (const SceneNode& node : g.nodes)
-      for (const NodeMesh& nm : node.meshes) assets->add_mask(nm.mesh, nm.material);
+      for (const NodeMesh& nm : node.meshes) assets->add_mask(nm.mesh, nm.material, path_traced());
     g.assets = std::move(assets);
 
     // The timeline's first frame, placed once: its problems are errors at the nodes concerned
@@ -159,12 +159,16 @@ class Builder {
                                                     : g.at(g.pose(frame), bvh_options_);
     if (!diags_.has_errors()) {  // a scene with errors (a node left out) would get false alarms
       warn_camera_inside(g, rest, scene.camera.position, pointers_, report_);
-      warn_unlit_or_empty(scene, desc_.render.integrator == "path", geometry, light_pointers(g), report_);
+      warn_unlit_or_empty(scene, path_traced(), geometry, light_pointers(g), report_);
     }
     return BuiltScene{std::move(g), frame, std::move(scene)};
   }
 
   std::vector<std::string> take_files() { return std::move(files_); }
+
+  // Whether the render will path-trace (the scene's integrator, or --integrator's): BLEND's
+  // coverage and the unlit-scene warning depend on it. io does not link the renderer: by name.
+  bool path_traced() const { return options_.integrator.value_or(desc_.render.integrator) == "path"; }
 
   // Per light of the graph, where it is described: the scene's lights, then the glTF files'
   // (their nodes' pointers); empty for the light rtcli adds to a model on its own.

@@ -310,7 +310,7 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
     const tinygltf::Material& m = model.materials[i];
     const std::string where = "material " + to_string(i) + (m.name.empty() ? "" : " (\"" + m.name + "\")");
     const std::string at = "/materials/" + to_string(i);
-    out.materials.push_back(import_material(m, images, where, at, report));
+    out.materials.push_back(import_material(m, images, where, at));
     apply_material_extras(m.extras, images, where, at, out.materials.back(), report);
     out.material_names.push_back(m.name);
     if (images.failed()) return std::nullopt;

@@ -24,7 +24,7 @@ Vec3 clamped01(Vec3 v) { return glm::clamp(v, Vec3(0.0f), Vec3(1.0f)); }
 }  // namespace
 
 Material import_material(const tinygltf::Material& m, ImageDecoder& images, const std::string& where,
-                         const std::string& at, Reporter& report) {
+                         const std::string& at) {
   const auto& pbr = m.pbrMetallicRoughness;
   Material out;
   float alpha = 1.0f;
@@ -105,6 +105,7 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   // Alpha.
   if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
     out.cutout.enabled = true;
+    out.cutout.blend = m.alphaMode == "BLEND";
     out.cutout.cutoff = m.alphaMode == "MASK" ? static_cast<float>(m.alphaCutoff) : 0.5f;
     out.cutout.factor = m.alphaMode == "MASK" ? alpha : 1.0f;
     if (base.index >= 0) {

@@ -8,8 +8,9 @@
 //   occlusionTexture                                     -> ignored: traced shadows do its work
 //   alphaMode MASK, alphaCutoff                          -> cutout (every ray passes where cut)
 //   alphaMode BLEND                                      -> the factor's alpha a becomes unbent
-//     transmission 1 - a (ior 1); texture and vertex alpha cut out below 0.5
-//   KHR_materials_transmission                           -> transmission (texture ignored)
+//     transmission 1 - a (ior 1); texture and vertex alpha a cutout (cutout.blend): a probability
+//     per ray when path traced, cut below 0.5 by Whitted
+//   KHR_materials_transmission                           -> transmission, transmission_texture
 //   KHR_materials_ior                                    -> ior (default 1.5)
 //   KHR_materials_volume attenuation                     -> absorption = -ln(colour) / distance
 //   KHR_materials_unlit                                  -> unlit
@@ -20,7 +21,6 @@
 #include <vector>
 
 #include "core/material.h"
-#include "io/base/reporter.h"
 
 namespace tinygltf {
 struct Material;
@@ -30,9 +30,9 @@ namespace rt {
 
 class ImageDecoder;
 
-// `where` names the material in messages and `at` is its pointer ("/materials/2"): what it uses
-// but rtcli does not (a transmission texture) and unusable textures are warnings there.
+// `where` names the material in messages and `at` is its pointer ("/materials/2"): unusable
+// textures are warnings there (the image decoder reports them).
 Material import_material(const tinygltf::Material& m, ImageDecoder& images, const std::string& where,
-                         const std::string& at, Reporter& report);
+                         const std::string& at);
 
 }  // namespace rt

@@ -24,7 +24,7 @@ HdrImage gradient(int width, int height) {
   image.height = height;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      image.texels.push_back(Vec3(0.01f + x, 0.5f * (y + 1), x == 3 ? 1000.0f : 0.25f));  // a run-friendly blue row
+      image.texels.push_back(Vec3(0.01f + float(x), 0.5f * float(y + 1), x == 3 ? 1000.0f : 0.25f));  // a run-friendly blue row
   return image;
 }
 
@@ -114,7 +114,7 @@ TEST_CASE("environment files: .hdr and .exr load as linear radiance, anything el
   const std::string exr = rt::test::output_path("env.exr");
   {
     std::vector<Imf::Rgba> pixels(4 * 2);
-    for (int i = 0; i < 8; ++i) pixels[static_cast<size_t>(i)] = Imf::Rgba(0.5f * i, 2.0f, 100.0f, 1.0f);
+    for (int i = 0; i < 8; ++i) pixels[static_cast<size_t>(i)] = Imf::Rgba(0.5f * float(i), 2.0f, 100.0f, 1.0f);
     Imf::RgbaOutputFile out(exr.c_str(), 4, 2, Imf::WRITE_RGBA);
     out.setFrameBuffer(pixels.data(), 1, 4);
     out.writePixels(2);

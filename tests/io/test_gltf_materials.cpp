@@ -2,6 +2,7 @@
 // transforms and samplers, vertex colours, metallic-roughness per shading point, alpha masks for
 // camera and shadow rays, BLEND and unlit.
 #include <algorithm>
+#include <cmath>
 
 #include <catch2/catch.hpp>
 
@@ -72,9 +73,11 @@ ImportedModel import_file(const std::string& path) {
   return std::move(*model);
 }
 
-// A scene with the quad from `gltf` and a big cube behind it (z from -3 to -1).
-LoadedScene quad_scene(const std::string& name, const std::string& gltf) {
+// A scene with the quad from `gltf` and a big cube behind it (z from -3 to -1), rendered by
+// `integrator`.
+LoadedScene quad_scene(const std::string& name, const std::string& gltf, const std::string& integrator = "whitted") {
   return rt::test::load_scene_text(name, R"({
+    "render": {"integrator": ")" + integrator + R"("},
     "camera": {"position": [0.5, 0.5, 5], "look_at": [0.5, 0.5, 0]},
     "lights": [{"type": "point", "position": [0.5, 0.5, 4], "color": [1, 1, 1]}],
     "materials": {"wall": {"kd": [0.5, 0.5, 0.5]}},
@@ -266,6 +269,43 @@ TEST_CASE("glTF materials: BLEND becomes unbent transmission, unlit shows the ba
   CHECK(s.emission.z == Approx(0.6f));
   CHECK(s.diffuse == Vec3(0.0f));
   CHECK(s.specular == Vec3(0.0f));
+}
+
+TEST_CASE("glTF materials: BLEND's vertex alpha is a probability per ray when path traced, a cut in Whitted",
+          "[gltf][materials][path]") {
+  // Every vertex white with alpha 64/255: a quarter of the surface there.
+  const std::vector<uint8_t> colors = {255, 255, 255, 64, 255, 255, 255, 64, 255, 255, 255, 64, 255, 255, 255, 64};
+  const Json blend = {{"alphaMode", "BLEND"}};
+  const std::string gltf = quad_file("blend-vertex.gltf", blend, colors);
+  const LoadedScene path = quad_scene("blend-path.json", gltf, "path");
+  const LoadedScene whitted = quad_scene("blend-whitted.json", gltf);
+  // Rays through the quad's inside at 4,000 points (each ray draws its own number), and shadow
+  // rays that end between the quad and the cube behind it.
+  const int n = 4000;
+  int path_hits = 0, path_blocked = 0, whitted_hits = 0, whitted_blocked = 0;
+  for (int i = 0; i < n; ++i) {
+    const float x = 0.05f + 0.9f * static_cast<float>(i % 64) / 64.0f;
+    const float y = 0.05f + 0.9f * static_cast<float>(i / 64) / 63.0f;
+    Hit hit;
+    Ray r = down_z(x, y);
+    if (path.scene.intersect(r, hit) && hit.t == Approx(5.0f)) ++path_hits;
+    r = down_z(x, y);
+    if (whitted.scene.intersect(r, hit) && hit.t == Approx(5.0f)) ++whitted_hits;
+    Ray shadow = down_z(x, y);
+    shadow.tmax = 5.5f;
+    path_blocked += path.scene.occluded(shadow);
+    whitted_blocked += whitted.scene.occluded(shadow);
+  }
+  // Binomial: the mean 64/255 = 0.251, standard error sqrt(0.25 x 0.75 / 4000) = 0.0069; 4 of them.
+  const double coverage = 64.0 / 255.0, tolerance = 4.0 * std::sqrt(coverage * (1.0 - coverage) / n);
+  CHECK(static_cast<double>(path_hits) / n == Approx(coverage).margin(tolerance));
+  CHECK(static_cast<double>(path_blocked) / n == Approx(coverage).margin(tolerance));
+  CHECK(whitted_hits == 0);  // 0.251 < 0.5: cut out
+  CHECK(whitted_blocked == 0);
+  // The same ray draws the same number: the answer does not change when asked again.
+  Hit a, b;
+  Ray r1 = down_z(0.3f, 0.7f), r2 = down_z(0.3f, 0.7f);
+  CHECK(path.scene.intersect(r1, a) == path.scene.intersect(r2, b));
 }
 
 TEST_CASE("glTF samples: TextureCoordinateTest's squares land where their labels say", "[gltf][materials][uv]") {

@@ -71,7 +71,7 @@ int cell_of(Vec3 w) {
 template <class Fn>
 std::vector<double> integrate_cells(Fn&& fn, int n = 12) {
   std::vector<double> out(kThetaCells * kPhiCells, 0.0);
-  const double d_theta = kPi / kThetaCells / n, d_phi = 2.0 * kPi / kPhiCells / n;
+  const double d_theta = kPi / kThetaCells / double(n), d_phi = 2.0 * kPi / kPhiCells / double(n);
   for (int i = 0; i < kThetaCells; ++i)
     for (int j = 0; j < kPhiCells; ++j) {
       double sum = 0.0;

@@ -95,7 +95,7 @@ Scene small_scene() {
   // Glass (material 2): shadow rays pass through it with the any-hit visitor.
   prims.instances.push_back(place_mesh(assets->meshes[0].bvh, *make_transform(Mat4(1.0f)), 0, 2));
   // The same mesh again with the masked material: traversal tests its coverage at each crossing.
-  assets->add_mask(0, 4);
+  assets->add_mask(0, 4, false);
   REQUIRE(assets->mask(0, 4));
   prims.instances.push_back(place_mesh(assets->meshes[0].bvh,
                                        *make_transform(compose_trs({1.5f, 1.5f, 0}, {0, 0, 0}, {0.25f, 0.25f, 0.25f})),
