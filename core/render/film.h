@@ -39,10 +39,13 @@ class FilmTile {
   std::vector<FilmPixel> pixels_;
 };
 
+// The pixels of a window of the image (all of it unless a render asked for part): (0, 0) of
+// `color` and of the channels is the window's corner (x0, y0) of the image.
 struct Film {
   Image color;                    // linear RGB
   std::vector<uint16_t> samples;  // per pixel, row-major
   std::vector<uint8_t> depth;     // per pixel, row-major
+  int x0 = 0, y0 = 0;             // where the film's first pixel is in the image
 
   Film() = default;
   Film(int width, int height) { allocate(width, height, nullptr); }
@@ -73,6 +76,8 @@ struct Film {
 
   int width() const { return color.width; }
   int height() const { return color.height; }
+  PixelWindow window() const { return PixelWindow{x0, y0, x0 + width(), y0 + height()}; }
+  // (x, y) in the film's own coordinates.
   size_t index(int x, int y) const {
     return static_cast<size_t>(y) * static_cast<size_t>(color.width) + static_cast<size_t>(x);
   }
@@ -81,9 +86,9 @@ struct Film {
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) {
         const FilmPixel& p = t.at(x, y);
-        color.at(x, y) = p.color;
-        samples[index(x, y)] = p.samples;
-        depth[index(x, y)] = p.depth;
+        color.at(x - x0, y - y0) = p.color;
+        samples[index(x - x0, y - y0)] = p.samples;
+        depth[index(x - x0, y - y0)] = p.depth;
       }
   }
 };

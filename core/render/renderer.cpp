@@ -17,11 +17,16 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::unique_ptr<Integrator> integrator = make_integrator(settings.integrator);
   if (!integrator) throw std::invalid_argument("unknown integrator \"" + settings.integrator + "\"");
-  const TileGrid grid(settings.width, settings.height, settings.tile_size);
+  const PixelWindow window =
+      view.window.empty() ? PixelWindow::whole(settings.width, settings.height) : view.window;
+  if (!window.inside(settings.width, settings.height)) throw std::invalid_argument("render window outside the image");
+  const TileGrid grid(window, settings.tile_size);
   const std::unique_ptr<PixelSampler> sampler = make_pixel_sampler(settings, grid);
   if (!sampler) throw std::invalid_argument("unknown anti-aliasing mode \"" + settings.antialias.mode + "\"");
 
-  if (!film.allocate(settings.width, settings.height, control.cancel)) {
+  film.x0 = window.x0;
+  film.y0 = window.y0;
+  if (!film.allocate(window.width(), window.height(), control.cancel)) {
     RenderStats stats;
     stats.seconds = elapsed();
     stats.cancelled = true;
@@ -73,7 +78,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   // The calling thread reports progress while the workers render.
   run_workers(threads, worker, [&] {
     if (control.progress)
-      control.progress(RenderProgress{pixels_done.load(), pixel_count(settings), rays_done.load(), elapsed()});
+      control.progress(RenderProgress{pixels_done.load(), window.pixels(), rays_done.load(), elapsed()});
   });
 
   RenderStats stats;

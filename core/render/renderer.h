@@ -10,6 +10,7 @@
 
 #include "core/image.h"
 #include "core/render/film.h"
+#include "core/render/pixel_window.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
@@ -41,14 +42,17 @@ struct RenderControl {
 };
 
 // Whose eyes look: a camera other than the scene's (one eye of a stereo pair), and the eye's key
-// (0: the left eye or a mono render, 1: the right eye).
+// (0: the left eye or a mono render, 1: the right eye); and which pixels of the image are
+// rendered (empty: all of them).
 struct RenderView {
   const Camera* camera = nullptr;
   uint32_t eye = 0;
+  PixelWindow window;
 };
 
-// Renders frame `frame` into `film` (resized to settings.width x settings.height), with the
-// pixel sampler's channels. Throws std::invalid_argument for an unknown integrator or
+// Renders frame `frame` into `film` (resized to the view's window of the settings.width x
+// settings.height image, or all of it), with the pixel sampler's channels. Each pixel is what a
+// render of the whole image gives it. Throws std::invalid_argument for an unknown integrator or
 // anti-aliasing mode name.
 RenderStats render(const Scene& scene, const RenderSettings& settings, Film& film, const RenderControl& control = {},
                    uint32_t frame = 0, const RenderView& view = {});

@@ -1,8 +1,11 @@
-// The image cut into square tiles: the unit of work a thread takes, and of a sampler's film.
+// The image (or the window of it being rendered) cut into square tiles: the unit of work a thread
+// takes, and of a sampler's film. Tiles are in the image's coordinates.
 #pragma once
 
 #include <algorithm>
 #include <vector>
+
+#include "core/render/pixel_window.h"
 
 namespace rt {
 
@@ -14,18 +17,20 @@ struct Tile {
 };
 
 struct TileGrid {
-  int width = 0, height = 0, size = 1;  // image size, tile side in pixels
+  PixelWindow window;  // what is cut
+  int size = 1;        // tile side in pixels
   int columns = 0, rows = 0;
 
   TileGrid(int image_width, int image_height, int tile_size)
-      : width(image_width), height(image_height), size(std::max(1, tile_size)) {
-    columns = (width + size - 1) / size;
-    rows = (height + size - 1) / size;
+      : TileGrid(PixelWindow::whole(image_width, image_height), tile_size) {}
+  TileGrid(PixelWindow cut, int tile_size) : window(cut), size(std::max(1, tile_size)) {
+    columns = window.empty() ? 0 : (window.width() + size - 1) / size;
+    rows = window.empty() ? 0 : (window.height() + size - 1) / size;
   }
   int count() const { return columns * rows; }
   Tile tile(int index) const {
-    const int x0 = (index % columns) * size, y0 = (index / columns) * size;
-    return Tile{index, x0, y0, std::min(x0 + size, width), std::min(y0 + size, height)};
+    const int x0 = window.x0 + (index % columns) * size, y0 = window.y0 + (index / columns) * size;
+    return Tile{index, x0, y0, std::min(x0 + size, window.x1), std::min(y0 + size, window.y1)};
   }
   // The tile left of / above tile `index`, or -1 at the image border.
   int left(int index) const { return index % columns == 0 ? -1 : index - 1; }

@@ -151,8 +151,8 @@ struct OneTile {
   explicit OneTile(const AntialiasSettings& antialias, const char* integrator_name = "whitted")
       : integrator(make_integrator(integrator_name)) {
     settings.integrator = integrator_name;
-    settings.width = grid.width;
-    settings.height = grid.height;
+    settings.width = grid.window.width();
+    settings.height = grid.window.height();
     settings.antialias = antialias;
     sampler = make_pixel_sampler(settings, grid);
     film.reset(grid.tile(0));
@@ -189,8 +189,8 @@ TEST_CASE(
   t.render();
   const long after = g_allocations.load();
   Vec3 sum(0.0f);
-  for (int y = 0; y < t.grid.height; ++y)
-    for (int x = 0; x < t.grid.width; ++x) sum += t.film.at(x, y).color;
+  for (int y = 0; y < t.grid.window.height(); ++y)
+    for (int x = 0; x < t.grid.window.width(); ++x) sum += t.film.at(x, y).color;
 
   CHECK(hits > 1000);
   CHECK(masked > 0);  // the alpha-masked instance was traced

@@ -1,0 +1,72 @@
+// Part of the image (--crop, --tile): every pixel of a window is the whole render's, for every
+// pixel sampler and both integrators, whatever the window's corner, size and tile size.
+#include <catch2/catch.hpp>
+
+#include "core/render/renderer.h"
+#include "io/scene_loader.h"
+#include "tests/support/loading.h"
+#include "tests/support/test_paths.h"
+
+using namespace rt;
+
+namespace {
+
+LoadedScene load(const std::string& path) {
+  Diagnostics diags;
+  auto loaded = load_scene(path, rt::test::load_options(), diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(loaded);
+  return std::move(*loaded);
+}
+
+}  // namespace
+
+TEST_CASE("a window of the image renders the whole render's pixels", "[render][window]") {
+  struct Case {
+    const char* scene;
+    const char* integrator;
+    const char* antialias;
+  };
+  // Adaptive anti-aliasing shares lattice samples across tile borders; a window's border pixels
+  // compute their own and must still agree. glossy: random numbers per pixel.
+  for (const Case c : {Case{"scenes/antialias.json", "whitted", "adaptive"}, Case{"scenes/glossy.json", "whitted", "uniform"},
+                       Case{"scenes/primitives.json", "whitted", "none"}, Case{"scenes/cornell_box.json", "path", "none"}}) {
+    INFO(c.scene << " " << c.integrator << " " << c.antialias);
+    const LoadedScene s = load(rt::test::source_path(c.scene));
+    RenderSettings settings = s.settings;
+    settings.width = 67;
+    settings.height = 41;
+    settings.integrator = c.integrator;
+    settings.antialias.mode = c.antialias;
+    settings.path.samples_per_pixel = 4;
+    settings.threads = 2;
+    Film whole;
+    render(s.scene, settings, whole);
+    for (const PixelWindow w : {PixelWindow{0, 0, 67, 41}, PixelWindow{13, 7, 50, 29}, PixelWindow{66, 40, 67, 41},
+                                PixelWindow{0, 20, 67, 21}, PixelWindow{31, 0, 32, 41}}) {
+      for (const int tile : {5, 16}) {
+        INFO("window " << w.x0 << "," << w.y0 << "," << w.x1 << "," << w.y1 << ", tile " << tile);
+        settings.tile_size = tile;
+        Film part;
+        render(s.scene, settings, part, {}, 0, RenderView{nullptr, 0, w});
+        REQUIRE(part.width() == w.width());
+        REQUIRE(part.height() == w.height());
+        CHECK(part.window() == w);
+        int differing = 0;
+        for (int y = w.y0; y < w.y1; ++y)
+          for (int x = w.x0; x < w.x1; ++x) {
+            differing += part.color.at(x - w.x0, y - w.y0) != whole.color.at(x, y);
+            differing += part.samples[part.index(x - w.x0, y - w.y0)] != whole.samples[whole.index(x, y)];
+          }
+        CHECK(differing == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("a window outside the image is refused", "[render][window]") {
+  const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
+  Film film;
+  CHECK_THROWS_AS(render(s.scene, s.settings, film, {}, 0, RenderView{nullptr, 0, PixelWindow{0, 0, s.settings.width + 1, 1}}),
+                  std::invalid_argument);
+}
