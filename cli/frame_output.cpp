@@ -1,38 +1,11 @@
 #include "cli/frame_output.h"
 
-#include <cerrno>
-#include <cstdlib>
 #include <filesystem>
 
 #include "io/image/jpeg_file.h"
 #include "io/image/png_file.h"
 
 namespace rt {
-namespace {
-
-std::optional<int> parse_int(const std::string& s) {
-  if (s.empty() || s.size() > 8) return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (errno != 0 || end != s.c_str() + s.size() || v < -1000000 || v > 1000000) return std::nullopt;
-  return static_cast<int>(v);
-}
-
-}  // namespace
-
-std::optional<FrameRange> parse_frame_range(const std::string& text) {
-  // The separating '-' is the first one after the first character (which may be a sign).
-  const size_t dash = text.find('-', 1);
-  if (dash == std::string::npos) {
-    const auto n = parse_int(text);
-    return n ? std::optional<FrameRange>(FrameRange{*n, *n}) : std::nullopt;
-  }
-  const auto a = parse_int(text.substr(0, dash)), b = parse_int(text.substr(dash + 1));
-  if (!a || !b || *b < *a) return std::nullopt;
-  return FrameRange{*a, *b};
-}
-
 std::optional<OutputKind> output_kind(const std::string& path, std::string& error) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -1,6 +1,6 @@
 // Where rendered frames go: one PNG (or JPEG), a numbered PNG sequence (Blender's convention: the run of
 // '#' in "frame_####.png" becomes the frame number, zero-padded to its length), or an animated
-// GIF. Also the command line's frame syntax.
+// GIF. The frames' syntax is cli/frame_list.h.
 #pragma once
 
 #include <memory>
@@ -12,15 +12,6 @@
 #include "io/image/rgb8_image.h"
 
 namespace rt {
-
-struct FrameRange {
-  int first = 0;
-  int last = 0;
-  int count() const { return last - first + 1; }
-};
-
-// "12" or "0-119" (also negative frames: "-5--1"); nothing for anything else or last < first.
-std::optional<FrameRange> parse_frame_range(const std::string& text);
 
 enum class OutputKind { kPng, kPngSequence, kGif, kJpeg };
 

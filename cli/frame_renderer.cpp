@@ -15,7 +15,7 @@
 namespace rt {
 
 std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
-                                 const StereoSettings& stereo, const FrameRange& frames, std::vector<FrameSink>& sinks,
+                                 const StereoSettings& stereo, const FrameList& frames, std::vector<FrameSink>& sinks,
                                  Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
@@ -24,8 +24,8 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
   const int all_passes = frames.count() * totals.passes;
   std::string error;
   Image left;
-  for (int frame = frames.first; frame <= frames.last; ++frame) {
-    const int index = frame - frames.first;
+  for (int index = 0; index < frames.count(); ++index) {
+    const int frame = frames.frames[static_cast<size_t>(index)];
     const Scene& scene = scenes.at(frame);
     totals.place_seconds = scenes.placing_seconds();
     Camera camera = scene.camera;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "cli/frame_list.h"
 #include "cli/frame_output.h"
 #include "cli/render_command.h"
 #include "core/render/film.h"
@@ -27,7 +28,7 @@ struct RenderTotals {
 // `sinks`: one output, or two (left, right) for stereo mode "pair". An exit code if it must stop
 // (Ctrl-C, a frame that cannot be written); the film holds the last render.
 std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
-                                 const StereoSettings& stereo, const FrameRange& frames, std::vector<FrameSink>& sinks,
+                                 const StereoSettings& stereo, const FrameList& frames, std::vector<FrameSink>& sinks,
                                  Film& film, RenderTotals& totals);
 
 }  // namespace rt

@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
                        "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
   CLI::Option* frames = render_cmd->add_option(
       "--frames", render.frames,
-      "Render frames A-B of the scene's animation: -o NAME.gif (looping animated GIF) or -o NAME_####.png (numbered)");
+      "Render frames A-B, every S-th frame A-BxS, or a list 1,5,9-12 of the scene's animation: -o NAME.gif (looping "
+      "animated GIF) or -o NAME_####.png (numbered)");
   render_cmd->add_option("--frame", render.frames, "Render frame N of the scene's animation")->excludes(frames);
   render_cmd->add_option("--camera", render.camera,
                          "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "

@@ -81,20 +81,21 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
 }
 
 // The frames the command asks for; without --frame or --frames, the scene's first frame.
-std::optional<FrameRange> requested_frames(const RenderCommand& cmd) {
-  if (!cmd.frames) return FrameRange{};
-  const auto range = parse_frame_range(*cmd.frames);
-  if (!range)
+std::optional<FrameList> requested_frames(const RenderCommand& cmd) {
+  if (!cmd.frames) return FrameList::range(0, 0);
+  std::string error;
+  const auto list = parse_frame_list(*cmd.frames, error);
+  if (!list)
     std::fprintf(stderr,
-                 "rtcli: error: --frames: expected a frame N or a range A-B with A <= B (whole numbers within "
-                 "+-1000000), found \"%s\"\n",
-                 cmd.frames->c_str());
-  return range;
+                 "rtcli: error: --frames: %s; expected a frame N, a range A-B, every S-th frame A-BxS, or a list "
+                 "of those (1,5,9-12), whole numbers within +-%d\n",
+                 error.c_str(), kMaxFrameNumber);
+  return list;
 }
 
 // What the command line asks for, checked before anything is loaded.
 struct RenderRequest {
-  FrameRange frames;  // as asked; without --frame or --frames, the scene's first frame (known once loaded)
+  FrameList frames;  // as asked; without --frame or --frames, the scene's first frame (known once loaded)
   bool frames_given = false;
   std::string output;
   OutputKind kind = OutputKind::kPng;
@@ -125,7 +126,7 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
                  cmd.fps ? "\"animation\": {\"fps\": ...}" : "\"animation\" on its glTF reference (\"mesh\")");
     return std::nullopt;
   }
-  const std::optional<FrameRange> asked = requested_frames(cmd);
+  const std::optional<FrameList> asked = requested_frames(cmd);
   if (!asked) return std::nullopt;
   RenderRequest r{*asked, cmd.frames.has_value(), "", OutputKind::kPng};
   r.output = cmd.output.empty() ? default_output(cmd.scene, asked->count() > 1) : cmd.output;
@@ -162,12 +163,12 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
 
 // Without --frame or --frames: an animated GIF or a PNG sequence shows the scene's whole
 // animation (its timeline), a PNG the timeline's first frame.
-FrameRange frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
+FrameList frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
   if (request.frames_given) return request.frames;
   const Timeline& t = loaded.graph.timeline;
   const bool one_image = request.kind == OutputKind::kPng || request.kind == OutputKind::kJpeg;
-  if (!one_image && loaded.graph.animated) return FrameRange{t.first_frame, t.last_frame};
-  return FrameRange{loaded.frame, loaded.frame};
+  if (!one_image && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
+  return FrameList::range(loaded.frame, loaded.frame);
 }
 
 // "view.png" -> "view-left.png", "out/f_####.png" -> "out/f_####-left.png": stereo mode pair's files.
@@ -185,12 +186,12 @@ std::vector<std::string> output_patterns(const RenderRequest& request, const Ste
 }
 
 std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const RenderRequest& request,
-                                           const FrameRange& frames, const StereoSettings& stereo,
+                                           const FrameList& frames, const StereoSettings& stereo,
                                            const std::vector<std::string>& inputs) {
   RenderOutputs out;
   for (const std::string& pattern : output_patterns(request, stereo)) {
     if (request.kind == OutputKind::kPngSequence)
-      for (int f = frames.first; f <= frames.last; ++f) out.paths.push_back(sequence_path(pattern, f));
+      for (const int f : frames.frames) out.paths.push_back(sequence_path(pattern, f));
     else out.paths.push_back(pattern);
   }
   if (!cmd.stats.empty()) out.paths.push_back(cmd.stats);
@@ -216,7 +217,7 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
 
 // The size limit on what the command line asks for, and a word about renders that will be slow
 // or show one picture many times.
-bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
+bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
                     const SceneGraph& graph) {
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
@@ -236,9 +237,9 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
   if (frames.count() > 1 && !graph.animated)
     std::fprintf(stderr, "rtcli: warning: %s has no animation: all %d frames will show the same picture\n",
                  cmd.scene.c_str(), frames.count());
-  else if (graph.animated && (frames.first < t.first_frame || frames.last > t.last_frame))
-    std::fprintf(stderr, "rtcli: warning: --frames %d-%d goes beyond the scene's animation, frames %d-%d (at %g fps)\n",
-                 frames.first, frames.last, t.first_frame, t.last_frame, static_cast<double>(t.fps));
+  else if (graph.animated && (frames.first() < t.first_frame || frames.last() > t.last_frame))
+    std::fprintf(stderr, "rtcli: warning: --frames %s goes beyond the scene's animation, frames %d-%d (at %g fps)\n",
+                 frames.text().c_str(), t.first_frame, t.last_frame, static_cast<double>(t.fps));
   return true;
 }
 
@@ -264,7 +265,7 @@ bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks,
          (write(outputs.aa_refined, refined_pixels_in_red(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
 }
 
-void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameRange& frames,
+void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
                    const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used) {
   const char* isa = isa_name(isa_used);  // whose BVH kernels traced the rays
   const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
@@ -276,9 +277,9 @@ void print_summary(const RenderCommand& cmd, const RenderSettings& settings, con
                  rate / 1e6, threads, threads == 1 ? "" : "s", isa);
   } else {
     std::fprintf(stderr,
-                 "rendered %s: frames %d-%d (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
+                 "rendered %s: frames %s (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
                  "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s, %s\n",
-                 cmd.scene.c_str(), frames.first, frames.last, frames.count(), settings.width, settings.height,
+                 cmd.scene.c_str(), frames.text().c_str(), frames.count(), settings.width, settings.height,
                  t.seconds / frames.count(), 1e3 * t.place_seconds / frames.count(), t.seconds + t.place_seconds,
                  load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
                  threads == 1 ? "" : "s", isa);
@@ -344,7 +345,7 @@ int run_render(const RenderCommand& cmd) {
   const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli");
   if (!isa) return kExitBadInput;
   LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files, *isa);
-  if (request->frames_given) options.frame = request->frames.first;
+  if (request->frames_given) options.frame = request->frames.first();
   options.animation = cmd.animation;
   options.fps = cmd.fps;
   options.integrator = cmd.integrator;
@@ -354,7 +355,7 @@ int run_render(const RenderCommand& cmd) {
   const std::optional<LoadedScene> loaded = load_scene(cmd.scene, options, diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
-  const FrameRange frames = frames_to_render(*request, *loaded);
+  const FrameList frames = frames_to_render(*request, *loaded);
   const std::optional<StereoSettings> stereo = stereo_settings(cmd, loaded->scene.camera);
   if (!stereo) return kExitBadInput;
   const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, *stereo, loaded->inputs);

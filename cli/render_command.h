@@ -2,7 +2,7 @@
 //   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
 //   [--shadow-samples N] [--secondary-shadows scaled|full] [--preview]
 //   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
-//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames A-B] [--camera NAME]
+//   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames LIST] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
 //   [--allow-outside-files] [--stats FILE.json] [--isa sse|avx2|avx512|auto]
 //   [--quiet]`
@@ -42,7 +42,7 @@ struct RenderCommand {
   bool no_textures = false;
   bool no_bumps = false;
   std::optional<std::string> texture_filter;
-  std::optional<std::string> frames;               // "A-B" or "N" (--frames), or "N" (--frame)
+  std::optional<std::string> frames;               // "A-B", "A-BxS", "1,5,9-12" (--frames), or "N" (--frame)
   std::optional<std::string> camera;               // a glTF camera by name
   std::optional<std::string> animation;            // a model on its own: one of its animations, by name or index
   std::optional<float> fps;                        // a model on its own: its timeline's frame rate (default 24)

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/frame_output.h"
+#include "cli/frame_list.h"
 #include "cli/frame_renderer.h"
 #include "core/accel/isa.h"
 #include "core/render_settings.h"
@@ -18,7 +18,7 @@ struct RenderStatsInput {
   std::vector<std::string> outputs;  // the files written
   const RenderSettings& settings;
   const StereoSettings& stereo;
-  FrameRange frames;
+  const FrameList& frames;
   const RenderTotals& totals;
   double load_seconds = 0.0;
   Isa isa = Isa::kSse;  // whose BVH kernels traced the rays

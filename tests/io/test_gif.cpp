@@ -4,6 +4,7 @@
 #include <fstream>
 #include <set>
 
+#include "cli/frame_list.h"
 #include "cli/frame_output.h"
 #include "io/image/color_quantiser.h"
 #include "io/image/gif_file.h"
@@ -107,14 +108,28 @@ TEST_CASE("gif: a written animation reads back with its frames, size, delays and
   CHECK(worst < 24);
 }
 
-TEST_CASE("gif: frame ranges and numbered names", "[gif][cli]") {
-  CHECK(parse_frame_range("0-119")->count() == 120);
-  CHECK(parse_frame_range("7")->first == 7);
-  CHECK(parse_frame_range("-5--1")->first == -5);
-  CHECK(parse_frame_range("-5--1")->last == -1);
-  CHECK_FALSE(parse_frame_range("9-3"));
-  CHECK_FALSE(parse_frame_range("a-b"));
-  CHECK_FALSE(parse_frame_range(""));
+TEST_CASE("gif: frame lists and numbered names", "[gif][cli]") {
+  std::string error;
+  const auto frames = [&](const std::string& text) { return parse_frame_list(text, error); };
+  CHECK(frames("0-119")->count() == 120);
+  CHECK(frames("7")->first() == 7);
+  CHECK(frames("-5--1")->first() == -5);
+  CHECK(frames("-5--1")->last() == -1);
+  CHECK(frames("1-120x10")->frames == std::vector<int>{1, 11, 21, 31, 41, 51, 61, 71, 81, 91, 101, 111});
+  CHECK(frames("1,5,9-12")->frames == std::vector<int>{1, 5, 9, 10, 11, 12});
+  CHECK(frames("9-12,1,5,10")->frames == std::vector<int>{1, 5, 9, 10, 11, 12});  // sorted, each once
+  CHECK(frames("1-120x10")->text() == "1-111x10");
+  CHECK(frames("1,5,9-12")->text() == "1,5,9-12");
+  CHECK(frames("0-11")->chunk(0, 4).text() == "0-2");
+  CHECK(frames("0-11")->chunk(3, 4).text() == "9-11");
+  CHECK(frames("0-9")->chunk(0, 4).text() == "0-2");  // 3, 3, 2, 2
+  CHECK(frames("0-9")->chunk(3, 4).text() == "8-9");
+  CHECK(frames("0-2")->chunk(3, 4).frames.empty());
+  for (const char* bad : {"9-3", "a-b", "", "1,,2", "1-5x0", "5x2", "1-2000000", "0-999999", "+3", "1-5x"}) {
+    INFO(bad);
+    CHECK_FALSE(frames(bad));
+  }
+  CHECK_THAT(error, Catch::Contains("1-5x"));
   CHECK(sequence_path("out/frame_####.png", 7) == "out/frame_0007.png");
   CHECK(sequence_path("f#.png", 123) == "f123.png");
   CHECK(sequence_path("f###.png", -4) == "f-004.png");
@@ -143,7 +158,7 @@ TEST_CASE("cli: --frames renders an animated GIF and numbered PNGs; bad ranges a
 
   r = rt::test::rtcli("render scenes/turntable.json --frames 5-2 -o x.gif");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("--frames: expected a frame N or a range A-B"));
+  CHECK_THAT(r.output, Catch::Contains("--frames: \"5-2\": expected A <= B"));
   r = rt::test::rtcli("render scenes/turntable.json --frames 0-9 -o '" + rt::test::output_path("one.png") + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("10 frames need an animated GIF"));
