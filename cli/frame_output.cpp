@@ -13,7 +13,9 @@ std::optional<OutputKind> output_kind(const std::string& path, std::string& erro
   if (ext == ".gif") return OutputKind::kGif;
   if (ext == ".jpg" || ext == ".jpeg") return OutputKind::kJpeg;
   if (ext == ".png") return name.find('#') != std::string::npos ? OutputKind::kPngSequence : OutputKind::kPng;
-  error = "expected an output file name ending in .png or .jpg (or frame_####.png, or .gif for animations), found \"" +
+  if (ext == ".exr") return name.find('#') != std::string::npos ? OutputKind::kExrSequence : OutputKind::kExr;
+  error = "expected an output file name ending in .png, .exr or .jpg (or frame_####.png or frame_####.exr, or .gif "
+          "for animations), found \"" +
           path + "\"";
   return std::nullopt;
 }
@@ -31,6 +33,19 @@ std::string sequence_path(const std::string& pattern, int frame) {
   return (p.parent_path() / name).string();
 }
 
+bool output_is_complete(const std::string& path, OutputKind kind) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0) return false;
+  std::string error;
+  switch (kind) {
+    case OutputKind::kPng:
+    case OutputKind::kPngSequence: return read_png(path, error).has_value();
+    case OutputKind::kExr:
+    case OutputKind::kExrSequence: return exr_is_complete(path);
+    default: return true;
+  }
+}
+
 FrameSink::FrameSink(OutputKind kind, std::string path, int width, int height, float fps, int frames, bool dither,
                      unsigned threads)
     : kind_(kind), path_(std::move(path)), threads_(threads), delays_(gif_frame_delays(frames, fps)) {
@@ -43,6 +58,14 @@ bool FrameSink::add(const Rgb8Image& image, int frame, std::string& error) {
   const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
   if (kind_ == OutputKind::kJpeg ? !write_jpeg(path, image, error) : !write_png(path, image, error, threads_))
     return false;
+  written_.push_back(path);
+  return true;
+}
+
+bool FrameSink::add_exr(const ExrImage& image, int frame, bool full_float, std::string& error) {
+  ++added_;
+  const std::string path = kind_ == OutputKind::kExrSequence ? sequence_path(path_, frame) : path_;
+  if (!write_exr(path, image, full_float, error)) return false;
   written_.push_back(path);
   return true;
 }

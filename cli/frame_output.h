@@ -1,6 +1,6 @@
-// Where rendered frames go: one PNG (or JPEG), a numbered PNG sequence (Blender's convention: the run of
-// '#' in "frame_####.png" becomes the frame number, zero-padded to its length), or an animated
-// GIF. The frames' syntax is cli/frame_list.h.
+// Where rendered frames go: one PNG (or JPEG) or OpenEXR, a numbered PNG or EXR sequence (Blender's
+// convention: the run of '#' in "frame_####.png" becomes the frame number, zero-padded to its
+// length), or an animated GIF. The frames' syntax is cli/frame_list.h.
 #pragma once
 
 #include <memory>
@@ -8,19 +8,29 @@
 #include <string>
 #include <vector>
 
+#include "io/image/exr_file.h"
 #include "io/image/gif_file.h"
 #include "io/image/rgb8_image.h"
 
 namespace rt {
 
-enum class OutputKind { kPng, kPngSequence, kGif, kJpeg };
+enum class OutputKind { kPng, kPngSequence, kGif, kJpeg, kExr, kExrSequence };
 
-// What the file name asks for (.gif, .jpg or .jpeg, or .png with or without a run of '#'), or an error.
+inline bool is_exr(OutputKind k) { return k == OutputKind::kExr || k == OutputKind::kExrSequence; }
+inline bool is_sequence(OutputKind k) { return k == OutputKind::kPngSequence || k == OutputKind::kExrSequence; }
+// One image, not several frames.
+inline bool is_single_image(OutputKind k) { return k == OutputKind::kPng || k == OutputKind::kJpeg || k == OutputKind::kExr; }
+
+// What the file name asks for (.gif, .jpg or .jpeg, or .png or .exr with or without a run of '#'), or an error.
 std::optional<OutputKind> output_kind(const std::string& path, std::string& error);
 
 // "out/frame_####.png", 7 -> "out/frame_0007.png"; more digits than '#'s are written in full.
 // Negative frames get a leading '-'.
 std::string sequence_path(const std::string& pattern, int frame);
+
+// Whether `path` holds a whole output of that kind (--skip-existing): a PNG that decodes, an EXR
+// with all its pixels; a GIF or JPEG that exists (rtcli writes every file whole, by renaming).
+bool output_is_complete(const std::string& path, OutputKind kind);
 
 // Receives the frames of one render in order and writes them: a PNG at once per frame, the GIF
 // when all frames are in. Every file goes through a temporary name and a rename.
@@ -29,6 +39,9 @@ class FrameSink {
   FrameSink(OutputKind kind, std::string path, int width, int height, float fps, int frames, bool dither,
             unsigned threads);
   bool add(const Rgb8Image& image, int frame, std::string& error);
+  // An EXR output's frame (half floats unless `full_float`).
+  bool add_exr(const ExrImage& image, int frame, bool full_float, std::string& error);
+  OutputKind kind() const { return kind_; }
   bool finish(std::string& error);
   // Every file written so far (or, for a GIF, the one file once finished).
   const std::vector<std::string>& written() const { return written_; }

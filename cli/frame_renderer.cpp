@@ -14,9 +14,27 @@
 
 namespace rt {
 
+namespace {
+
+// The integrator that renders each EXR layer's data.
+const char* aov_integrator(const std::string& aov) {
+  return aov == "albedo" ? "albedo" : aov == "normal" ? "aov-normal" : "aov-depth";
+}
+
+ExrLayer layer_of(const Film& film, const std::string& name, std::vector<std::string> channels) {
+  ExrLayer layer{name, std::move(channels), {}};
+  const size_t n = layer.channels.size();
+  layer.values.reserve(film.color.pixels.size() * n);
+  for (const Vec3& p : film.color.pixels)
+    for (size_t c = 0; c < n; ++c) layer.values.push_back(p[static_cast<int>(c)]);
+  return layer;
+}
+
+}  // namespace
+
 std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
-                                 const StereoSettings& stereo, const FrameList& frames, std::vector<FrameSink>& sinks,
-                                 Film& film, RenderTotals& totals) {
+                                 const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
+                                 std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
   const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
   FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
@@ -49,7 +67,8 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
         };
       }
       control.cancel = &interrupt.flag();
-      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass)} : RenderView{};
+      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}}
+                                               : RenderView{nullptr, 0, content.window};
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
       if (totals.last.cancelled) {
@@ -64,11 +83,45 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
       }
       totals.seconds += totals.last.seconds;
       totals.rays += totals.last.rays;
+      totals.pixels_per_pass = static_cast<uint64_t>(film.width()) * static_cast<uint64_t>(film.height());
       for (const uint8_t d : film.depth) totals.refined += d > 0;
       for (const uint16_t n : film.samples) totals.samples += n;
       if (pass == 0 && totals.passes == 2) left = film.color;
     }
 
+    if (is_exr(sinks[0].kind())) {  // linear, with its layers and metadata (no stereo: checked before)
+      ExrImage exr;
+      exr.width = settings.width;
+      exr.height = settings.height;
+      exr.window = film.window();
+      exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
+      for (const std::string& aov : content.aovs) {
+        RenderSettings data = settings;
+        data.integrator = aov_integrator(aov);
+        Film layer;
+        const InterruptWatch interrupt;
+        RenderControl control;
+        control.cancel = &interrupt.flag();
+        const RenderStats s = render(scene, data, layer, control, static_cast<uint32_t>(frame), RenderView{nullptr, 0, content.window});
+        if (s.cancelled) {
+          std::fprintf(stderr, "rtcli: interrupted in frame %d's %s layer; %s\n", frame, aov.c_str(),
+                       sinks[0].written().empty() ? "nothing written" : "the frames before it were written");
+          return 128 + interrupt.signal();
+        }
+        totals.seconds += s.seconds;
+        totals.rays += s.rays;
+        exr.layers.push_back(aov == "depth"    ? layer_of(layer, "depth", {"Z"})
+                             : aov == "normal" ? layer_of(layer, "normal", {"X", "Y", "Z"})
+                                               : layer_of(layer, "albedo", {"R", "G", "B"}));
+      }
+      exr.attributes = render_attributes(content.identity, frame, exr.window);
+      const SignalBlock block;
+      if (!sinks[0].add_exr(exr, frame, content.exr_float, error)) {
+        std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+        return kExitFailure;
+      }
+      continue;
+    }
     const SignalBlock block;  // each temporary file is always renamed or removed
     bool ok = true;
     const DisplayTransform& display = settings.display;

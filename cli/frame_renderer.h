@@ -9,6 +9,7 @@
 #include "cli/frame_list.h"
 #include "cli/frame_output.h"
 #include "cli/render_command.h"
+#include "cli/render_metadata.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
 #include "io/scene_loader.h"
@@ -23,12 +24,22 @@ struct RenderTotals {
   size_t refined = 0;          // pixels refined by adaptive anti-aliasing, all frames and eyes
   uint64_t samples = 0;        // camera samples the pixels average, all frames and eyes
   int passes = 1;              // renders per frame: 2 in stereo
+  uint64_t pixels_per_pass = 0;  // what each render computed: the image, or the window of it
+};
+
+// What each frame's files hold beyond the picture: the part of the image rendered, and for EXR
+// outputs the layers beside the colour and the metadata.
+struct FrameContent {
+  PixelWindow window;             // empty: the whole image
+  std::vector<std::string> aovs;  // EXR layers: albedo, normal, depth
+  bool exr_float = false;         // full floats, not half
+  RenderIdentity identity;        // the EXR metadata (cli/render_metadata.h)
 };
 
 // `sinks`: one output, or two (left, right) for stereo mode "pair". An exit code if it must stop
 // (Ctrl-C, a frame that cannot be written); the film holds the last render.
 std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
-                                 const StereoSettings& stereo, const FrameList& frames, std::vector<FrameSink>& sinks,
-                                 Film& film, RenderTotals& totals);
+                                 const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
+                                 std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals);
 
 }  // namespace rt

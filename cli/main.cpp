@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench/bench_command.h"
+#include "cli/encode_command.h"
+#include "cli/merge_command.h"
 #include "cli/exit_codes.h"
 #include "cli/number_checks.h"
 #include "cli/render_command.h"
@@ -25,7 +27,8 @@ int main(int argc, char** argv) {
       "render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image or an animation");
   render_cmd->add_option("scene", render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
   render_cmd->add_option("-o,--output", render.output,
-                         "Output .png, NAME_####.png or .gif (default: <scene name>.png, or .gif for --frames A-B)");
+                         "Output .png, .exr, .jpg, NAME_####.png, NAME_####.exr or .gif (default: <scene name>.png, or "
+                         ".gif for --frames A-B)");
   render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
       ->check(whole_number(1, 1024));
   render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
@@ -123,6 +126,19 @@ int main(int argc, char** argv) {
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
       "it, so that a downloaded model cannot show other files)";
   render_cmd->add_flag("--allow-outside-files", render.allow_outside_files, outside_help);
+  CLI::Option* crop = render_cmd->add_option(
+      "--crop", render.crop, "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
+  render_cmd
+      ->add_option("--tile", render.tile,
+                   "Render band I of N equal bands of rows (0-based), or auto: this Slurm array task's band")
+      ->excludes(crop);
+  render_cmd->add_option("--chunk", render.chunk,
+                         "Render share I of N of the frames (consecutive, 0-based), or auto: this Slurm array task's");
+  render_cmd->add_flag("--skip-existing", render.skip_existing,
+                       "Do not render frames whose output file is already there and complete (resume a stopped job)");
+  render_cmd->add_flag("--exr-float", render.exr_float, "EXR output: 32-bit float channels (default: half floats)");
+  render_cmd->add_option("--aov", render.aov,
+                         "EXR output: layers beside the colour, any of albedo,normal,depth (comma-separated)");
   render_cmd->add_option("--stats", render.stats,
                          "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
@@ -159,6 +175,23 @@ int main(int argc, char** argv) {
                         "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
   bench_cmd->add_option("--isa", bench.isa, isa_help);
 
+  MergeCommand merge;
+  CLI::App* merge_cmd = app.add_subcommand(
+      "merge", "Put the EXR tiles of a render (render --tile or --crop) together into one PNG or EXR image");
+  merge_cmd->add_option("tiles", merge.tiles, "The tiles (.exr), each once")->required();
+  merge_cmd->add_option("-o,--output", merge.output, "The image: .png or .exr")->required();
+  merge_cmd->add_flag("-q,--quiet", merge.quiet, "Print nothing but errors");
+
+  EncodeCommand encode;
+  CLI::App* encode_cmd =
+      app.add_subcommand("encode", "Make an animated GIF from rendered frames (.png or .exr), in the order given");
+  encode_cmd->add_option("frames", encode.frames, "The frames (.png or .exr)")->required();
+  encode_cmd->add_option("-o,--output", encode.output, "The animation: .gif")->required();
+  encode_cmd->add_option("--fps", encode.fps, "Frames per second (default: the first EXR's, else 24)")
+      ->check(real_number(0.001, 1000.0));
+  encode_cmd->add_flag("--dither", encode.dither, "Floyd-Steinberg dithering (less banding, some noise)");
+  encode_cmd->add_flag("-q,--quiet", encode.quiet, "Print nothing but errors");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -177,6 +210,8 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return run_render(render);
     if (validate_cmd->parsed()) return run_validate(validate);
     if (bench_cmd->parsed()) return run_bench(bench);
+    if (merge_cmd->parsed()) return run_merge(merge);
+    if (encode_cmd->parsed()) return run_encode(encode);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "rtcli: error: out of memory\n");
     return kExitFailure;

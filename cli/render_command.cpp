@@ -13,6 +13,7 @@
 #include "cli/number_checks.h"
 #include "cli/output_checks.h"
 #include "cli/progress_bar.h"
+#include "cli/render_plan.h"
 #include "cli/render_stats.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
@@ -137,10 +138,10 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
     return std::nullopt;
   }
   r.kind = *kind;
-  if (asked->count() > 1 && (r.kind == OutputKind::kPng || r.kind == OutputKind::kJpeg)) {
+  if (asked->count() > 1 && is_single_image(r.kind)) {
     std::fprintf(stderr,
-                 "rtcli: error: %d frames need an animated GIF (-o NAME.gif) or numbered PNGs (-o NAME_####.png), "
-                 "found \"%s\"\n",
+                 "rtcli: error: %d frames need an animated GIF (-o NAME.gif) or numbered files (-o NAME_####.png or "
+                 "NAME_####.exr), found \"%s\"\n",
                  asked->count(), r.output.c_str());
     return std::nullopt;
   }
@@ -166,8 +167,7 @@ std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
 FrameList frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
   if (request.frames_given) return request.frames;
   const Timeline& t = loaded.graph.timeline;
-  const bool one_image = request.kind == OutputKind::kPng || request.kind == OutputKind::kJpeg;
-  if (!one_image && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
+  if (!is_single_image(request.kind) && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
   return FrameList::range(loaded.frame, loaded.frame);
 }
 
@@ -190,7 +190,7 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
                                            const std::vector<std::string>& inputs) {
   RenderOutputs out;
   for (const std::string& pattern : output_patterns(request, stereo)) {
-    if (request.kind == OutputKind::kPngSequence)
+    if (is_sequence(request.kind))
       for (const int f : frames.frames) out.paths.push_back(sequence_path(pattern, f));
     else out.paths.push_back(pattern);
   }
@@ -284,7 +284,7 @@ void print_summary(const RenderCommand& cmd, const RenderSettings& settings, con
                  load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
                  threads == 1 ? "" : "s", isa);
   }
-  const double pixels = static_cast<double>(pixel_count(settings)) * frames.count() * t.passes;
+  const double pixels = static_cast<double>(t.pixels_per_pass) * frames.count() * t.passes;
   if (!integrator_samples_pixels(settings.integrator)) {
     std::fprintf(stderr, "  %.2f rays per pixel (%.2f camera rays), %.1f%% of pixels refined (anti-aliasing %s)\n",
                  static_cast<double>(t.rays.total()) / pixels, static_cast<double>(t.rays[RayKind::kCamera]) / pixels,
@@ -363,16 +363,22 @@ int run_render(const RenderCommand& cmd) {
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   const RenderSettings settings = with_overrides(loaded->settings, cmd);
   if (!check_settings(cmd, settings, frames, loaded->graph)) return kExitBadInput;
+  const std::optional<RenderPlan> plan =
+      plan_render(cmd, request->kind, output_patterns(*request, *stereo), frames, settings, *stereo, *loaded);
+  if (!plan) return kExitBadInput;
+  if (!plan->skipped.empty() && !cmd.quiet) std::fprintf(stderr, "rtcli: %s\n", plan->skipped.c_str());
+  if (plan->frames.frames.empty()) return kExitSuccess;
 
   // Render the frames.
   std::vector<FrameSink> sinks;
   for (const std::string& pattern : output_patterns(*request, *stereo))
     sinks.emplace_back(request->kind, pattern, stereo_image_width(stereo->mode, settings.width),
-                       stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps, frames.count(),
+                       stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps, plan->frames.count(),
                        cmd.dither, resolve_thread_count(settings.threads));
   RenderTotals totals;
   Film film;
-  if (const std::optional<int> stop = render_frames(cmd, *loaded, settings, *stereo, frames, sinks, film, totals))
+  if (const std::optional<int> stop =
+          render_frames(cmd, *loaded, settings, *stereo, plan->frames, plan->content, sinks, film, totals))
     return *stop;
 
   // Write and summarise.
@@ -388,13 +394,13 @@ int run_render(const RenderCommand& cmd) {
     std::string error;
     const SignalBlock block;
     if (!write_render_stats(
-            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
+            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, plan->frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }
   }
   if (!cmd.quiet) {
-    print_summary(cmd, settings, frames, totals, load_seconds, written, loaded->scene.bvh.isa());
+    print_summary(cmd, settings, plan->frames, totals, load_seconds, written, loaded->scene.bvh.isa());
     if (!cmd.stats.empty()) std::printf("wrote %s (the render's figures)\n", cmd.stats.c_str());
     if (cmd.samples_debug)
       std::printf("wrote %s (samples per pixel: black 0, blue, green, orange, white %d)\n",

@@ -5,7 +5,8 @@
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames LIST] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
 //   [--allow-outside-files] [--stats FILE.json] [--isa sse|avx2|avx512|auto]
-//   [--quiet]`
+//   [--crop x0,y0,x1,y1 | --tile I/N|auto] [--chunk I/N|auto] [--skip-existing] [--exr-float]
+//   [--aov albedo,normal,depth] [--quiet]`
 #pragma once
 
 #include <cstdint>
@@ -51,6 +52,11 @@ struct RenderCommand {
   bool dither = false;                             // GIF frames: Floyd-Steinberg error diffusion
   bool allow_outside_files = false;                // glTF files may read images and buffers outside their folder
   std::string stats;  // --stats FILE: the render's figures as JSON (cli/render_stats.h); empty: none
+  // Part of the render (cli/render_share.h): a window of the image, a band of rows, a share of the frames.
+  std::optional<std::string> crop, tile, chunk;
+  bool skip_existing = false;      // frames whose output is there and complete are not rendered again
+  bool exr_float = false;          // EXR output: 32-bit floats (default half)
+  std::optional<std::string> aov;  // EXR output: layers beside the colour, any of albedo,normal,depth
   bool quiet = false;
 };
 

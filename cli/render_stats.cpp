@@ -8,7 +8,7 @@ namespace rt {
 
 std::string render_stats_json(const RenderStatsInput& in) {
   const RenderTotals& t = in.totals;
-  const double pixels = static_cast<double>(pixel_count(in.settings)) * in.frames.count() * t.passes;
+  const double pixels = static_cast<double>(t.pixels_per_pass) * in.frames.count() * t.passes;
   Json rays = Json::object();
   for (size_t k = 0; k < kRayKindCount; ++k) rays[kRayKindNames[k]] = t.rays.count[k];
   rays["total"] = t.rays.total();

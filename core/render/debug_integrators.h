@@ -4,6 +4,9 @@
 //   depth    distance from the camera, linear from white at the nearest point of the scene's
 //            bounds to black at their farthest corner;
 //   albedo   the evaluated diffuse colour (kd, less what the material transmits).
+// And the data an EXR file's layers hold (--aov), not offered as views: the shading normal as it
+// is (world space, unit length), and the distance along the camera ray (1e10 where nothing is
+// hit, as Blender writes it).
 // An area light's face seen first is drawn as a surface would be (its normal, its coordinates
 // along its edges, its distance; no albedo: black). A ray that hits nothing is black. One
 // class, parameterised by the view of the hit.
@@ -21,12 +24,12 @@ struct DebugHit {
   bool light = false;     // an area light's face: `surface` has its normal and uv, no material
 };
 
-template <Vec3 (*View)(const DebugHit&, const Scene&)>
+template <Vec3 (*View)(const DebugHit&, const Scene&), float kMiss = 0.0f>
 class DebugIntegrator final : public Integrator {
  public:
   Vec3 radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int /*depth*/, TraceContext& ctx) const override {
     DebugHit h{camera_ray, {}, 0.0f, false};
-    if (!met.surface && !met.light) return Vec3(0.0f);
+    if (!met.surface && !met.light) return Vec3(kMiss);
     h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
     if (met.light) {
       h.light = true;
@@ -65,9 +68,14 @@ inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
   return evaluate_surface(scene.materials()[h.surface.material], h.surface, h.ray.direction, scene.textures()).diffuse;
 }
 
+inline Vec3 normal_data(const DebugHit& h, const Scene&) { return h.surface.shading_normal; }
+inline Vec3 distance_data(const DebugHit& h, const Scene&) { return Vec3(h.distance); }
+
 using NormalsIntegrator = DebugIntegrator<normals_view>;
 using UvIntegrator = DebugIntegrator<uv_view>;
 using DepthIntegrator = DebugIntegrator<depth_view>;
 using AlbedoIntegrator = DebugIntegrator<albedo_view>;
+using NormalDataIntegrator = DebugIntegrator<normal_data>;
+using DistanceDataIntegrator = DebugIntegrator<distance_data, 1e10f>;
 
 }  // namespace rt

@@ -1,0 +1,88 @@
+#include "cli/render_share.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <vector>
+
+namespace rt {
+namespace {
+
+std::optional<long> whole(const std::string& s) {
+  if (s.empty() || s.size() > 9 || s[0] == '+' || s[0] == ' ') return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (errno != 0 || end != s.c_str() + s.size()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+EnvironmentLookup process_environment() {
+  return [](const std::string& name) -> std::optional<std::string> {
+    const char* v = std::getenv(name.c_str());
+    return v ? std::optional<std::string>(v) : std::nullopt;
+  };
+}
+
+std::optional<Share> parse_share(const std::string& text, const char* option, const EnvironmentLookup& env,
+                                 std::string& error) {
+  if (text == "auto") {
+    const auto id = env("SLURM_ARRAY_TASK_ID"), count = env("SLURM_ARRAY_TASK_COUNT");
+    const auto min = env("SLURM_ARRAY_TASK_MIN");
+    if (!id || !count) {
+      error = std::string(option) +
+              " auto: expected a Slurm job array's SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT, found none (give "
+              "I/N outside an array)";
+      return std::nullopt;
+    }
+    const auto i = whole(*id), n = whole(*count), m = min ? whole(*min) : std::optional<long>(0);
+    if (!i || !n || !m || *n < 1 || *i - *m < 0 || *i - *m >= *n) {
+      error = std::string(option) + " auto: SLURM_ARRAY_TASK_ID " + *id + " less SLURM_ARRAY_TASK_MIN " +
+              (min ? *min : std::string("0")) + " is not a task of SLURM_ARRAY_TASK_COUNT " + *count +
+              " (auto expects an array of consecutive indices)";
+      return std::nullopt;
+    }
+    return Share{static_cast<int>(*i - *m), static_cast<int>(*n)};
+  }
+  const size_t slash = text.find('/');
+  const auto i = slash == std::string::npos ? std::nullopt : whole(text.substr(0, slash));
+  const auto n = slash == std::string::npos ? std::nullopt : whole(text.substr(slash + 1));
+  if (!i || !n || *n < 1 || *n > 100000 || *i < 0 || *i >= *n) {
+    error = std::string(option) + ": expected I/N with 0 <= I < N <= 100000, or auto, found \"" + text + "\"";
+    return std::nullopt;
+  }
+  return Share{static_cast<int>(*i), static_cast<int>(*n)};
+}
+
+std::optional<PixelWindow> parse_crop(const std::string& text, int width, int height, std::string& error) {
+  std::vector<long> v;
+  size_t start = 0;
+  while (v.size() < 5) {
+    const size_t comma = text.find(',', start);
+    const auto n = whole(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (!n) break;
+    v.push_back(*n);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (v.size() != 4) {
+    error = "--crop: expected x0,y0,x1,y1 (four whole numbers, pixels, x1 and y1 excluded), found \"" + text + "\"";
+    return std::nullopt;
+  }
+  const PixelWindow w{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
+  if (v[0] < 0 || v[1] < 0 || v[2] > width || v[3] > height || v[2] <= v[0] || v[3] <= v[1]) {
+    error = "--crop: expected 0 <= x0 < x1 <= " + std::to_string(width) + " and 0 <= y0 < y1 <= " +
+            std::to_string(height) + " (the image is " + size + "), found \"" + text + "\"";
+    return std::nullopt;
+  }
+  return w;
+}
+
+PixelWindow tile_window(const Share& share, int width, int height) {
+  const int64_t h = height, n = share.count, i = share.index;
+  return PixelWindow{0, static_cast<int>(i * h / n), width, static_cast<int>((i + 1) * h / n)};
+}
+
+}  // namespace rt

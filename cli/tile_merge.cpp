@@ -1,0 +1,169 @@
+#include "cli/tile_merge.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "core/render_settings.h"
+
+namespace rt {
+namespace {
+
+// What must agree between tiles, beyond the image's size and layers.
+constexpr const char* kSameKeys[] = {"rtcli:version", "rtcli:scene_hash", "rtcli:settings_hash", "rtcli:frame"};
+
+std::string attribute(const ExrImage& image, const std::string& key) {
+  const auto it = image.attributes.find(key);
+  return it == image.attributes.end() ? "(none)" : it->second;
+}
+
+// The first "key=value;" entry of two settings texts that differs, as "key: a against b".
+std::string settings_difference(const std::string& a, const std::string& b) {
+  size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const size_t ei = a.find(';', i), ej = b.find(';', j);
+    const std::string x = a.substr(i, ei - i), y = b.substr(j, ej - j);
+    if (x != y) return x + " against " + y;
+    if (ei == std::string::npos || ej == std::string::npos) break;
+    i = ei + 1;
+    j = ej + 1;
+  }
+  return "(the same text)";
+}
+
+std::string layout(const ExrImage& image) {
+  std::string out;
+  for (const ExrLayer& l : image.layers) {
+    for (const std::string& c : l.channels) out += (out.empty() ? "" : ",") + (l.name.empty() ? c : l.name + "." + c);
+  }
+  return out;
+}
+
+std::string window_text(const PixelWindow& w) {
+  return "x " + std::to_string(w.x0) + "-" + std::to_string(w.x1 - 1) + ", y " + std::to_string(w.y0) + "-" +
+         std::to_string(w.y1 - 1);
+}
+
+bool overlap(const PixelWindow& a, const PixelWindow& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+// The tiles' bands "I/N" when every tile is one of N: the missing ones, by number and rows.
+void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::string>& problems) {
+  int count = -1;
+  std::vector<bool> present;
+  for (const ExrImage& t : tiles) {
+    const std::string band = attribute(t, "rtcli:tile");
+    const size_t slash = band.find('/');
+    if (slash == std::string::npos) return;
+    const int i = std::atoi(band.substr(0, slash).c_str()), n = std::atoi(band.substr(slash + 1).c_str());
+    if (count >= 0 && n != count) return;
+    count = n;
+    if (n < 1 || i < 0 || i >= n) return;
+    present.resize(static_cast<size_t>(n), false);
+    present[static_cast<size_t>(i)] = true;
+  }
+  const ExrImage& any = tiles.front();
+  for (int i = 0; i < count; ++i) {
+    if (present[static_cast<size_t>(i)]) continue;
+    const int64_t h = any.height;
+    const int y0 = static_cast<int>(i * h / count), y1 = static_cast<int>((i + 1) * h / count);
+    problems.push_back("tile " + std::to_string(i) + "/" + std::to_string(count) + " (rows " + std::to_string(y0) +
+                       "-" + std::to_string(y1 - 1) + ") is missing: render it with --tile " + std::to_string(i) + "/" +
+                       std::to_string(count));
+  }
+}
+
+}  // namespace
+
+std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems) {
+  std::vector<ExrImage> tiles;
+  for (const std::string& path : paths) {
+    std::string error;
+    auto tile = read_exr(path, kMaxPixels, error);
+    if (!tile) problems.push_back(error);
+    else tiles.push_back(std::move(*tile));
+  }
+  if (!problems.empty() || tiles.empty()) return std::nullopt;
+
+  // The same render.
+  const ExrImage& first = tiles.front();
+  for (size_t k = 1; k < tiles.size(); ++k) {
+    const ExrImage& t = tiles[k];
+    const std::string against = paths[k] + " against " + paths[0] + ": ";
+    if (t.width != first.width || t.height != first.height)
+      problems.push_back(against + "an image of " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                         " against " + std::to_string(first.width) + "x" + std::to_string(first.height));
+    if (layout(t) != layout(first))
+      problems.push_back(against + "channels " + layout(t) + " against " + layout(first));
+    if (t.full_float != first.full_float)
+      problems.push_back(against + (t.full_float ? "float" : "half") + " channels against " +
+                         (first.full_float ? "float" : "half"));
+    for (const char* key : kSameKeys) {
+      if (attribute(t, key) == attribute(first, key)) continue;
+      std::string why = against + "a different " + std::string(key).substr(6) + " (" + attribute(t, key) + " against " +
+                        attribute(first, key) + ")";
+      if (std::string(key) == "rtcli:settings_hash")
+        why += ": " + settings_difference(attribute(t, "rtcli:settings"), attribute(first, "rtcli:settings"));
+      if (std::string(key) == "rtcli:scene_hash") why += ": the scene or a file it reads changed between the renders";
+      problems.push_back(why);
+    }
+  }
+  if (!problems.empty()) return std::nullopt;
+
+  // Exactly once.
+  for (size_t a = 0; a < tiles.size(); ++a)
+    for (size_t b = a + 1; b < tiles.size(); ++b)
+      if (overlap(tiles[a].window, tiles[b].window))
+        problems.push_back(paths[a] + " (" + window_text(tiles[a].window) + ") and " + paths[b] + " (" +
+                           window_text(tiles[b].window) + ") overlap");
+  if (!problems.empty()) return std::nullopt;
+  uint64_t covered = 0;
+  for (const ExrImage& t : tiles) covered += t.window.pixels();
+  const uint64_t all = static_cast<uint64_t>(first.width) * static_cast<uint64_t>(first.height);
+  if (covered != all) {
+    name_missing_bands(tiles, problems);
+    if (problems.empty()) {
+      // The first row with a pixel no tile holds, and its run.
+      for (int y = 0; y < first.height && problems.empty(); ++y) {
+        std::vector<std::pair<int, int>> spans;
+        for (const ExrImage& t : tiles)
+          if (y >= t.window.y0 && y < t.window.y1) spans.emplace_back(t.window.x0, t.window.x1);
+        std::sort(spans.begin(), spans.end());
+        int x = 0;
+        for (const auto& [x0, x1] : spans) {
+          if (x0 > x) break;
+          x = std::max(x, x1);
+        }
+        if (x < first.width)
+          problems.push_back("no tile holds pixel (" + std::to_string(x) + ", " + std::to_string(y) + "); the tiles cover " +
+                             std::to_string(covered) + " of the image's " + std::to_string(all) + " pixels");
+      }
+    }
+    return std::nullopt;
+  }
+
+  // Put together.
+  ExrImage out;
+  out.width = first.width;
+  out.height = first.height;
+  out.window = PixelWindow::whole(first.width, first.height);
+  out.full_float = first.full_float;
+  out.attributes = first.attributes;
+  out.attributes["rtcli:crop"] = "0,0," + std::to_string(first.width) + "," + std::to_string(first.height);
+  out.attributes.erase("rtcli:tile");
+  for (const ExrLayer& l : first.layers) out.layers.push_back(ExrLayer{l.name, l.channels, std::vector<float>(all * l.channels.size())});
+  for (const ExrImage& t : tiles) {
+    const PixelWindow& w = t.window;
+    for (size_t k = 0; k < out.layers.size(); ++k) {
+      const size_t n = out.layers[k].channels.size();
+      for (int y = w.y0; y < w.y1; ++y) {
+        const float* from = t.layers[k].values.data() + static_cast<size_t>(y - w.y0) * static_cast<size_t>(w.width()) * n;
+        float* to = out.layers[k].values.data() + (static_cast<size_t>(y) * static_cast<size_t>(out.width) + static_cast<size_t>(w.x0)) * n;
+        std::copy(from, from + static_cast<size_t>(w.width()) * n, to);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace rt
