@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cli/render_command.h"
-#include "core/render/pixel_window.h"
+#include "core/pixel_window.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
 

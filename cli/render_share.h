@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "core/render/pixel_window.h"
+#include "core/pixel_window.h"
 
 namespace rt {
 

@@ -10,7 +10,7 @@
 
 #include "core/image.h"
 #include "core/render/film.h"
-#include "core/render/pixel_window.h"
+#include "core/pixel_window.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
 #include "core/scene.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/render/pixel_window.h"
+#include "core/pixel_window.h"
 
 namespace rt {
 

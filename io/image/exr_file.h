@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/render/pixel_window.h"
+#include "core/pixel_window.h"
 
 namespace rt {
 

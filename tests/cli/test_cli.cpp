@@ -172,7 +172,7 @@ TEST_CASE("cli: an output that cannot be written is refused before rendering", "
   CHECK_THAT(r.output, Catch::Contains("does not exist"));
   r = rtcli("render scenes/default.json -o '" + output_path("image.bmp") + "'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains(".png or .jpg"));
+  CHECK_THAT(r.output, Catch::Contains(".png, .exr or .jpg"));
 }
 
 TEST_CASE("cli: bench runs on a small model, and replays the rays it saved", "[cli][bench]") {
