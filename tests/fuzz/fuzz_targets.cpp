@@ -157,7 +157,7 @@ std::string scene_json(const uint8_t* data, size_t size) {
   if (const Camera& camera = scene->scene.camera; camera.stereo.enabled()) {
     const Camera right = camera.eye_camera(1);
     Image second;
-    render(scene->scene, settings, second, {}, 0, RenderView{&right, 1});
+    render(scene->scene, settings, second, {}, 0, RenderView{&right, 1, {}});
     if (camera.stereo.mode != StereoMode::kPair) compose_stereo(image, second, camera.stereo);
   }
   return "";

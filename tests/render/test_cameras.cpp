@@ -150,8 +150,8 @@ TEST_CASE("stereo: the left eye is the mono render from the left eye's place and
   settings.threads = 2;
   const Camera left = scene.camera.eye_camera(-1), right = scene.camera.eye_camera(1);
   Image left_image, right_image, mono_image;
-  render(scene, settings, left_image, {}, 0, RenderView{&left, 0});
-  render(scene, settings, right_image, {}, 0, RenderView{&right, 1});
+  render(scene, settings, left_image, {}, 0, RenderView{&left, 0, {}});
+  render(scene, settings, right_image, {}, 0, RenderView{&right, 1, {}});
   Scene mono = scene;
   mono.camera = left;
   render(mono, settings, mono_image);
