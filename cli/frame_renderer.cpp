@@ -98,6 +98,10 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
       for (const std::string& aov : content.aovs) {
         RenderSettings data = settings;
         data.integrator = aov_integrator(aov);
+        // Albedo and normal are averaged as the colour is (what denoisers expect); the depth is
+        // one ray through the pixel's centre, as Blender's Z pass, since an average of a near
+        // surface and the background's 1e10 is no distance at all.
+        if (aov == "depth") data.antialias.mode = "none";
         Film layer;
         const InterruptWatch interrupt;
         RenderControl control;
