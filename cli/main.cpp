@@ -7,6 +7,7 @@
 
 #include "cli/bench/bench_command.h"
 #include "cli/encode_command.h"
+#include "cli/farm/farm_command.h"
 #include "cli/merge_command.h"
 #include "cli/exit_codes.h"
 #include "cli/number_checks.h"
@@ -192,6 +193,33 @@ int main(int argc, char** argv) {
   encode_cmd->add_flag("--dither", encode.dither, "Floyd-Steinberg dithering (less banding, some noise)");
   encode_cmd->add_flag("-q,--quiet", encode.quiet, "Print nothing but errors");
 
+  CLI::App* farm_cmd = app.add_subcommand("farm", "Render on a cluster: write and submit Slurm jobs, follow them");
+  farm_cmd->require_subcommand(1);
+  FarmSlurmCommand farm_slurm;
+  CLI::App* slurm_cmd = farm_cmd->add_subcommand(
+      "slurm", "Write, print and submit (sbatch) a Slurm job array rendering SCENE in N tasks, then the merge or "
+               "encode; options not listed here are passed to every task's rtcli render");
+  slurm_cmd->add_option("scene", farm_slurm.scene, "Scene file (.json) or glTF model")->required();
+  slurm_cmd->add_option("-o,--output", farm_slurm.output, "The result: .png/.exr (tiles), .gif or NAME_####.png/.exr (frames)")
+      ->required();
+  slurm_cmd->add_option("--tasks", farm_slurm.tasks, "Array tasks: bands of rows for a still, frame chunks for an animation")
+      ->required()
+      ->check(whole_number(1, 10000));
+  slurm_cmd->add_option("--cpus", farm_slurm.cpus, "CPUs per task (--cpus-per-task; rtcli --threads)")
+      ->check(whole_number(1, 1024))
+      ->capture_default_str();
+  slurm_cmd->add_option("--partition", farm_slurm.partition, "Slurm partition");
+  slurm_cmd->add_option("--time", farm_slurm.time, "Time limit per task, Slurm's format (e.g. 1:00:00)");
+  slurm_cmd->add_option("--farm-dir", farm_slurm.farm_dir,
+                        "Folder for the job scripts, tiles or frames, and logs, on the shared file system (default: "
+                        "OUT's name + -farm)");
+  slurm_cmd->add_flag("--dry-run", farm_slurm.dry_run, "Write and print the scripts; submit nothing");
+  slurm_cmd->add_flag("-q,--quiet", farm_slurm.quiet, "Do not print the scripts");
+  slurm_cmd->allow_extras();
+  FarmStatusCommand farm_status;
+  CLI::App* status_cmd = farm_cmd->add_subcommand("status", "Show a submitted farm render's jobs, parts done and task times");
+  status_cmd->add_option("farm_dir", farm_status.farm_dir, "The farm folder (rtcli farm slurm --farm-dir)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -212,6 +240,11 @@ int main(int argc, char** argv) {
     if (bench_cmd->parsed()) return run_bench(bench);
     if (merge_cmd->parsed()) return run_merge(merge);
     if (encode_cmd->parsed()) return run_encode(encode);
+    if (slurm_cmd->parsed()) {
+      farm_slurm.render_options = slurm_cmd->remaining();
+      return run_farm_slurm(farm_slurm);
+    }
+    if (status_cmd->parsed()) return run_farm_status(farm_status);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "rtcli: error: out of memory\n");
     return kExitFailure;
