@@ -2,13 +2,13 @@
 # Installs the Debian 12 packages rtcli needs, if any are missing: with apt-get as root, through
 # sudo otherwise. If neither works it lists the packages to install and fails. Extra package
 # names given as arguments are installed too (tools/fuzz.sh and --sanitize add clang's).
-# With --tests first, the optional test tools (chromium, for the gallery's browser test) are tried
-# after them; a failure to install one is said but does not stop the build (that test then says
-# it is skipped). tools/test.sh passes it; quickstart and the fuzzers do not need them.
+# With --tests first, the optional test tools (chromium, for the gallery's browser test; slurm-wlm
+# and munge, for the farm test on a one-node cluster) are tried after them; a failure to install
+# one is said but does not stop the build (that test then says it is skipped). tools/test.sh passes it; quickstart and the fuzzers do not need them.
 set -euo pipefail
 optional=()
 if [ "${1:-}" = "--tests" ]; then
-  optional=(chromium)
+  optional=(chromium slurm-wlm munge)
   shift
 fi
 
@@ -45,5 +45,5 @@ if ! { "${run[@]}" apt-get update -qq &&
 fi
 if [ ${#optional_missing[@]} -gt 0 ] &&
    ! DEBIAN_FRONTEND=noninteractive "${run[@]}" apt-get install -y -qq --no-install-recommends "${optional_missing[@]}"; then
-  echo "rtcli: note: could not install ${optional_missing[*]} (optional: the gallery's browser test is skipped)" >&2
+  echo "rtcli: note: could not install ${optional_missing[*]} (optional: the gallery's browser test or the Slurm farm test is skipped)" >&2
 fi
