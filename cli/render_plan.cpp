@@ -4,6 +4,7 @@
 
 #include "cli/render_metadata.h"
 #include "cli/render_share.h"
+#include "core/render/band_split.h"
 
 namespace rt {
 namespace {
@@ -66,7 +67,8 @@ std::optional<RenderPlan> plan_render(const RenderCommand& cmd, OutputKind kind,
       return fail("--tile " + *cmd.tile + ": " + std::to_string(share->count) + " bands of rows for an image " +
                   std::to_string(settings.height) + " rows high; give at most one band a row"),
              std::nullopt;
-    plan.content.window = tile_window(*share, settings.width, settings.height);
+    plan.content.window = cost_balanced_bands(loaded.scene, settings, share->count,
+                                              static_cast<uint32_t>(loaded.frame))[static_cast<size_t>(share->index)];
     plan.content.identity.tile = std::to_string(share->index) + "/" + std::to_string(share->count);
   }
   if (cmd.chunk) {

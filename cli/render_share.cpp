@@ -80,9 +80,4 @@ std::optional<PixelWindow> parse_crop(const std::string& text, int width, int he
   return w;
 }
 
-PixelWindow tile_window(const Share& share, int width, int height) {
-  const int64_t h = height, n = share.count, i = share.index;
-  return PixelWindow{0, static_cast<int>(i * h / n), width, static_cast<int>((i + 1) * h / n)};
-}
-
 }  // namespace rt

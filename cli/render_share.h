@@ -1,8 +1,7 @@
 // Which part of a render this process does, for renders split across processes or machines:
 //   --crop x0,y0,x1,y1  pixels [x0, x1) x [y0, y1) of the image;
-//   --tile I/N          band I (0-based) of N horizontal bands of whole rows, their heights
-//                       differing by at most one row (so each band costs about 1/N of the image
-//                       where the scene is spread evenly; docs/cluster.md says how to choose N);
+//   --tile I/N          band I (0-based) of N horizontal bands of whole rows of about equal cost
+//                       (core/render/band_split.h; docs/cluster.md says how to choose N);
 //   --chunk I/N         share I of N of the frames, consecutive, sizes differing by at most one;
 //   auto for I/N        the share of this Slurm array task: I = SLURM_ARRAY_TASK_ID -
 //                       SLURM_ARRAY_TASK_MIN, N = SLURM_ARRAY_TASK_COUNT.
@@ -31,8 +30,5 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
 
 // "x0,y0,x1,y1" inside a width x height image, not empty; nothing, with `error`, otherwise.
 std::optional<PixelWindow> parse_crop(const std::string& text, int width, int height, std::string& error);
-
-// Band `share` of the image's rows.
-PixelWindow tile_window(const Share& share, int width, int height);
 
 }  // namespace rt

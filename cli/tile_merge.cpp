@@ -47,10 +47,12 @@ bool overlap(const PixelWindow& a, const PixelWindow& b) {
   return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
-// The tiles' bands "I/N" when every tile is one of N: the missing ones, by number and rows.
+// The tiles' bands "I/N" when every tile is one of N: the missing ones, by number and by the rows
+// between their neighbours.
 void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::string>& problems) {
   int count = -1;
   std::vector<bool> present;
+  std::vector<PixelWindow> windows;
   for (const ExrImage& t : tiles) {
     const std::string band = attribute(t, "rtcli:tile");
     const size_t slash = band.find('/');
@@ -60,16 +62,20 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
     count = n;
     if (n < 1 || i < 0 || i >= n) return;
     present.resize(static_cast<size_t>(n), false);
+    windows.resize(static_cast<size_t>(n));
     present[static_cast<size_t>(i)] = true;
+    windows[static_cast<size_t>(i)] = t.window;
   }
-  const ExrImage& any = tiles.front();
+  const int height = tiles.front().height;
   for (int i = 0; i < count; ++i) {
     if (present[static_cast<size_t>(i)]) continue;
-    const int64_t h = any.height;
-    const int y0 = static_cast<int>(i * h / count), y1 = static_cast<int>((i + 1) * h / count);
-    problems.push_back("tile " + std::to_string(i) + "/" + std::to_string(count) + " (rows " + std::to_string(y0) +
-                       "-" + std::to_string(y1 - 1) + ") is missing: render it with --tile " + std::to_string(i) + "/" +
-                       std::to_string(count));
+    // The rows from the band above's end (or the top) to the band below's start (or the bottom).
+    int y0 = i == 0 ? 0 : -1, y1 = i == count - 1 ? height : -1;
+    if (i > 0 && present[static_cast<size_t>(i) - 1]) y0 = windows[static_cast<size_t>(i) - 1].y1;
+    if (i + 1 < count && present[static_cast<size_t>(i) + 1]) y1 = windows[static_cast<size_t>(i) + 1].y0;
+    const std::string rows = y0 >= 0 && y1 > y0 ? " (rows " + std::to_string(y0) + "-" + std::to_string(y1 - 1) + ")" : "";
+    problems.push_back("tile " + std::to_string(i) + "/" + std::to_string(count) + rows +
+                       " is missing: render it with --tile " + std::to_string(i) + "/" + std::to_string(count));
   }
 }
 

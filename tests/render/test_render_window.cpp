@@ -2,6 +2,7 @@
 // pixel sampler and both integrators, whatever the window's corner, size and tile size.
 #include <catch2/catch.hpp>
 
+#include "core/render/band_split.h"
 #include "core/render/renderer.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
@@ -62,6 +63,34 @@ TEST_CASE("a window of the image renders the whole render's pixels", "[render][w
       }
     }
   }
+}
+
+TEST_CASE("bands of rows follow the cumulative cost", "[render][window]") {
+  CHECK(band_edges({1, 1, 1, 1}, 8, 2) == std::vector<int>{0, 4, 8});
+  CHECK(band_edges({3, 1, 1, 1}, 4, 2) == std::vector<int>{0, 1, 4});     // half the cost in the first row
+  CHECK(band_edges({0, 0, 6, 0}, 8, 3) == std::vector<int>{0, 5, 6, 8});  // all of it in rows 4-5
+  CHECK(band_edges({0, 0}, 9, 3) == std::vector<int>{0, 3, 6, 9});        // nothing measured: equal heights
+  CHECK(band_edges({5}, 3, 3) == std::vector<int>{0, 1, 2, 3});           // a row each at least
+}
+
+TEST_CASE("cost-balanced bands cover the image once, the same every time", "[render][window]") {
+  const LoadedScene s = load(rt::test::source_path("scenes/primitives.json"));
+  RenderSettings settings = s.settings;
+  settings.width = 160;
+  settings.height = 90;
+  const std::vector<PixelWindow> bands = cost_balanced_bands(s.scene, settings, 7);
+  REQUIRE(bands.size() == 7);
+  int y = 0;
+  for (const PixelWindow& b : bands) {
+    CHECK(b.x0 == 0);
+    CHECK(b.x1 == 160);
+    CHECK(b.y0 == y);
+    CHECK(b.y1 > b.y0);
+    y = b.y1;
+  }
+  CHECK(y == 90);
+  settings.threads = 1;
+  CHECK(cost_balanced_bands(s.scene, settings, 7) == bands);
 }
 
 TEST_CASE("a window outside the image is refused", "[render][window]") {
