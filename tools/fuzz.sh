@@ -13,6 +13,7 @@
 #   gltf_image    the same bytes as a glTF image in a buffer view, used in every material slot
 #   extras_image  the same bytes as the image file a glTF material's rtcli_bump extras name
 #   environment   Radiance .hdr bytes: decode, build the sampling distribution, sample and look up
+#   exr           OpenEXR bytes as a tile for rtcli merge: read every channel and attribute, merge
 #
 #   tools/fuzz.sh all SECONDS    every target in turn, SECONDS each
 #
@@ -22,7 +23,7 @@
 # Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-targets="scene gltf bvh texture texture_file gltf_image extras_image environment"
+targets="scene gltf bvh texture texture_file gltf_image extras_image environment exr"
 if [ $# -lt 2 ] || ! [[ " $targets all " == *" $1 "* ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
   echo "usage: tools/fuzz.sh ${targets// /|}|all SECONDS [libFuzzer options...]" >&2
   exit 2
@@ -55,6 +56,7 @@ if [ -z "$(ls -A "$corpus")" ]; then
     gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
     bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
     environment) seed "$root"/scenes/textures/*.hdr ;;
+    exr) seed "$root"/tests/fuzz/regressions/exr/* ;;
     texture | texture_file | gltf_image | extras_image)
       seed "$root"/tests/data/images/* "$root"/tests/data/bad/textures/*.png "$root"/tests/fuzz/regressions/texture/*
       if [ "$target" = texture ]; then seed "$root"/scenes/textures/*.png "$root"/../shared/gltf/**/*.png; fi ;;

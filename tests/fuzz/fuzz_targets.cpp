@@ -13,7 +13,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/tile_merge.h"
 #include "core/lights/environment.h"
+#include "io/image/exr_file.h"
 #include "io/image/hdr_file.h"
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
@@ -418,6 +420,30 @@ std::string environment_image(const uint8_t* data, size_t size) {
   }
   for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1e-30f, 1, 0), Vec3(0, 0, -1)})
     if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d))) return "radiance or pdf at a pole is not finite";
+  return "";
+}
+
+std::string exr_tile(const uint8_t* data, size_t size) {
+  // OpenEXR reads files: the bytes go to one of this process's own.
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("rtcli-fuzz-exr-" + std::to_string(::getpid()) + ".exr");
+  write_bytes(path, data, size);
+  std::string error;
+  const auto image = read_exr(path.string(), uint64_t{1} << 20, error);
+  if (image) {
+    if (!image->window.inside(image->width, image->height) || image->window.empty())
+      return "an EXR read with its data window outside its image";
+    for (const ExrLayer& l : image->layers)
+      if (l.values.size() != image->window.pixels() * l.channels.size()) return "an EXR layer with the wrong size";
+  } else if (error.empty()) {
+    return "read_exr failed without saying why";
+  }
+  std::vector<std::string> problems;
+  const auto merged = merge_tiles({path.string()}, problems);
+  if (!merged && problems.empty()) return "merge failed without saying why";
+  if (merged && (!image || image->window != PixelWindow::whole(image->width, image->height)))
+    return "merge of one tile succeeded but the tile is not the whole image";
+  std::filesystem::remove(path);
   return "";
 }
 

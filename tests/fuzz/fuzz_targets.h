@@ -32,6 +32,10 @@ std::string gltf_image(const uint8_t* data, size_t size);
 // whose sampling must give finite directions with the density pdf() gives them, and finite
 // radiance everywhere.
 std::string environment_image(const uint8_t* data, size_t size);
+
+// OpenEXR bytes as a tile given to rtcli merge: read (every channel, the string attributes, a pixel
+// limit), checked, and merged alone (which succeeds only for a whole image).
+std::string exr_tile(const uint8_t* data, size_t size);
 std::string extras_image(const uint8_t* data, size_t size);
 
 // For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.

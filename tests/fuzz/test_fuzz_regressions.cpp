@@ -30,6 +30,10 @@ int replay(const std::string& folder, const Target& target) {
 TEST_CASE("fuzz regressions: scene files", "[fuzz]") { CHECK(replay("scene", rt::fuzz::scene_json) >= 1); }
 TEST_CASE("fuzz regressions: glTF models", "[fuzz]") { CHECK(replay("gltf", rt::fuzz::gltf_model) >= 5); }
 TEST_CASE("fuzz regressions: BVH builds", "[fuzz]") { CHECK(replay("bvh", rt::fuzz::bvh_build) >= 1); }
+TEST_CASE("fuzz regressions: EXR tiles", "[fuzz]") {
+  CHECK(replay("exr", rt::fuzz::exr_tile) >= 1);
+}
+
 TEST_CASE("fuzz regressions: environment images", "[fuzz]") {
   CHECK(replay("environment", rt::fuzz::environment_image) >= 1);
 }
