@@ -19,4 +19,17 @@ if [ -z "$out" ]; then
   if [ ${#fast[@]} -gt 0 ]; then out="$(mktemp -d)"; else out="$root/docs"; fi
 fi
 [ ${#rtcli[@]} -gt 0 ] || { [ -x "$root/build/rtcli" ] && [ -x "$root/build/thumbnail" ]; } || "$root/tools/build.sh"
-python3 "$root/tools/gallery/gallery.py" --out "$out" "${fast[@]}" "${rtcli[@]}"
+# The published gallery renders the turntable through the farm recipe on a one-node Slurm cluster
+# when one can be started here (root, slurm-wlm and munge installed); locally otherwise.
+farm=()
+if [ ${#fast[@]} -eq 0 ] && [ "$(id -u)" -eq 0 ] && command -v slurmctld >/dev/null && command -v munged >/dev/null; then
+  cluster="$(mktemp -d)"
+  trap '"$root/tools/slurm/cluster.sh" stop "$cluster"' EXIT
+  if "$root/tools/slurm/cluster.sh" start "$cluster" >/dev/null; then
+    export SLURM_CONF="$cluster/slurm.conf"
+    farm=(--farm)
+  else
+    echo "gallery: the Slurm cluster did not start; the turntable is rendered locally" >&2
+  fi
+fi
+python3 "$root/tools/gallery/gallery.py" --out "$out" "${fast[@]}" "${rtcli[@]}" "${farm[@]}"

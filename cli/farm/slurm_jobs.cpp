@@ -44,7 +44,8 @@ std::string render_script(const SlurmJobSpec& spec) {
   s += "share=\"$SLURM_ARRAY_TASK_ID/" + std::to_string(spec.tasks) + "\"\n";
   s += "exec " + shell_quote(spec.rtcli) + " render " + shell_quote(spec.scene);
   for (const std::string& o : spec.render_options) s += " " + shell_quote(o);
-  s += " --threads " + std::to_string(spec.cpus) + " --skip-existing";
+  s += " --threads " + std::to_string(spec.cpus) + " --skip-existing --stats " +
+       shell_quote(spec.farm_dir + "/logs/task_") + "\"$SLURM_ARRAY_TASK_ID\"" + shell_quote(".json");
   std::string error;
   const std::optional<OutputKind> kind = output_kind(spec.output, error);
   if (tiles) {

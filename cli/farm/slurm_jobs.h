@@ -3,6 +3,7 @@
 //                  (--tile I/N, into FARM/tiles/tile_I.exr) for a still, a chunk of the frames
 //                  (--chunk I/N, into FARM/frames/frame_####.exr, or the numbered files asked
 //                  for) for an animation; --skip-existing, so that a requeued task resumes;
+//                  each task's figures (--stats) in FARM/logs/task_I.json;
 //   finish.sbatch  `rtcli merge` of the tiles, or `rtcli encode` of the frames into the GIF, run
 //                  after every task succeeded (sbatch --dependency=afterok:ARRAY); none when
 //                  the output is the numbered frames themselves.

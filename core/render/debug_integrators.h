@@ -24,12 +24,16 @@ struct DebugHit {
   bool light = false;     // an area light's face: `surface` has its normal and uv, no material
 };
 
-template <Vec3 (*View)(const DebugHit&, const Scene&), float kMiss = 0.0f>
+inline Vec3 black() { return Vec3(0.0f); }
+inline Vec3 far_away() { return Vec3(1e10f); }  // Blender's depth where nothing is hit
+
+// (A function for the miss value: clang 14, the fuzzers' compiler, takes no float template arguments.)
+template <Vec3 (*View)(const DebugHit&, const Scene&), Vec3 (*Miss)() = black>
 class DebugIntegrator final : public Integrator {
  public:
   Vec3 radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int /*depth*/, TraceContext& ctx) const override {
     DebugHit h{camera_ray, {}, 0.0f, false};
-    if (!met.surface && !met.light) return Vec3(kMiss);
+    if (!met.surface && !met.light) return Miss();
     h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
     if (met.light) {
       h.light = true;
@@ -76,6 +80,6 @@ using UvIntegrator = DebugIntegrator<uv_view>;
 using DepthIntegrator = DebugIntegrator<depth_view>;
 using AlbedoIntegrator = DebugIntegrator<albedo_view>;
 using NormalDataIntegrator = DebugIntegrator<normal_data>;
-using DistanceDataIntegrator = DebugIntegrator<distance_data, 1e10f>;
+using DistanceDataIntegrator = DebugIntegrator<distance_data, far_away>;
 
 }  // namespace rt

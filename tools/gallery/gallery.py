@@ -15,6 +15,7 @@ import os
 import shlex
 import shutil
 import subprocess
+import time
 import sys
 import tempfile
 
@@ -48,6 +49,39 @@ def render(rtcli, scene, options, out, stats, fast):
         return json.load(f)
 
 
+def farm_render(rtcli, scene, options, out, stats, tasks, scratch, name):
+    """An animation rendered as the cluster recipe does (docs/cluster.md): rtcli farm slurm on the
+    Slurm cluster SLURM_CONF names, TASKS frame chunks and the dependent encode; waits for them and
+    returns the tasks' figures joined, with each task's time in "farm"."""
+    farm_dir = os.path.join(scratch, name + "-farm")
+    args = [rtcli, "farm", "slurm", scene, "--tasks", str(tasks), "--cpus", "1", "-q", "--farm-dir", farm_dir,
+            "-o", out] + shlex.split(options)
+    started = time.time()
+    submitted = subprocess.run(args, check=True, cwd=ROOT, capture_output=True, text=True).stdout
+    jobs = ",".join(line.split()[-1] for line in submitted.splitlines() if line.split()[:1] in (["render"], ["finish"], ["submitted"]))
+    while subprocess.run(["squeue", "-h", "-j", jobs], capture_output=True, text=True).stdout.strip():
+        time.sleep(0.5)
+    wall = time.time() - started
+    if not os.path.exists(out):
+        sys.exit("gallery: the farm render of %s did not finish; logs in %s" % (name, farm_dir))
+    parts = []
+    for i in range(tasks):
+        with open(os.path.join(farm_dir, "logs", "task_%d.json" % i)) as f:
+            parts.append(json.load(f))
+    joined = dict(parts[0])
+    joined["outputs"] = [out]
+    joined["frames"] = [min(p["frames"][0] for p in parts), max(p["frames"][1] for p in parts)]
+    joined["rays"] = {k: sum(p["rays"][k] for p in parts) for k in parts[0]["rays"]}
+    joined["seconds"] = {k: sum(p["seconds"][k] for p in parts) for k in parts[0]["seconds"]}
+    frames = joined["frames"][1] - joined["frames"][0] + 1
+    joined["rays_per_pixel"] = joined["rays"]["total"] / (joined["width"] * joined["height"] * frames)
+    joined["farm"] = {"tasks": tasks, "task_seconds": [round(p["seconds"]["render"] + p["seconds"]["load"], 2) for p in parts],
+                      "task_frames": [p["frame_list"] for p in parts], "wall_seconds": round(wall, 1)}
+    with open(stats, "w") as f:
+        json.dump(joined, f, indent=2)
+    return joined
+
+
 def count(n):
     for unit, size in (("G", 1e9), ("M", 1e6), ("k", 1e3)):
         if n >= size:
@@ -64,6 +98,12 @@ def stats_line(s):
     size = "%d×%d" % (s["width"], s["height"]) + (", %d frames" % frames if frames > 1 else "")
     line = "%s in %.2f s on %d threads · %s rays (%s) · %.1f rays a pixel" % (
         size, s["seconds"]["render"], s["threads"], count(rays["total"]), kinds, s["rays_per_pixel"])
+    if "farm" in s:  # rendered through rtcli farm slurm: how, and each task's time
+        f = s["farm"]
+        line = "%s on a one-node Slurm cluster (tools/slurm/cluster.sh): rtcli farm slurm, %d tasks of frames %s, " \
+               "each task %s s on 1 thread, %.1f s from submission to the GIF · %s rays (%s) · %.1f rays a pixel" % (
+                   size, f["tasks"], ", ".join(f["task_frames"]), ", ".join("%.1f" % t for t in f["task_seconds"]),
+                   f["wall_seconds"], count(rays["total"]), kinds, s["rays_per_pixel"])
     if "path" in s:  # path traced: its samples
         line += " · %.0f samples a pixel, %.2f M samples/s" % (s["path"]["mean_samples_per_pixel"],
                                                                s["path"]["msamples_per_second"])
@@ -183,6 +223,8 @@ def main():
     parser.add_argument("--out", required=True, help="the folder to write the site into")
     parser.add_argument("--fast", action="store_true", help="small images and 4 frames: for tests")
     parser.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
+    parser.add_argument("--farm", action="store_true",
+                        help="render the sections that say farm_tasks through rtcli farm slurm (SLURM_CONF's cluster)")
     args = parser.parse_args()
     images = os.path.join(args.out, "gallery")
     shutil.rmtree(images, ignore_errors=True)  # what the sections no longer render goes too
@@ -199,7 +241,11 @@ def main():
                 stats_file = os.path.join(images, name + ".json")
                 if "--frames" in options:  # an animation: the GIF as it is, shown full size
                     file = name + ".gif"
-                    stats = render(args.rtcli, scene, options, os.path.join(images, file), stats_file, args.fast)
+                    if args.farm and section.get("farm_tasks") and not args.fast:
+                        stats = farm_render(args.rtcli, scene, options, os.path.join(images, file), stats_file,
+                                            section["farm_tasks"], scratch, name)
+                    else:
+                        stats = render(args.rtcli, scene, options, os.path.join(images, file), stats_file, args.fast)
                     widths[name] = stats["width"]
                     figures[name] = figure(name, "gallery/" + file, "gallery/" + file, alt, caption, stats,
                                            widths[name])

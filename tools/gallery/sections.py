@@ -161,7 +161,10 @@ SECTIONS = [
      "renders": [("toys", "", "Toys left behind on a wooden table", "Toys left behind")]},
     {"id": "toys-turntable", "title": "The turntable",
      "what": "The toys turning, 3° a frame, 120 frames, lights fixed.",
-     "how": "scenes/toys/turntable.json: a track on the tray's node.",
+     "how": "scenes/toys/turntable.json: a track on the tray's node. Rendered as a cluster renders it "
+            "(docs/cluster.md): rtcli farm slurm splits the 120 frames into 4 chunks on a one-node Slurm "
+            "cluster, and rtcli encode makes the GIF, the same bytes as a render on one machine.",
+     "farm_tasks": 4,
      "scene": "scenes/toys/turntable.json",
      "renders": [("toys-turntable", "--frames 0-119", "The toys turning on a tray, a looping GIF",
                   "A 4-second loop")]},
