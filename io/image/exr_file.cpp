@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <exception>
 
 #include "io/image/atomic_file.h"
@@ -37,6 +38,63 @@ class MemoryStream final : public Imf::OStream {
   std::vector<uint8_t> bytes_;
   uint64_t position_ = 0;
 };
+
+// OpenEXR 3.1 allocates what a header declares before it reads it: a string attribute's size (a
+// 792-byte file asked for 2 GB, found by the exr fuzzer), the line-offset table of the data
+// window's height. The header is walked here first: every attribute must fit in the file, and the
+// windows in the pixel limit; one part of scanlines (what rtcli writes), no tiles or deep data.
+bool header_fits(const std::string& path, uint64_t max_pixels, std::string& error) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) {
+    error = path + ": cannot be read";
+    return false;
+  }
+  const uint64_t file_size = static_cast<uint64_t>(in.tellg());
+  std::vector<unsigned char> bytes(static_cast<size_t>(std::min<uint64_t>(file_size, uint64_t{1} << 22)));
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  const auto bad = [&](const std::string& why) {
+    error = path + ": not a readable OpenEXR image (" + why + ")";
+    return false;
+  };
+  const auto u32 = [&](size_t at) {
+    return static_cast<uint32_t>(bytes[at]) | static_cast<uint32_t>(bytes[at + 1]) << 8 |
+           static_cast<uint32_t>(bytes[at + 2]) << 16 | static_cast<uint32_t>(bytes[at + 3]) << 24;
+  };
+  if (bytes.size() < 8 || u32(0) != 20000630u) return bad("no OpenEXR signature");
+  const uint32_t flags = u32(4);
+  if (flags & 0x1a00u) return bad("tiled, multi-part or deep; rtcli reads the single-part scanline images it writes");
+  size_t at = 8;
+  const auto text = [&](std::string& out) {
+    const size_t start = at;
+    while (at < bytes.size() && bytes[at] != 0) ++at;
+    if (at >= bytes.size() || at - start > 255) return false;
+    out.assign(bytes.begin() + static_cast<std::ptrdiff_t>(start), bytes.begin() + static_cast<std::ptrdiff_t>(at));
+    ++at;
+    return true;
+  };
+  bool data_window = false, display_window = false;
+  while (true) {
+    if (at >= bytes.size()) return bad("its header ends early");
+    if (bytes[at] == 0) break;  // the end of the header
+    std::string name, type;
+    if (!text(name) || !text(type) || at + 4 > bytes.size()) return bad("its header ends early");
+    const uint32_t size = u32(at);
+    at += 4;
+    if (size > file_size - at || at + size > bytes.size()) return bad("attribute " + name + " is larger than the file");
+    if ((name == "dataWindow" || name == "displayWindow") && type == "box2i" && size == 16) {
+      const auto i32 = [&](size_t k) { return static_cast<int64_t>(static_cast<int32_t>(u32(at + 4 * k))); };
+      const int64_t w = i32(2) - i32(0) + 1, h = i32(3) - i32(1) + 1;
+      if (w < 1 || h < 1 || static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > max_pixels)
+        return bad(name + " of " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than " +
+                   std::to_string(max_pixels));
+      (name == "dataWindow" ? data_window : display_window) = true;
+    }
+    at += size;
+  }
+  if (!data_window || !display_window) return bad("no dataWindow or displayWindow");
+  return true;
+}
 
 std::string channel_name(const ExrLayer& layer, const std::string& channel) {
   return layer.name.empty() ? channel : layer.name + "." + channel;
@@ -99,6 +157,7 @@ bool write_exr(const std::string& path, const ExrImage& image, bool full_float, 
 }
 
 std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, std::string& error) {
+  if (!header_fits(path, max_pixels, error)) return std::nullopt;
   try {
     Imf::InputFile file(path.c_str(), 1);
     if (!file.isComplete()) {
@@ -174,6 +233,8 @@ std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, s
 }
 
 bool exr_is_complete(const std::string& path) {
+  std::string error;
+  if (!header_fits(path, uint64_t{1} << 26, error)) return false;  // kMaxPixels: io does not see render settings
   try {
     Imf::InputFile file(path.c_str(), 1);
     return file.isComplete();
