@@ -180,6 +180,15 @@ std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, s
     for (auto it = header.begin(); it != header.end(); ++it)
       if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
         image.attributes[it.name()] = s->value();
+    // A few layers of a few channels each is what rtcli writes; a file of thousands would need
+    // their count times the pixels in memory.
+    int channels = 0;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) ++channels;
+    if (channels > kMaxExrChannels) {
+      error = path + ": " + std::to_string(channels) + " channels, more than the " + std::to_string(kMaxExrChannels) +
+              " rtcli reads";
+      return std::nullopt;
+    }
     // Channels grouped into layers by the prefix before the last '.'.
     bool float_channels = false, half_channels = false;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {

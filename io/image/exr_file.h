@@ -14,6 +14,8 @@
 
 namespace rt {
 
+inline constexpr int kMaxExrChannels = 64;  // read_exr refuses a file of more
+
 struct ExrLayer {
   std::string name;                   // "" for the colour (R, G, B); else the channels' prefix
   std::vector<std::string> channels;  // "R", "G", "B" / "X", "Y", "Z" / "Z"
