@@ -16,13 +16,7 @@ using namespace rt;
 
 namespace {
 
-LoadedScene load(const std::string& path) {
-  Diagnostics diags;
-  auto loaded = load_scene(path, rt::test::load_options(), diags);
-  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
-  REQUIRE(loaded);
-  return std::move(*loaded);
-}
+LoadedScene load(const std::string& path) { return rt::test::load_scene_file(path); }
 
 Rgb8Image render_rgb8(const LoadedScene& s, const RenderSettings& settings) {
   Image image;

@@ -22,6 +22,15 @@ inline LoadOptions load_options(unsigned threads = 1) {
   return options;
 }
 
+// Loads the scene file at `path`; the test stops (showing every diagnostic) if it does not load.
+inline LoadedScene load_scene_file(const std::string& path) {
+  Diagnostics diags;
+  auto loaded = load_scene(path, load_options(), diags);
+  for (const Diagnostic& d : diags.all()) UNSCOPED_INFO(format_diagnostic(d));
+  REQUIRE(loaded);
+  return std::move(*loaded);
+}
+
 // Writes `json` to the scratch folder as `name` and loads it; the test stops (showing every
 // diagnostic) if it does not load.
 inline LoadedScene load_scene_text(const std::string& name, const std::string& json) {
