@@ -103,7 +103,7 @@ TEST_CASE("farm: tiles, frame chunks and a cancelled task on a one-node Slurm cl
   CHECK(rt::test::read_file(dir + "/turn.gif") == rt::test::read_file(dir + "/local.gif"));
 
   // A path-traced still whose tasks take a few seconds: task 3 cancelled while it runs.
-  const std::string slow = "scenes/cornell_box.json --width 96 --height 96 --spp 512";
+  const std::string slow = "scenes/cornell_box.json --width 96 --height 96 --spp 1024";
   r = rtcli("farm slurm " + slow + " --tasks 8 -q -o '" + dir + "/box.png'", RTCLI_SOURCE_DIR, env);
   INFO(r.output);
   REQUIRE(r.code == 0);
