@@ -186,3 +186,39 @@ TEST_CASE("cli: bad parts and bad tiles are refused with the reason", "[cli][spl
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("broken.exr: not a readable OpenEXR image"));
 }
+
+TEST_CASE("cli: farm slurm --dry-run writes the two job scripts; options the farm sets are refused", "[cli][split]") {
+  const std::string dir = folder("split-farm");
+  auto r = rtcli("farm slurm scenes/antialias.json --tasks 6 --cpus 2 --partition gpu --time 0:30:00 --width 96 "
+                 "--dry-run -o '" + dir + "/still.png'");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const std::string render = rt::test::read_file(dir + "/still-farm/render.sbatch");
+  CHECK_THAT(render, Catch::Contains("#SBATCH --array=0-5") && Catch::Contains("#SBATCH --cpus-per-task=2") &&
+                         Catch::Contains("#SBATCH --partition=gpu") && Catch::Contains("#SBATCH --time=0:30:00") &&
+                         Catch::Contains("#SBATCH --requeue") && Catch::Contains("'--width' '96' --threads 2") &&
+                         Catch::Contains("--skip-existing") && Catch::Contains("--tile \"$share\"") &&
+                         Catch::Contains("share=\"$SLURM_ARRAY_TASK_ID/6\""));
+  const std::string finish = rt::test::read_file(dir + "/still-farm/finish.sbatch");
+  CHECK_THAT(finish, Catch::Contains(" merge '" + dir + "/still-farm/tiles'/tile_*.exr -o '" + dir + "/still.png'"));
+  CHECK_THAT(r.output, Catch::Contains("not submitted (--dry-run)"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/still-farm/jobs"));
+
+  // An animation: frame chunks and the encode; --dither goes to the GIF.
+  r = rtcli("farm slurm scenes/turntable.json --tasks 3 --frames 0-11 --dither --dry-run -q -o '" + dir + "/turn.gif'");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/render.sbatch"),
+             Catch::Contains("'--frames' '0-11'") && Catch::Contains("--chunk \"$share\"") &&
+                 Catch::Contains("frame_######.exr"));
+  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/finish.sbatch"), Catch::Contains(" encode ") && Catch::Contains("--dither"));
+
+  for (const char* owned : {"--threads 4", "--tile 0/2", "--stats s.json", "--exr-float"}) {
+    r = rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run " + std::string(owned) + " -o '" + dir + "/x.png'");
+    INFO(owned << "\n" << r.output);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("is set by the farm for each task; leave it out"));
+  }
+  r = rtcli("farm slurm tests/data/bad/key-bump-strength-typo.json --tasks 2 --dry-run -o '" + dir + "/y.png'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("is not a valid scene; nothing submitted"));
+}
