@@ -1,20 +1,12 @@
 #include "cli/frame_list.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
+
+#include "cli/decimal.h"
 
 namespace rt {
 namespace {
-
-std::optional<long> parse_whole(const std::string& s) {
-  if (s.empty() || s.size() > 9) return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (errno != 0 || end != s.c_str() + s.size() || s[0] == '+' || s[0] == ' ') return std::nullopt;
-  return v;
-}
 
 // One item: "N", "A-B" or "A-BxS". The separating '-' is the first after the first character
 // (which may be a sign).
@@ -27,15 +19,15 @@ bool add_item(const std::string& item, std::vector<int>& out, std::string& error
   const size_t x = item.find('x');
   if (dash == std::string::npos) {
     if (x != std::string::npos) return bad("a step (xS) goes with a range A-BxS");
-    const auto n = parse_whole(item);
+    const auto n = parse_decimal(item);
     if (!n) return bad("expected a whole number");
     if (std::labs(*n) > kMaxFrameNumber) return bad("expected a frame within +-" + std::to_string(kMaxFrameNumber));
     out.push_back(static_cast<int>(*n));
     return true;
   }
-  const auto a = parse_whole(item.substr(0, dash));
-  const auto b = parse_whole(item.substr(dash + 1, x == std::string::npos ? std::string::npos : x - dash - 1));
-  const auto step = x == std::string::npos ? std::optional<long>(1) : parse_whole(item.substr(x + 1));
+  const auto a = parse_decimal(item.substr(0, dash));
+  const auto b = parse_decimal(item.substr(dash + 1, x == std::string::npos ? std::string::npos : x - dash - 1));
+  const auto step = x == std::string::npos ? std::optional<long>(1) : parse_decimal(item.substr(x + 1));
   if (!a || !b) return bad("expected a range A-B of whole numbers");
   if (!step || *step < 1) return bad("expected a step of at least 1 after 'x'");
   if (std::labs(*a) > kMaxFrameNumber || std::labs(*b) > kMaxFrameNumber)

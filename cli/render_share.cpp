@@ -1,22 +1,11 @@
 #include "cli/render_share.h"
 
-#include <cerrno>
 #include <cstdlib>
 #include <vector>
 
+#include "cli/decimal.h"
+
 namespace rt {
-namespace {
-
-std::optional<long> whole(const std::string& s) {
-  if (s.empty() || s.size() > 9 || s[0] == '+' || s[0] == ' ') return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (errno != 0 || end != s.c_str() + s.size()) return std::nullopt;
-  return v;
-}
-
-}  // namespace
 
 EnvironmentLookup process_environment() {
   return [](const std::string& name) -> std::optional<std::string> {
@@ -36,7 +25,7 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
               "I/N outside an array)";
       return std::nullopt;
     }
-    const auto i = whole(*id), n = whole(*count), m = min ? whole(*min) : std::optional<long>(0);
+    const auto i = parse_decimal(*id), n = parse_decimal(*count), m = min ? parse_decimal(*min) : std::optional<long>(0);
     if (!i || !n || !m || *n < 1 || *i - *m < 0 || *i - *m >= *n) {
       error = std::string(option) + " auto: SLURM_ARRAY_TASK_ID " + *id + " less SLURM_ARRAY_TASK_MIN " +
               (min ? *min : std::string("0")) + " is not a task of SLURM_ARRAY_TASK_COUNT " + *count +
@@ -46,8 +35,8 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
     return Share{static_cast<int>(*i - *m), static_cast<int>(*n)};
   }
   const size_t slash = text.find('/');
-  const auto i = slash == std::string::npos ? std::nullopt : whole(text.substr(0, slash));
-  const auto n = slash == std::string::npos ? std::nullopt : whole(text.substr(slash + 1));
+  const auto i = slash == std::string::npos ? std::nullopt : parse_decimal(text.substr(0, slash));
+  const auto n = slash == std::string::npos ? std::nullopt : parse_decimal(text.substr(slash + 1));
   if (!i || !n || *n < 1 || *n > 100000 || *i < 0 || *i >= *n) {
     error = std::string(option) + ": expected I/N with 0 <= I < N <= 100000, or auto, found \"" + text + "\"";
     return std::nullopt;
@@ -60,7 +49,7 @@ std::optional<PixelWindow> parse_crop(const std::string& text, int width, int he
   size_t start = 0;
   while (v.size() < 5) {
     const size_t comma = text.find(',', start);
-    const auto n = whole(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    const auto n = parse_decimal(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
     if (!n) break;
     v.push_back(*n);
     if (comma == std::string::npos) break;
