@@ -2,14 +2,12 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 
 #include "cli/exit_codes.h"
 #include "cli/exr_display.h"
 #include "cli/frame_output.h"
 #include "cli/output_checks.h"
 #include "core/render_settings.h"
-#include "io/image/gif_file.h"
 #include "io/image/png_file.h"
 
 namespace rt {
@@ -22,13 +20,12 @@ int run_encode(const EncodeCommand& cmd) {
                  cmd.output.c_str());
     return kExitBadInput;
   }
-  if (!check_output(cmd.output, error) || output_is_an_input(cmd.output, cmd.frames, error)) {
+  if (!check_new_output(cmd.output, cmd.frames, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitBadInput;
   }
   std::optional<float> fps = cmd.fps;
-  std::unique_ptr<GifWriter> gif;
-  std::vector<int> delays;
+  std::optional<FrameSink> gif;  // the same writer and frame delays as rtcli render -o NAME.gif
   int width = 0, height = 0;
   for (size_t i = 0; i < cmd.frames.size(); ++i) {
     const std::string& path = cmd.frames[i];
@@ -55,19 +52,18 @@ int run_encode(const EncodeCommand& cmd) {
       width = image->width;
       height = image->height;
       if (!fps || !(*fps > 0.0f)) fps = 24.0f;
-      delays = gif_frame_delays(static_cast<int>(cmd.frames.size()), *fps);
-      gif = std::make_unique<GifWriter>(width, height, cmd.dither);
+      gif.emplace(OutputKind::kGif, cmd.output, width, height, *fps, static_cast<int>(cmd.frames.size()), cmd.dither, 1u);
     } else if (image->width != width || image->height != height) {
       std::fprintf(stderr, "rtcli: error: %s is %dx%d, the frames before it %dx%d\nrtcli: nothing written\n",
                    path.c_str(), image->width, image->height, width, height);
       return kExitBadInput;
     }
-    if (!gif->add_frame(*image, delays[std::min(i, delays.size() - 1)], error)) {
+    if (!gif->add(*image, static_cast<int>(i), error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }
   }
-  if (!gif->finish(cmd.output, error)) {
+  if (!gif->finish(error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitFailure;
   }

@@ -19,7 +19,7 @@ int run_merge(const MergeCommand& cmd) {
                  cmd.output.c_str());
     return kExitBadInput;
   }
-  if (!check_output(cmd.output, error) || output_is_an_input(cmd.output, cmd.tiles, error)) {
+  if (!check_new_output(cmd.output, cmd.tiles, error)) {
     std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
     return kExitBadInput;
   }

@@ -14,6 +14,11 @@ bool check_output(const std::string& path, std::string& error);
 // Whether the output is one of the files the scene was read from (links resolved): then `error`.
 bool output_is_an_input(const std::string& output, const std::vector<std::string>& inputs, std::string& error);
 
+// Both: an output that can be written and is not one of the inputs.
+inline bool check_new_output(const std::string& path, const std::vector<std::string>& inputs, std::string& error) {
+  return check_output(path, error) && !output_is_an_input(path, inputs, error);
+}
+
 // "out.png" -> "out.aa-refined.png" for --aa-debug's images.
 std::string beside(const std::string& output, const std::string& suffix);
 

@@ -208,7 +208,7 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
   }
   std::string error;
   for (const std::string& path : out.paths) {
-    if (!check_output(path, error) || output_is_an_input(path, inputs, error)) {
+    if (!check_new_output(path, inputs, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return std::nullopt;
     }
