@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/aov_layers.h"
 #include "cli/exit_codes.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
@@ -15,11 +16,6 @@
 namespace rt {
 
 namespace {
-
-// The integrator that renders each EXR layer's data.
-const char* aov_integrator(const std::string& aov) {
-  return aov == "albedo" ? "albedo" : aov == "normal" ? "aov-normal" : "aov-depth";
-}
 
 ExrLayer layer_of(const Film& film, const std::string& name, std::vector<std::string> channels) {
   ExrLayer layer{name, std::move(channels), {}};
@@ -96,12 +92,10 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
       exr.window = film.window();
       exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
       for (const std::string& aov : content.aovs) {
+        const AovLayer& a = *find_aov(aov);  // checked by render_plan
         RenderSettings data = settings;
-        data.integrator = aov_integrator(aov);
-        // Albedo and normal are averaged as the colour is (what denoisers expect); the depth is
-        // one ray through the pixel's centre, as Blender's Z pass, since an average of a near
-        // surface and the background's 1e10 is no distance at all.
-        if (aov == "depth") data.antialias.mode = "none";
+        data.integrator = a.integrator;
+        if (a.one_ray) data.antialias.mode = "none";
         Film layer;
         const InterruptWatch interrupt;
         RenderControl control;
@@ -114,9 +108,7 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
         }
         totals.seconds += s.seconds;
         totals.rays += s.rays;
-        exr.layers.push_back(aov == "depth"    ? layer_of(layer, "depth", {"Z"})
-                             : aov == "normal" ? layer_of(layer, "normal", {"X", "Y", "Z"})
-                                               : layer_of(layer, "albedo", {"R", "G", "B"}));
+        exr.layers.push_back(layer_of(layer, a.name, a.channels));
       }
       exr.attributes = render_attributes(content.identity, frame, exr.window);
       const SignalBlock block;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli/aov_layers.h"
 #include "cli/render_metadata.h"
 #include "cli/render_share.h"
 #include "core/render/band_split.h"
@@ -20,7 +21,7 @@ bool parse_aovs(const std::string& text, std::vector<std::string>& out) {
   while (true) {
     const size_t comma = text.find(',', start);
     const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (name != "albedo" && name != "normal" && name != "depth")
+    if (!find_aov(name))
       return fail("--aov: expected layers among albedo, normal, depth (comma-separated), found \"" + name + "\"");
     for (const std::string& seen : out)
       if (seen == name) return fail("--aov: \"" + name + "\" is given twice");

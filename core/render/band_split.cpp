@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "core/render/integrator.h"
 #include "core/render/renderer.h"
 
 namespace rt {
