@@ -16,6 +16,14 @@ struct Ray {
   Vec3 at(float t) const { return origin + t * direction; }
 };
 
+// Whether a traversal may walk the ray. A NaN or infinite origin or direction (a camera's numbers
+// that overflow, a degenerate transform) makes the box tests NaN, which the NaN-proof slab test
+// reads as "enter": every child slot, the unused ones too, and the walk leaves the tree. Every
+// traversal (single, packet, any-hit, every instruction set) answers such a ray with a miss.
+inline bool is_traceable(const Ray& r) {
+  return is_finite(r.origin) && is_finite(r.direction) && r.tmin <= r.tmax;
+}
+
 // Where every secondary ray starts (pbrt-v4's rule, section 6.8.6): the hit point moved off the
 // surface along its geometric normal, to the side the ray leaves towards, by just the distance
 // its rounding error could reach (p_error: an absolute bound per component, from the

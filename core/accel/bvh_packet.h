@@ -82,8 +82,12 @@ class LaneQuadRays {
   unsigned ready_ = 0;
 };
 
-// Lanes 0..count-1 set.
-RT_SIMD_INLINE unsigned lanes_of(int count) { return (1u << count) - 1u; }
+// The lanes of rays a walk may take (is_traceable); the others miss, as they do alone.
+RT_SIMD_INLINE unsigned traceable_lanes(const Ray* rays, int count) {
+  unsigned lanes = 0;
+  for (int i = 0; i < count; ++i) lanes |= static_cast<unsigned>(is_traceable(rays[i])) << i;
+  return lanes;
+}
 
 // Calls blocked(leaf, i, quad_ray) for each leaf ray i, still unanswered, reaches; returns the
 // mask of rays found blocked. Any-hit: the order of the walk does not matter.
@@ -105,7 +109,8 @@ unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTe
   };
   Entry stack[kBvhWidth * Bvh::kMaxDepth + 4];
   int top = 0;
-  const unsigned all = lanes_of(count);
+  const unsigned all = traceable_lanes(rays, count);
+  if (all == 0) return 0;
   unsigned done = 0;
   stack[top++] = Entry{bvh.root(), all};
   const BvhNode* nodes = bvh.nodes().data();
@@ -156,7 +161,9 @@ void intersect_packet_walk(const Bvh& bvh, Ray* rays, int count, LeafNearest&& n
   };
   Entry stack[kBvhWidth * Bvh::kMaxDepth + 4];
   int top = 0;
-  stack[top++] = Entry{tmin, bvh.root(), lanes_of(count)};
+  const unsigned all = traceable_lanes(rays, count);
+  if (all == 0) return;
+  stack[top++] = Entry{tmin, bvh.root(), all};
   const BvhNode* nodes = bvh.nodes().data();
   while (top > 0) {
     const Entry& e = stack[--top];

@@ -102,7 +102,7 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
 // matter and is not paid for: the children entered are pushed as the node lists them.
 template <bool kNearestFirst, class LeafVisitor>
 bool traverse(const Bvh& bvh, Ray& ray, LeafVisitor&& visit_leaf) {
-  if (bvh.primitive_count() == 0) return false;
+  if (bvh.primitive_count() == 0 || !is_traceable(ray)) return false;
   const BvhNode* nodes = bvh.nodes().data();
   const RaySlabs slabs(ray);
   StackEntry stack[kStackSize];

@@ -7,13 +7,14 @@
 #include "io/json/locate.h"
 
 namespace rt {
-namespace {
 
 std::string format_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
 }
+
+namespace {
 
 std::string quote_text(std::string_view s) {
   std::string out = "\"";

@@ -47,6 +47,9 @@ std::string describe(const Json& value);
 // The closest of `candidates` to `word` by edit distance, if close enough to be a likely typo.
 std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
 
+// A number as messages show it: up to 9 significant digits, enough to tell floats apart.
+std::string format_number(double v);
+
 // Allowed range of a number; describe() says it in words for error messages.
 struct NumberRule {
   double min = -HUGE_VAL;

@@ -36,6 +36,29 @@ void parse_stereo(const JsonReader& r, const Json& v, const std::string& ptr, Ca
             "expected pole_merge_from <= pole_merge_to (degrees of latitude: the eye separation fades between them)");
 }
 
+// Each eye sits half the separation off the camera and turns its view by half the separation over
+// the convergence distance (Camera::eye_camera). Both must stay far inside single precision, or the
+// eyes' rays are infinite or NaN: 1e-45 passes "> 0" as a denormal and makes the turn infinite.
+// A turn of kMaxEyeTurn (the convergence plane 1/20000 of the separation away) is far past any
+// viewable pair, and its rays' directions still normalise exactly.
+constexpr float kMaxEyeTurn = 1e4f;
+
+void check_eyes(const JsonReader& r, const std::string& ptr, const CameraDescription& c) {
+  const float half = 0.5f * c.stereo.eye_separation;
+  const float convergence = c.convergence.value_or(c.focus_distance.value_or(glm::length(c.look_at - c.position)));
+  const float turn = half / convergence;
+  const bool has_convergence = c.convergence.has_value();
+  if (!(std::isfinite(turn) && turn <= kMaxEyeTurn)) {
+    r.error(ptr + (has_convergence ? "/convergence" : "/eye_separation"),
+            "expected eye_separation / convergence at most " + format_number(2.0 * kMaxEyeTurn) +
+                " (each eye turns its view by half of it), found " + format_number(c.stereo.eye_separation) + " / " +
+                format_number(convergence) + (has_convergence ? "" : " (the convergence defaults to the focus distance)"));
+  } else if (!std::isfinite(max_abs_component(c.position) + half)) {
+    r.error(ptr + "/eye_separation", "expected the eyes to fit in single precision (|x| < 3.4e38), found an eye at " +
+                                         format_number(max_abs_component(c.position)) + " + " + format_number(half));
+  }
+}
+
 }  // namespace
 
 void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
@@ -96,7 +119,10 @@ void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
   const Vec3 forward = c.look_at - c.position;
   if (glm::length(forward) < 1e-6f * std::max(1.0f, max_abs_component(c.position))) {
     r.error(o.child("look_at"), "expected a point away from the camera position, found the position itself");
-  } else if (!(glm::length(c.up) > 0.0f) ||
+    return;
+  }
+  if (c.stereo.enabled()) check_eyes(r, o.child("stereo"), c);
+  if (!(glm::length(c.up) > 0.0f) ||
              glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
     r.error(up ? o.child("up") : o.child("look_at"),
             "expected an up direction not parallel to the viewing direction, found one parallel to it");

@@ -110,3 +110,35 @@ TEST_CASE("cli cameras: an animated stereo render makes an anaglyph GIF", "[cli]
   REQUIRE(r.code == 0);
   CHECK(fs::file_size(gif) > 100);
 }
+
+TEST_CASE("cli cameras: stereo numbers whose eyes overflow single precision are refused at the key, in every mode",
+          "[cli][stereo][errors][hostile]") {
+  // Each of these killed render with SIGSEGV (issue 36) and validate called it valid: 1e-45 is a
+  // denormal that passes "> 0", and each eye's view turned by an infinite amount.
+  const char* cases[][3] = {
+      {"anaglyph", R"("convergence": 1e-45)", "/camera/stereo/convergence"},
+      {"side_by_side", R"("eye_separation": 100, "convergence": 1e-37)", "/camera/stereo/convergence"},
+      {"top_bottom", R"("eye_separation": 1e38, "convergence": 0.01)", "/camera/stereo/convergence"},
+      {"pair", R"("eye_separation": 1e38)", "/camera/stereo/eye_separation"},
+  };
+  for (const char* projection : {"perspective", "equirectangular", "fisheye"}) {
+    for (const auto& c : cases) {
+      INFO(projection << " " << c[0] << " " << c[1]);
+      const std::string file = scene("stereo-overflow.json", std::string(R"("projection": ")") + projection +
+                                                                 R"(", "stereo": {"mode": ")" + c[0] + "\", " + c[1] + "}");
+      Run r = rtcli("validate '" + file + "'");
+      CHECK(r.code == 2);
+      CHECK_THAT(r.output, Catch::Contains(c[2]) && Catch::Contains("expected eye_separation / convergence at most 20000"));
+      r = rtcli("render '" + file + "' -o '" + output_path("stereo-overflow.png") + "'");
+      CHECK(r.code == 2);
+      CHECK_FALSE(fs::exists(output_path("stereo-overflow.png")));
+    }
+  }
+  // Far inside the limit: renders.
+  const std::string fine = scene("stereo-near.json", R"("stereo": {"mode": "anaglyph", "eye_separation": 1, "convergence": 0.001})");
+  CHECK(rtcli("render '" + fine + "' -o '" + output_path("stereo-near.png") + "'").code == 0);
+  // --stereo on a camera whose focus distance (the convergence's default) is a denormal: the eyes'
+  // rays are not finite, and the traversal answers them with misses rather than a fault.
+  const std::string denormal = scene("stereo-denormal.json", R"("focus_distance": 1e-45)");
+  CHECK(rtcli("render '" + denormal + "' --stereo anaglyph -o '" + output_path("stereo-denormal.png") + "'").code == 0);
+}

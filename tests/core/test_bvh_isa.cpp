@@ -2,11 +2,13 @@
 // the same primitive, distance and barycentrics, bit for bit, and the same occlusion answers.
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "core/accel/bvh.h"
+#include "core/accel/bvh_traversal.h"
 #include "core/accel/primitives.h"
 #include "core/mesh.h"
 #include "core/rng.h"
@@ -216,5 +218,67 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own closest hit, on eve
     CHECK(differences == 0);
     CHECK(hits > rays / 4);
     CHECK(twins > 20);  // exact ties were met
+  }
+}
+
+TEST_CASE("BVH kernels: NaN and infinite rays miss in every kernel, single, packet and any-hit, on every instruction set",
+          "[bvh][isa]") {
+  // What a stereo camera with convergence 1e-45 made (issue 36): an infinite window offset, rays
+  // that are not finite, and a packet walk that entered every unused child slot and wrote past its
+  // fixed stack. Each kernel must answer such a ray with a miss, and the finite rays of the same
+  // packet with their own answers.
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
+  const Ray bad[] = {
+      Ray{Vec3(nan, 0, 0), Vec3(0, 0, -1), 0.0f, kInfinity},  Ray{Vec3(0, 0, 20), Vec3(nan, 0, -1), 0.0f, kInfinity},
+      Ray{Vec3(inf, 0, 0), Vec3(-1, 0, 0), 0.0f, kInfinity},  Ray{Vec3(0, 0, 20), Vec3(inf, 1, -1), 0.0f, kInfinity},
+      Ray{Vec3(0, 0, 20), Vec3(0, 0, -inf), 0.0f, kInfinity}, Ray{Vec3(0, 0, 20), Vec3(0, 0, -1), nan, kInfinity},
+      Ray{Vec3(0, 0, 20), Vec3(0, 0, -1), 0.0f, nan},         Ray{Vec3(-inf, -inf, -inf), Vec3(inf), 0.0f, kInfinity},
+  };
+  constexpr int kBad = static_cast<int>(sizeof bad / sizeof bad[0]);
+  static_assert(kBad == kPacketSize);
+  const Ray good{Vec3(0.1f, 0.2f, 20.0f), Vec3(0.01f, 0.02f, -1.0f), 1e-4f, kInfinity};
+  for (const Isa isa : kAllIsas) {
+    if (!isa_supported(isa)) continue;  // the first case warns
+    INFO(isa_name(isa));
+    IsaScene scene;
+    build(scene, isa);
+    const Bvh bvh(scene.top, BvhBuildOptions{2, isa});
+    Ray g = good;
+    Hit good_hit;
+    REQUIRE(bvh.intersect(g, good_hit));  // the finite ray does meet the scene
+    int answered = 0;
+    for (int i = 0; i < kBad; ++i) {
+      INFO("ray " << i);
+      Ray r = bad[i];
+      Hit h;
+      CHECK_FALSE(bvh.intersect(r, h));
+      CHECK_FALSE(scene.mesh_bvh.intersect(r, h, scene.cutout));
+      CHECK_FALSE(bvh.occluded(bad[i]));
+      int crossings = 0;
+      bvh.for_each_hit(bad[i], [&](const Hit&) { return ++crossings, false; });
+      auto visitor = [&](const Hit&) { return ++crossings, false; };
+      bvh.visit_hits(bad[i], visitor);
+      CHECK(crossings == 0);
+      ++answered;
+    }
+    CHECK(answered == kBad);
+    // Packets: all bad, and bad lanes among good ones (every other lane), at every packet size.
+    for (int count = 1; count <= kPacketSize; ++count) {
+      INFO("packet of " << count);
+      Ray all_bad[kPacketSize], mixed[kPacketSize];
+      for (int i = 0; i < count; ++i) {
+        all_bad[i] = bad[i];
+        mixed[i] = i % 2 ? bad[i] : good;
+      }
+      Hit hits[kPacketSize];
+      CHECK(bvh.occluded_packet(all_bad, count) == 0u);
+      CHECK(bvh.intersect_packet(all_bad, hits, count) == 0u);
+      unsigned good_lanes = 0;
+      for (int i = 0; i < count; i += 2) good_lanes |= 1u << i;
+      CHECK(bvh.occluded_packet(mixed, count) == good_lanes);
+      const unsigned found = bvh.intersect_packet(mixed, hits, count);
+      CHECK(found == good_lanes);
+      for (int i = 0; i < count; i += 2) CHECK(same_hit(hits[i], good_hit));
+    }
   }
 }
