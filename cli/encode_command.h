@@ -12,6 +12,7 @@ namespace rt {
 
 struct EncodeCommand {
   std::vector<std::string> frames;
+  std::optional<std::string> frame_list;  // --frames: frames[0] is a pattern, filled with these numbers
   std::string output;
   std::optional<float> fps;
   bool dither = false;

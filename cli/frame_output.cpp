@@ -1,7 +1,10 @@
 #include "cli/frame_output.h"
 
+#include <algorithm>
 #include <filesystem>
 
+#include "cli/render_metadata.h"
+#include "core/render_settings.h"
 #include "io/image/jpeg_file.h"
 #include "io/image/png_file.h"
 
@@ -33,7 +36,24 @@ std::string sequence_path(const std::string& pattern, int frame) {
   return (p.parent_path() / name).string();
 }
 
-bool output_is_complete(const std::string& path, OutputKind kind) {
+namespace {
+
+bool is_expected_exr(const std::string& path, const ExpectedExr& expected) {
+  std::string error;
+  const std::optional<ExrImage> exr = read_exr(path, kMaxPixels, error);  // every pixel decoded
+  if (!exr || exr->full_float != expected.full_float) return false;
+  if (!same_render(exr->attributes, expected.attributes)) return false;
+  std::vector<std::string> layers, wanted = expected.layers;
+  for (const ExrLayer& l : exr->layers)
+    if (!l.name.empty()) layers.push_back(l.name);
+  std::sort(layers.begin(), layers.end());  // OpenEXR keeps channels in name order
+  std::sort(wanted.begin(), wanted.end());
+  return layers == wanted;
+}
+
+}  // namespace
+
+bool output_is_complete(const std::string& path, OutputKind kind, const ExpectedExr& exr) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0) return false;
   std::string error;
@@ -41,7 +61,7 @@ bool output_is_complete(const std::string& path, OutputKind kind) {
     case OutputKind::kPng:
     case OutputKind::kPngSequence: return read_png(path, error).has_value();
     case OutputKind::kExr:
-    case OutputKind::kExrSequence: return exr_is_complete(path);
+    case OutputKind::kExrSequence: return is_expected_exr(path, exr);
     default: return true;
   }
 }

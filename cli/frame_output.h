@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,9 +29,19 @@ std::optional<OutputKind> output_kind(const std::string& path, std::string& erro
 // Negative frames get a leading '-'.
 std::string sequence_path(const std::string& pattern, int frame);
 
-// Whether `path` holds a whole output of that kind (--skip-existing): a PNG that decodes, an EXR
-// with all its pixels; a GIF or JPEG that exists (rtcli writes every file whole, by renaming).
-bool output_is_complete(const std::string& path, OutputKind kind);
+// What an EXR output must be to count as done (--skip-existing): its metadata (render_attributes)
+// and layers as this render would write them.
+struct ExpectedExr {
+  std::map<std::string, std::string> attributes;
+  std::vector<std::string> layers;  // beside the colour, in any order
+  bool full_float = false;
+};
+
+// Whether `path` holds a whole output of that kind (--skip-existing): a PNG that decodes; an EXR
+// whose pixels all decode and that this render would write (`exr`: the same scene and settings
+// hashes, frame, crop, tile, layers and precision); a GIF or JPEG that exists (rtcli writes every
+// file whole, by renaming). An EXR from another render is not complete: it is rendered again.
+bool output_is_complete(const std::string& path, OutputKind kind, const ExpectedExr& exr);
 
 // Receives the frames of one render in order and writes them: a PNG at once per frame, the GIF
 // when all frames are in. Every file goes through a temporary name and a rename.

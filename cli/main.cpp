@@ -8,6 +8,7 @@
 #include "cli/bench/bench_command.h"
 #include "cli/encode_command.h"
 #include "cli/farm/farm_command.h"
+#include "io/image/gif_file.h"
 #include "cli/merge_command.h"
 #include "cli/exit_codes.h"
 #include "cli/number_checks.h"
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--animation", render.animation,
                          "A glTF file on its own: play one of its animations, by name or index (default: all of them)");
   render_cmd->add_option("--fps", render.fps, "A glTF file on its own: frames per second of its animation (default 24)")
-      ->check(real_number(0.001, 1000.0));
+      ->check(real_number(kMinGifFps, 1000.0));
   render_cmd
       ->add_option("--background", render.background,
                    "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
@@ -186,10 +187,14 @@ int main(int argc, char** argv) {
   EncodeCommand encode;
   CLI::App* encode_cmd =
       app.add_subcommand("encode", "Make an animated GIF from rendered frames (.png or .exr), in the order given");
-  encode_cmd->add_option("frames", encode.frames, "The frames (.png or .exr)")->required();
+  encode_cmd->add_option("frames", encode.frames, "The frames (.png or .exr), or with --frames one NAME_####.png/.exr")
+      ->required();
+  encode_cmd->add_option("--frames", encode.frame_list,
+                         "The frame numbers (A-B, A-BxS, lists) that fill the one pattern's '#'s, encoded in ascending "
+                         "order (rtcli farm's frames, negative numbers included)");
   encode_cmd->add_option("-o,--output", encode.output, "The animation: .gif")->required();
   encode_cmd->add_option("--fps", encode.fps, "Frames per second (default: the first EXR's, else 24)")
-      ->check(real_number(0.001, 1000.0));
+      ->check(real_number(kMinGifFps, 1000.0));
   encode_cmd->add_flag("--dither", encode.dither, "Floyd-Steinberg dithering (less banding, some noise)");
   encode_cmd->add_flag("-q,--quiet", encode.quiet, "Print nothing but errors");
 

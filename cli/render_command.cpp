@@ -25,6 +25,7 @@
 #include "core/render/renderer.h"
 #include "core/render/stereo_images.h"
 #include "core/thread_count.h"
+#include "io/image/gif_file.h"
 #include "io/image/png_file.h"
 #include "io/scene_loader.h"
 
@@ -219,7 +220,14 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
 // The size limit on what the command line asks for, and a word about renders that will be slow
 // or show one picture many times.
 bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
-                    const SceneGraph& graph) {
+                    const SceneGraph& graph, OutputKind kind) {
+  if (kind == OutputKind::kGif && !(graph.timeline.fps >= kMinGifFps)) {
+    std::fprintf(stderr,
+                 "rtcli: error: %s: %g frames per second: a GIF frame lasts at most 655.35 s, so a GIF takes at least "
+                 "%g fps (numbered frames, -o NAME_####.png, take any rate)\n",
+                 cmd.scene.c_str(), static_cast<double>(graph.timeline.fps), kMinGifFps);
+    return false;
+  }
   if (cmd.width || cmd.height || cmd.aa_mode || cmd.aa_samples || cmd.aa_depth || cmd.aa_positions) {
     if (pixel_count(settings) > kMaxPixels) {
       std::fprintf(stderr,
@@ -318,7 +326,7 @@ int run_render(const RenderCommand& cmd) {
   if (!outputs) return kExitBadInput;
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   const RenderSettings settings = with_overrides(loaded->settings, cmd);
-  if (!check_settings(cmd, settings, frames, loaded->graph)) return kExitBadInput;
+  if (!check_settings(cmd, settings, frames, loaded->graph, request->kind)) return kExitBadInput;
   const std::optional<RenderPlan> plan =
       plan_render(cmd, request->kind, output_patterns(*request, *stereo), frames, settings, *stereo, *loaded);
   if (!plan) return kExitBadInput;

@@ -93,4 +93,13 @@ std::map<std::string, std::string> render_attributes(const RenderIdentity& id, i
   return out;
 }
 
+bool same_render(const std::map<std::string, std::string>& file, const std::map<std::string, std::string>& expected) {
+  for (const char* key : {"rtcli:scene_hash", "rtcli:settings_hash", "rtcli:frame", "rtcli:crop", "rtcli:tile"}) {
+    const auto a = file.find(key), b = expected.find(key);
+    if ((a == file.end()) != (b == expected.end())) return false;
+    if (a != file.end() && a->second != b->second) return false;
+  }
+  return true;
+}
+
 }  // namespace rt

@@ -46,4 +46,8 @@ struct RenderIdentity {
 
 std::map<std::string, std::string> render_attributes(const RenderIdentity& id, int frame, const PixelWindow& window);
 
+// Whether a file's attributes say it holds the same pixels as `expected` (render_attributes):
+// the same scene and settings hashes, frame, crop and tile.
+bool same_render(const std::map<std::string, std::string>& file, const std::map<std::string, std::string>& expected);
+
 }  // namespace rt

@@ -82,21 +82,6 @@ std::optional<RenderPlan> plan_render(const RenderCommand& cmd, OutputKind kind,
   }
   if (cmd.aov && !parse_aovs(*cmd.aov, plan.content.aovs)) return std::nullopt;
   plan.content.exr_float = cmd.exr_float;
-  if (cmd.skip_existing) {
-    FrameList left;
-    for (const int f : plan.frames.frames) {
-      bool done = true;
-      for (const std::string& pattern : patterns)
-        done = done && output_is_complete(is_sequence(kind) ? sequence_path(pattern, f) : pattern, kind);
-      if (!done) left.frames.push_back(f);
-    }
-    const int skipped = plan.frames.count() - left.count();
-    if (skipped > 0)
-      plan.skipped = std::to_string(skipped) + " of " + std::to_string(plan.frames.count()) +
-                     (skipped == 1 ? " frame's" : " frames'") + " output" + (skipped == 1 ? " is" : "s are") +
-                     " already there and complete (--skip-existing)";
-    plan.frames = left;
-  }
   if (is_exr(kind)) {
     RenderIdentity& id = plan.content.identity;
     id.scene = cmd.scene;
@@ -105,6 +90,27 @@ std::optional<RenderPlan> plan_render(const RenderCommand& cmd, OutputKind kind,
     id.seed = settings.seed;
     id.display = settings.display;
     id.fps = loaded.graph.timeline.fps;
+  }
+  if (cmd.skip_existing) {
+    FrameList left;
+    ExpectedExr expected;
+    expected.layers = plan.content.aovs;
+    expected.full_float = plan.content.exr_float;
+    const PixelWindow window =
+        plan.content.window.empty() ? PixelWindow{0, 0, settings.width, settings.height} : plan.content.window;
+    for (const int f : plan.frames.frames) {
+      bool done = true;
+      if (is_exr(kind)) expected.attributes = render_attributes(plan.content.identity, f, window);
+      for (const std::string& pattern : patterns)
+        done = done && output_is_complete(is_sequence(kind) ? sequence_path(pattern, f) : pattern, kind, expected);
+      if (!done) left.frames.push_back(f);
+    }
+    const int skipped = plan.frames.count() - left.count();
+    if (skipped > 0)
+      plan.skipped = std::to_string(skipped) + " of " + std::to_string(plan.frames.count()) +
+                     (skipped == 1 ? " frame's" : " frames'") + " output" + (skipped == 1 ? " is" : "s are") +
+                     " already there and complete (--skip-existing)";
+    plan.frames = left;
   }
   return plan;
 }

@@ -28,18 +28,34 @@ std::optional<std::string> unknown_argument_message(const CLI::App& app, const s
     for (const std::string& c : commands) list += (list.empty() ? "" : ", ") + c;
     return message + "; expected one of: " + list;
   }
+  // Down to the innermost command named (farm slurm): its options are the ones that count.
+  size_t next = 1;
+  std::string path = first;
+  for (bool deeper = true; deeper && next < args.size();) {
+    deeper = false;
+    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == args[next]) {
+        command = sub;
+        path += " " + args[next++];
+        deeper = true;
+        break;
+      }
+  }
+  // A command that passes the options it does not know on (farm slurm, to every task's render)
+  // has no unknown options: CLI11's own message (a value out of range) stands.
+  if (command->get_allow_extras()) return std::nullopt;
   std::vector<std::string> options;
   for (const CLI::Option* o : command->get_options()) {
     for (const std::string& name : o->get_lnames()) options.push_back("--" + name);
     for (const std::string& name : o->get_snames()) options.push_back("-" + name);
   }
-  for (size_t i = 1; i < args.size(); ++i) {
+  for (size_t i = next; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.size() < 2 || a[0] != '-' || a == "--") continue;
     const std::string name = a.substr(0, a.find('='));
     if (std::find(options.begin(), options.end(), name) != options.end()) continue;
     if (name.size() > 1 && name[1] != '-' && std::isdigit(static_cast<unsigned char>(name[1]))) continue;  // -5
-    return first + ": unknown option \"" + name + "\"" + did_you_mean(name, options);
+    return path + ": unknown option \"" + name + "\"" + did_you_mean(name, options);
   }
   return std::nullopt;
 }

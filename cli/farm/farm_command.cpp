@@ -1,6 +1,12 @@
 #include "cli/farm/farm_command.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 
 #include <cstdio>
 #include <filesystem>
@@ -14,13 +20,20 @@
 #include "cli/frame_output.h"
 #include "cli/report.h"
 #include "cli/scene_loading.h"
+#include "io/base/input_file.h"
 #include "io/image/atomic_file.h"
-#include "io/scene_validator.h"
+#include "cli/frame_list.h"
+#include "io/scene_loader.h"
 
 namespace fs = std::filesystem;
 
 namespace rt {
 namespace {
+
+// A Slurm job id as sbatch --parsable prints it: digits only.
+bool is_job_id(const std::string& id) {
+  return !id.empty() && id.size() <= 20 && id.find_first_not_of("0123456789") == std::string::npos;
+}
 
 // Options the farm sets on every task itself.
 const std::set<std::string> kFarmOwned = {"-o", "--output", "--tile", "--crop", "--chunk", "--threads", "--skip-existing",
@@ -30,13 +43,52 @@ bool write_text(const std::string& path, const std::string& text, std::string& e
   return write_file_atomically(path, std::vector<uint8_t>(text.begin(), text.end()), error);
 }
 
-// A command's standard output, and whether it exited 0.
-bool run_command(const std::string& command, std::string& out) {
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return false;
+// A program's standard output and error, and whether it exited 0. No shell: the arguments reach
+// it as they are, whatever they hold (job ids and paths from a shared folder are not trusted).
+bool run_program(const std::vector<std::string>& args, std::string& out) {
+  int fds[2];
+  if (::pipe(fds) != 0) return false;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fds[1]);
+  if (spawned != 0) {
+    ::close(fds[0]);
+    out = args[0] + ": " + std::strerror(spawned) + "\n";
+    return false;
+  }
   char buffer[4096];
-  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  return pclose(pipe) == 0;
+  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    out.append(buffer, static_cast<size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// The value of a render option passed on to the tasks ("--height 90" or "--height=90"), the last
+// one given; nothing when it is not there.
+std::optional<std::string> option_value(const std::vector<std::string>& options, const std::string& name) {
+  std::optional<std::string> value;
+  for (size_t i = 0; i < options.size(); ++i) {
+    if (options[i] == name && i + 1 < options.size()) value = options[i + 1];
+    else if (options[i].rfind(name + "=", 0) == 0) value = options[i].substr(name.size() + 1);
+  }
+  return value;
 }
 
 std::string default_farm_dir(const std::string& output) {
@@ -47,14 +99,16 @@ std::string default_farm_dir(const std::string& output) {
 }
 
 // sbatch --parsable prints "ID" or "ID;CLUSTER".
-std::optional<std::string> submit(const std::string& args, std::string& error) {
+std::optional<std::string> submit(const std::vector<std::string>& args, std::string& error) {
+  std::vector<std::string> command = {"sbatch", "--parsable"};
+  command.insert(command.end(), args.begin(), args.end());
   std::string out;
-  if (!run_command("sbatch --parsable " + args + " 2>&1", out)) {
-    error = "sbatch " + args + " failed: " + out;
+  if (!run_program(command, out)) {
+    error = "sbatch " + args.back() + " failed: " + out;
     return std::nullopt;
   }
   const std::string id = out.substr(0, out.find_first_of(";\n"));
-  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos) {
+  if (!is_job_id(id)) {
     error = "sbatch printed no job id: " + out;
     return std::nullopt;
   }
@@ -75,8 +129,9 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
   std::string error;
   const std::optional<OutputKind> kind = output_kind(cmd.output, error);
   if (!kind || *kind == OutputKind::kJpeg) return fail("-o: expected .png, .exr, .gif or NAME_####.png/.exr, found \"" + cmd.output + "\"");
-  const Diagnostics diags = validate_file(cmd.scene, cli_load_options(0, std::nullopt, false));
-  if (diags.has_errors()) {
+  Diagnostics diags;
+  const std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(1, std::nullopt, false), diags);
+  if (!loaded || diags.has_errors()) {
     print_diagnostics(stderr, diags);
     return fail(cmd.scene + " is not a valid scene; nothing submitted");
   }
@@ -95,6 +150,31 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
   for (const std::string& o : cmd.render_options) {
     if (o == "--dither") spec.dither = true;
     else spec.render_options.push_back(o);
+  }
+  if (const std::vector<std::string> problems = job_spec_problems(spec); !problems.empty()) {
+    for (const std::string& p : problems) std::fprintf(stderr, "rtcli: error: farm slurm: %s\n", p.c_str());
+    return fail("nothing written or submitted");
+  }
+  if (farm_work(spec) == FarmWork::kTiles) {
+    // Every task renders a band of at least one row (rtcli render --tile refuses more bands).
+    int height = loaded->settings.height;
+    if (const auto h = option_value(spec.render_options, "--height")) height = std::atoi(h->c_str());
+    if (height > 0 && cmd.tasks > height)
+      return fail("--tasks " + std::to_string(cmd.tasks) + ": a still is split into bands of rows, and the image is " +
+                  std::to_string(height) + " rows high; give at most " + std::to_string(height) + " tasks");
+  } else {
+    // The frames every task shares, as rtcli render chooses them: --frames or --frame, else the
+    // scene's animation; encode takes them in this order (a glob would order -1 before -2).
+    const std::optional<std::string> given =
+        option_value(spec.render_options, "--frames") ? option_value(spec.render_options, "--frames")
+                                                      : option_value(spec.render_options, "--frame");
+    const Timeline& t = loaded->graph.timeline;
+    const std::optional<FrameList> frames =
+        given ? parse_frame_list(*given, error)
+              : std::optional<FrameList>(loaded->graph.animated ? FrameList::range(t.first_frame, t.last_frame)
+                                                                : FrameList::range(loaded->frame, loaded->frame));
+    if (!frames) return fail("--frames: " + error);
+    spec.frames = frames->text();
   }
   std::error_code ec;
   for (const char* sub : {"logs", farm_work(spec) == FarmWork::kTiles ? "tiles" : "frames"}) {
@@ -115,11 +195,11 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
     std::printf("\n");
     return kExitSuccess;
   }
-  const std::optional<std::string> array = submit(shell_quote(render_path), error);
+  const std::optional<std::string> array = submit({render_path}, error);
   if (!array) return fail(error, kExitFailure);
   std::string jobs = "render " + *array + "\n";
   if (!finish.empty()) {
-    const std::optional<std::string> after = submit("--dependency=afterok:" + *array + " " + shell_quote(finish_path), error);
+    const std::optional<std::string> after = submit({"--dependency=afterok:" + *array, finish_path}, error);
     if (!after) return fail(error + " (the array " + *array + " was submitted)", kExitFailure);
     jobs += "finish " + *after + "\n";
   }
@@ -131,16 +211,38 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
 }
 
 int run_farm_status(const FarmStatusCommand& cmd) {
-  std::ifstream jobs_file(cmd.farm_dir + "/jobs");
-  if (!jobs_file) {
-    std::fprintf(stderr, "rtcli: error: farm status: %s/jobs not found (was the render submitted with rtcli farm slurm?)\n",
-                 cmd.farm_dir.c_str());
+  // Through the bounded reader: a regular file of a few lines, never a FIFO or a device.
+  std::string why;
+  const std::optional<std::string> jobs_text = read_input_text(cmd.farm_dir + "/jobs", 4096, why);
+  if (!jobs_text) {
+    std::fprintf(stderr, "rtcli: error: farm status: %s/jobs: %s (was the render submitted with rtcli farm slurm?)\n",
+                 cmd.farm_dir.c_str(), why.c_str());
     return kExitBadInput;
   }
-  std::string role, id, ids;
-  while (jobs_file >> role >> id) ids += (ids.empty() ? "" : ",") + id;
+  std::istringstream jobs_file(*jobs_text);
+  // The farm folder lives on shared storage: its jobs file is read as untrusted. Lines are
+  // "render ID" and "finish ID", IDs digits only.
+  std::string jobs_line, ids;
+  for (int number = 1; std::getline(jobs_file, jobs_line) && number <= 16; ++number) {
+    std::istringstream words(jobs_line);
+    std::string role, id, extra;
+    words >> role >> id;
+    if (role.empty() && id.empty()) continue;
+    if ((role != "render" && role != "finish") || !is_job_id(id) || (words >> extra)) {
+      std::fprintf(stderr,
+                   "rtcli: error: farm status: %s/jobs:%d: expected \"render ID\" or \"finish ID\" with ID a Slurm job "
+                   "id (digits); the file was not written by rtcli farm slurm\n",
+                   cmd.farm_dir.c_str(), number);
+      return kExitBadInput;
+    }
+    ids += (ids.empty() ? "" : ",") + id;
+  }
+  if (ids.empty()) {
+    std::fprintf(stderr, "rtcli: error: farm status: %s/jobs holds no job id\n", cmd.farm_dir.c_str());
+    return kExitBadInput;
+  }
   std::string out;
-  if (run_command("squeue -h -j " + ids + " -o '%i %j %T %M %R' 2>&1", out))
+  if (run_program({"squeue", "-h", "-j", ids, "-o", "%i %j %T %M %R"}, out))
     std::printf("queued or running (squeue):\n%s", out.empty() ? "  none\n" : out.c_str());
   else
     std::printf("squeue failed: %s", out.c_str());

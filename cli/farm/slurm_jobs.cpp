@@ -1,5 +1,7 @@
 #include "cli/farm/slurm_jobs.h"
 
+#include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "cli/frame_output.h"
@@ -16,7 +18,13 @@ std::string header(const SlurmJobSpec& spec, const std::string& name, const std:
   return s;
 }
 
-std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+// The job's name: the output's stem in Slurm's safe characters (it is only a label in squeue).
+std::string stem(const std::string& path) {
+  std::string name = std::filesystem::path(path).stem().string();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  return name;
+}
 
 }  // namespace
 
@@ -30,6 +38,65 @@ std::string shell_quote(const std::string& text) {
   std::string out = "'";
   for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
+}
+
+std::string job_value_problem(const std::string& what, const std::string& value, JobValue kind) {
+  const auto refuse = [&](const std::string& why) {
+    std::string shown;
+    for (const char c : value.substr(0, 60)) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u < 0x20 || u == 0x7f) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "\\x%02x", u);
+        shown += hex;
+      } else {
+        shown += c;
+      }
+    }
+    return what + ": " + why + ", found \"" + shown + (value.size() > 60 ? "...\"" : "\"");
+  };
+  if (value.empty()) return refuse("expected a value");
+  for (const char c : value) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f)
+      return refuse("expected no control characters (a newline in a job script starts a command on the cluster)");
+  }
+  switch (kind) {
+    case JobValue::kShellWord: return "";  // shell_quote takes any other byte
+    case JobValue::kSbatchPath:
+      if (value.find_first_of(" \t\"'\\%") != std::string::npos)
+        return refuse("expected no spaces, quotes, backslashes or '%' (sbatch reads an #SBATCH path without a shell, and "
+                      "'%' is a Slurm file-name pattern): choose another folder with --farm-dir");
+      return "";
+    case JobValue::kPartition:
+      for (const char c : value)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.' && c != ',')
+          return refuse("expected a partition name (letters, digits, '_', '-', '.'; a list separated by ',')");
+      return "";
+    case JobValue::kTime:
+      if (value == "UNLIMITED" || value == "INFINITE") return "";
+      for (const char c : value)
+        if (!std::isdigit(static_cast<unsigned char>(c)) && c != ':' && c != '-')
+          return refuse("expected a Slurm time: minutes, MM:SS, HH:MM:SS, D-HH, D-HH:MM or D-HH:MM:SS");
+      return "";
+  }
+  return "";
+}
+
+std::vector<std::string> job_spec_problems(const SlurmJobSpec& spec) {
+  std::vector<std::string> problems;
+  const auto check = [&](const std::string& what, const std::string& value, JobValue kind) {
+    const std::string p = job_value_problem(what, value, kind);
+    if (!p.empty()) problems.push_back(p);
+  };
+  check("the rtcli binary's path", spec.rtcli, JobValue::kShellWord);
+  check("the scene", spec.scene, JobValue::kShellWord);
+  check("-o", spec.output, JobValue::kShellWord);
+  check("the farm folder", spec.farm_dir, JobValue::kSbatchPath);
+  for (const std::string& o : spec.render_options) check("render option", o, JobValue::kShellWord);
+  if (spec.partition) check("--partition", *spec.partition, JobValue::kPartition);
+  if (spec.time) check("--time", *spec.time, JobValue::kTime);
+  return problems;
 }
 
 std::string render_script(const SlurmJobSpec& spec) {
@@ -72,8 +139,9 @@ std::string finish_script(const SlurmJobSpec& spec) {
     s += "exec " + shell_quote(spec.rtcli) + " merge " + shell_quote(spec.farm_dir + "/tiles") + "/tile_*.exr -o " +
          shell_quote(spec.output) + "\n";
   else
-    s += "exec " + shell_quote(spec.rtcli) + " encode " + shell_quote(spec.farm_dir + "/frames") + "/frame_*.exr" +
-         (spec.dither ? " --dither" : "") + " -o " + shell_quote(spec.output) + "\n";
+    s += "exec " + shell_quote(spec.rtcli) + " encode " + shell_quote(spec.farm_dir + "/frames/frame_######.exr") +
+         " --frames " + shell_quote(spec.frames) + (spec.dither ? " --dither" : "") + " -o " + shell_quote(spec.output) +
+         "\n";
   return s;
 }
 

@@ -27,6 +27,7 @@ struct SlurmJobSpec {
   int cpus = 1;                            // per task: --cpus-per-task and rtcli's --threads
   std::optional<std::string> partition, time;
   bool dither = false;                     // the GIF's (moved from the render options to encode)
+  std::string frames;                      // an animation's frames (FrameList::text), for encode
 };
 
 enum class FarmWork { kTiles, kFrames };
@@ -36,6 +37,17 @@ FarmWork farm_work(const SlurmJobSpec& spec);
 
 // 'text' quoted for a POSIX shell.
 std::string shell_quote(const std::string& text);
+
+// Why `value` (for `what`: "--partition", "the farm folder", ...) cannot go into a job script, or ""
+// when it can. No value may hold a control character (a newline would start a shell command on
+// the cluster); `#SBATCH` values are read by sbatch without a shell, so they hold none of
+// whitespace, quotes, backslashes or '%' (a Slurm file-name pattern) either; a partition is
+// Slurm's name characters (and commas: a list), a time Slurm's digits, ':' and '-'.
+enum class JobValue { kShellWord, kSbatchPath, kPartition, kTime };
+std::string job_value_problem(const std::string& what, const std::string& value, JobValue kind);
+
+// The problems of every value of `spec` that reaches a script (empty: none).
+std::vector<std::string> job_spec_problems(const SlurmJobSpec& spec);
 
 std::string render_script(const SlurmJobSpec& spec);
 // Empty when nothing follows the array (numbered frames are the output).

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "io/image/gif_file.h"
 
 #include <gif_lib.h>
@@ -12,8 +13,12 @@ namespace rt {
 
 std::vector<int> gif_frame_delays(int frames, float fps) {
   std::vector<int> delays;
-  const auto at = [&](int k) { return static_cast<long>(std::lround(100.0 * k / static_cast<double>(fps))); };
-  for (int k = 0; k < frames; ++k) delays.push_back(static_cast<int>(std::max(1L, at(k + 1) - at(k))));
+  // Callers refuse a rate below kMinGifFps; a NaN or slower one is taken as the slowest, so that no
+  // delay can wrap or overflow.
+  const double rate = fps >= kMinGifFps ? std::min(static_cast<double>(fps), 1e6) : kMinGifFps;
+  const auto at = [&](int k) { return static_cast<long long>(std::llround(100.0 * k / rate)); };
+  for (int k = 0; k < frames; ++k)
+    delays.push_back(static_cast<int>(std::clamp<long long>(at(k + 1) - at(k), 1, kMaxGifDelay)));
   return delays;
 }
 

@@ -15,6 +15,10 @@ namespace rt {
 // Frame delays in hundredths of a second (GIF's unit) for `frames` frames at `fps`: each frame
 // ends at the rounded time of its successor's start, so 30 fps gives 3, 4, 3, 3, 4, 3, ... and
 // the loop lasts exactly frames / fps seconds, to the hundredth.
+// A GIF frame's delay is 16 bits of hundredths of a second: at most 655.35 s. The slowest frame
+// rate rtcli writes, 500 s a frame, keeps every delay inside that (0.001 fps wrapped to 344.6 s).
+inline constexpr double kMinGifFps = 0.002;
+inline constexpr int kMaxGifDelay = 65535;
 std::vector<int> gif_frame_delays(int frames, float fps);
 
 class GifWriter {
