@@ -1,11 +1,7 @@
 #include "io/image/environment_file.h"
 
-#include <OpenEXR/ImfArray.h>
-#include <OpenEXR/ImfRgbaFile.h>
-
-#include <exception>
-
 #include "io/base/input_file.h"
+#include "io/image/exr_file.h"
 #include "io/image/hdr_file.h"
 
 namespace rt {
@@ -19,36 +15,17 @@ bool is_exr(const std::vector<unsigned char>& b) {
   return b.size() >= 4 && b[0] == 0x76 && b[1] == 0x2f && b[2] == 0x31 && b[3] == 0x01;
 }
 
-std::optional<HdrImage> read_exr(const std::string& path, uint64_t max_texels, std::string& error) {
-  try {
-    Imf::RgbaInputFile file(path.c_str());
-    const Imath::Box2i window = file.dataWindow();
-    const long width = static_cast<long>(window.max.x) - window.min.x + 1;
-    const long height = static_cast<long>(window.max.y) - window.min.y + 1;
-    if (width < 1 || height < 1 || static_cast<uint64_t>(width) * static_cast<uint64_t>(height) > max_texels) {
-      error = "expected at most " + std::to_string(max_texels) + " texels, found " + std::to_string(width) + " x " +
-              std::to_string(height);
-      return std::nullopt;
-    }
-    Imf::Array2D<Imf::Rgba> pixels(height, width);
-    file.setFrameBuffer(&pixels[0][0] - window.min.x - static_cast<long>(window.min.y) * width, 1,
-                        static_cast<size_t>(width));
-    file.readPixels(window.min.y, window.max.y);
-    HdrImage image;
-    image.width = static_cast<int>(width);
-    image.height = static_cast<int>(height);
-    image.texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
-    for (long y = 0; y < height; ++y)
-      for (long x = 0; x < width; ++x) {
-        const Imf::Rgba& p = pixels[y][x];
-        image.texels[static_cast<size_t>(y * width + x)] =
-            Vec3(static_cast<float>(p.r), static_cast<float>(p.g), static_cast<float>(p.b));
-      }
-    return image;
-  } catch (const std::exception& e) {
-    error = std::string("OpenEXR could not read it: ") + e.what();
-    return std::nullopt;
-  }
+std::optional<HdrImage> decode_exr(const std::vector<unsigned char>& bytes, const std::string& path,
+                                   uint64_t max_texels, std::string& error) {
+  const std::optional<ExrImage> exr = read_exr_rgb(bytes, path, max_texels, error);
+  if (!exr) return std::nullopt;
+  HdrImage image;
+  image.width = exr->width;
+  image.height = exr->height;
+  const std::vector<float>& v = exr->layers.front().values;
+  image.texels.resize(v.size() / 3);
+  for (size_t i = 0; i < image.texels.size(); ++i) image.texels[i] = Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  return image;
 }
 
 }  // namespace
@@ -65,7 +42,7 @@ std::shared_ptr<const EnvironmentImage> load_environment_image(const std::string
   const uint64_t max_texels = std::min(limits.texture_texels, left);
   std::optional<HdrImage> image;
   if (looks_like_hdr(*bytes)) image = decode_hdr(*bytes, max_texels, why);
-  else if (is_exr(*bytes)) image = read_exr(path, max_texels, why);
+  else if (is_exr(*bytes)) image = decode_exr(*bytes, path, max_texels, why);
   else why = "expected a Radiance .hdr or an OpenEXR .exr image";
   if (!image) {
     error = why + " in \"" + path + "\"";

@@ -1,11 +1,13 @@
 #include "io/image/exr_file.h"
 
+#include <OpenEXR/ImfArray.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfRgbaFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
@@ -15,8 +17,11 @@
 #include <cstring>
 #include <fstream>
 #include <exception>
+#include <stdexcept>
 
+#include "io/base/input_file.h"
 #include "io/image/atomic_file.h"
+#include "io/image/exr_structure.h"
 
 namespace rt {
 namespace {
@@ -39,61 +44,44 @@ class MemoryStream final : public Imf::OStream {
   uint64_t position_ = 0;
 };
 
-// OpenEXR 3.1 allocates what a header declares before it reads it: a string attribute's size (a
-// 792-byte file asked for 2 GB, found by the exr fuzzer), the line-offset table of the data
-// window's height. The header is walked here first: every attribute must fit in the file, and the
-// windows in the pixel limit; one part of scanlines (what rtcli writes), no tiles or deep data.
-bool header_fits(const std::string& path, uint64_t max_pixels, std::string& error) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) {
-    error = path + ": cannot be read";
-    return false;
+// OpenEXR reads from a stream; ours serves the bytes already read and checked (exr_structure.h).
+class MemoryInput final : public Imf::IStream {
+ public:
+  MemoryInput(const std::vector<unsigned char>& bytes, const std::string& name)
+      : Imf::IStream(name.c_str()), bytes_(bytes) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || static_cast<uint64_t>(n) > bytes_.size() - position_)
+      throw std::runtime_error("unexpected end of file");
+    std::memcpy(c, bytes_.data() + position_, static_cast<size_t>(n));
+    position_ += static_cast<uint64_t>(n);
+    return position_ < bytes_.size();
   }
-  const uint64_t file_size = static_cast<uint64_t>(in.tellg());
-  std::vector<unsigned char> bytes(static_cast<size_t>(std::min<uint64_t>(file_size, uint64_t{1} << 22)));
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  const auto bad = [&](const std::string& why) {
+  uint64_t tellg() override { return position_; }
+  void seekg(uint64_t pos) override { position_ = std::min<uint64_t>(pos, bytes_.size()); }
+
+ private:
+  const std::vector<unsigned char>& bytes_;
+  uint64_t position_ = 0;
+};
+
+ExrLimits limits_for(uint64_t max_pixels) { return ExrLimits{max_pixels, max_pixels * kMaxExrValuesPerPixel}; }
+
+// The whole file, through the one bounded reader (no FIFO, device or folder; at most what a file
+// within the limits can hold), then its structure checked.
+std::optional<std::vector<unsigned char>> checked_bytes(const std::string& path, const ExrLimits& limits,
+                                                        std::string& error) {
+  std::string why;
+  auto bytes = read_input_bytes(path, max_exr_file_bytes(limits), why);
+  if (!bytes) {
+    error = path + ": " + why;
+    return std::nullopt;
+  }
+  ExrStructure structure;
+  if (!check_exr_structure(*bytes, limits, structure, why)) {
     error = path + ": not a readable OpenEXR image (" + why + ")";
-    return false;
-  };
-  const auto u32 = [&](size_t at) {
-    return static_cast<uint32_t>(bytes[at]) | static_cast<uint32_t>(bytes[at + 1]) << 8 |
-           static_cast<uint32_t>(bytes[at + 2]) << 16 | static_cast<uint32_t>(bytes[at + 3]) << 24;
-  };
-  if (bytes.size() < 8 || u32(0) != 20000630u) return bad("no OpenEXR signature");
-  const uint32_t flags = u32(4);
-  if (flags & 0x1a00u) return bad("tiled, multi-part or deep; rtcli reads the single-part scanline images it writes");
-  size_t at = 8;
-  const auto text = [&](std::string& out) {
-    const size_t start = at;
-    while (at < bytes.size() && bytes[at] != 0) ++at;
-    if (at >= bytes.size() || at - start > 255) return false;
-    out.assign(bytes.begin() + static_cast<std::ptrdiff_t>(start), bytes.begin() + static_cast<std::ptrdiff_t>(at));
-    ++at;
-    return true;
-  };
-  bool data_window = false, display_window = false;
-  while (true) {
-    if (at >= bytes.size()) return bad("its header ends early");
-    if (bytes[at] == 0) break;  // the end of the header
-    std::string name, type;
-    if (!text(name) || !text(type) || at + 4 > bytes.size()) return bad("its header ends early");
-    const uint32_t size = u32(at);
-    at += 4;
-    if (size > file_size - at || at + size > bytes.size()) return bad("attribute " + name + " is larger than the file");
-    if ((name == "dataWindow" || name == "displayWindow") && type == "box2i" && size == 16) {
-      const auto i32 = [&](size_t k) { return static_cast<int64_t>(static_cast<int32_t>(u32(at + 4 * k))); };
-      const int64_t w = i32(2) - i32(0) + 1, h = i32(3) - i32(1) + 1;
-      if (w < 1 || h < 1 || static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > max_pixels)
-        return bad(name + " of " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than " +
-                   std::to_string(max_pixels));
-      (name == "dataWindow" ? data_window : display_window) = true;
-    }
-    at += size;
+    return std::nullopt;
   }
-  if (!data_window || !display_window) return bad("no dataWindow or displayWindow");
-  return true;
+  return bytes;
 }
 
 std::string channel_name(const ExrLayer& layer, const std::string& channel) {
@@ -157,9 +145,11 @@ bool write_exr(const std::string& path, const ExrImage& image, bool full_float, 
 }
 
 std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, std::string& error) {
-  if (!header_fits(path, max_pixels, error)) return std::nullopt;
+  const auto bytes = checked_bytes(path, limits_for(max_pixels), error);
+  if (!bytes) return std::nullopt;
   try {
-    Imf::InputFile file(path.c_str(), 1);
+    MemoryInput stream(*bytes, path);
+    Imf::InputFile file(stream, 1);
     if (!file.isComplete()) {
       error = path + ": incomplete (its pixels end early)";
       return std::nullopt;
@@ -241,14 +231,40 @@ std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, s
   }
 }
 
-bool exr_is_complete(const std::string& path) {
-  std::string error;
-  if (!header_fits(path, uint64_t{1} << 26, error)) return false;  // kMaxPixels: io does not see render settings
+std::optional<ExrImage> read_exr_rgb(const std::vector<unsigned char>& bytes, const std::string& name,
+                                     uint64_t max_pixels, std::string& error) {
+  ExrStructure structure;
+  std::string why;
+  // Colour is read as RGBA halves: 4 values a pixel, whatever the file's channels.
+  if (!check_exr_structure(bytes, ExrLimits{max_pixels, max_pixels * 4}, structure, why)) {
+    error = "not a readable OpenEXR image (" + why + ")";
+    return std::nullopt;
+  }
   try {
-    Imf::InputFile file(path.c_str(), 1);
-    return file.isComplete();
-  } catch (const std::exception&) {
-    return false;
+    MemoryInput stream(bytes, name);
+    Imf::RgbaInputFile file(stream, 1);
+    const Imath::Box2i window = file.dataWindow();
+    const long width = static_cast<long>(window.max.x) - window.min.x + 1;
+    const long height = static_cast<long>(window.max.y) - window.min.y + 1;
+    Imf::Array2D<Imf::Rgba> pixels(height, width);
+    file.setFrameBuffer(&pixels[0][0] - window.min.x - static_cast<long>(window.min.y) * width, 1,
+                        static_cast<size_t>(width));
+    file.readPixels(window.min.y, window.max.y);
+    ExrImage image;
+    image.width = static_cast<int>(width);
+    image.height = static_cast<int>(height);
+    image.window = PixelWindow{0, 0, image.width, image.height};
+    ExrLayer& colour = image.layers.emplace_back(ExrLayer{"", {"R", "G", "B"}, {}});
+    colour.values.reserve(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    for (long y = 0; y < height; ++y)
+      for (long x = 0; x < width; ++x) {
+        const Imf::Rgba& p = pixels[y][x];
+        for (const Imath::half h : {p.r, p.g, p.b}) colour.values.push_back(static_cast<float>(h));
+      }
+    return image;
+  } catch (const std::exception& e) {
+    error = std::string("OpenEXR could not read it: ") + e.what();
+    return std::nullopt;
   }
 }
 

@@ -15,6 +15,9 @@
 namespace rt {
 
 inline constexpr int kMaxExrChannels = 64;  // read_exr refuses a file of more
+// read_exr holds at most this many values (channels x pixels) a pixel of its limit: rtcli writes
+// 10 (colour, albedo, normal, depth), and room is left for an alpha and a spare layer.
+inline constexpr uint64_t kMaxExrValuesPerPixel = 12;
 
 struct ExrLayer {
   std::string name;                   // "" for the colour (R, G, B); else the channels' prefix
@@ -35,12 +38,17 @@ struct ExrImage {
 // Writes `image` (half floats unless `full_float`) through a temporary file renamed over `path`.
 bool write_exr(const std::string& path, const ExrImage& image, bool full_float, std::string& error);
 
-// Reads every channel as float, and the string attributes; nothing, with `error`, for a file that
-// is not a complete OpenEXR image or holds more than `max_pixels` pixels.
+// Reads every channel as float, and the string attributes; nothing, with `error` (naming the file),
+// for a file that is not a regular file, not a complete OpenEXR image whose pixels decode, holds
+// more than `max_pixels` pixels or more than max_pixels x kMaxExrValuesPerPixel values. The file is
+// read once, through the bounded reader, and checked (io/image/exr_structure.h) before OpenEXR
+// sees it.
 std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, std::string& error);
 
-// Whether the file has a complete OpenEXR header and every line of pixels (a resumed render's
-// test: a file cut short by a crash is not complete).
-bool exr_is_complete(const std::string& path);
+// The colour of any single-part scanline OpenEXR file in `bytes` (RGB, RGBA, luminance and chroma,
+// half or float, any compression; OpenEXR's RGBA interface), as one layer "" of R, G, B over the
+// whole image: environment images. Checked as read_exr checks, with 4 values a pixel.
+std::optional<ExrImage> read_exr_rgb(const std::vector<unsigned char>& bytes, const std::string& name,
+                                     uint64_t max_pixels, std::string& error);
 
 }  // namespace rt
