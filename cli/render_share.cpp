@@ -37,8 +37,9 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
   const size_t slash = text.find('/');
   const auto i = slash == std::string::npos ? std::nullopt : parse_decimal(text.substr(0, slash));
   const auto n = slash == std::string::npos ? std::nullopt : parse_decimal(text.substr(slash + 1));
-  if (!i || !n || *n < 1 || *n > 100000 || *i < 0 || *i >= *n) {
-    error = std::string(option) + ": expected I/N with 0 <= I < N <= 100000, or auto, found \"" + text + "\"";
+  if (!i || !n || *n < 1 || *n > kMaxShares || *i < 0 || *i >= *n) {
+    error = std::string(option) + ": expected I/N with 0 <= I < N <= " + std::to_string(kMaxShares) +
+            ", or auto, found \"" + text + "\"";
     return std::nullopt;
   }
   return Share{static_cast<int>(*i), static_cast<int>(*n)};

@@ -15,6 +15,9 @@
 
 namespace rt {
 
+// The most parts --tile and --chunk split a render into.
+inline constexpr int kMaxShares = 100000;
+
 struct Share {
   int index = 0, count = 1;
 };

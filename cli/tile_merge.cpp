@@ -3,10 +3,15 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "cli/render_share.h"
 #include "core/render_settings.h"
 
 namespace rt {
 namespace {
+
+// Problems of one kind listed before the rest are only counted: thousands of tiles must not make
+// millions of lines.
+constexpr int kMaxListed = 10;
 
 // What must agree between tiles, beyond the image's size and layers.
 constexpr const char* kSameKeys[] = {"rtcli:version", "rtcli:scene_hash", "rtcli:settings_hash", "rtcli:frame"};
@@ -50,6 +55,8 @@ bool overlap(const PixelWindow& a, const PixelWindow& b) {
 // The tiles' bands "I/N" when every tile is one of N: the missing ones, by number and by the rows
 // between their neighbours.
 void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::string>& problems) {
+  // A band count comes from the file: more bands than rows (or than --tile takes) is no render's.
+  const int most = std::min(tiles.front().height, kMaxShares);
   int count = -1;
   std::vector<bool> present;
   std::vector<PixelWindow> windows;
@@ -60,15 +67,17 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
     const int i = std::atoi(band.substr(0, slash).c_str()), n = std::atoi(band.substr(slash + 1).c_str());
     if (count >= 0 && n != count) return;
     count = n;
-    if (n < 1 || i < 0 || i >= n) return;
+    if (n < 1 || n > most || i < 0 || i >= n) return;
     present.resize(static_cast<size_t>(n), false);
     windows.resize(static_cast<size_t>(n));
     present[static_cast<size_t>(i)] = true;
     windows[static_cast<size_t>(i)] = t.window;
   }
   const int height = tiles.front().height;
+  int missing = 0;
   for (int i = 0; i < count; ++i) {
     if (present[static_cast<size_t>(i)]) continue;
+    if (++missing > kMaxListed) continue;  // counted, not listed
     // The rows from the band above's end (or the top) to the band below's start (or the bottom).
     int y0 = i == 0 ? 0 : -1, y1 = i == count - 1 ? height : -1;
     if (i > 0 && present[static_cast<size_t>(i) - 1]) y0 = windows[static_cast<size_t>(i) - 1].y1;
@@ -77,17 +86,34 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
     problems.push_back("tile " + std::to_string(i) + "/" + std::to_string(count) + rows +
                        " is missing: render it with --tile " + std::to_string(i) + "/" + std::to_string(count));
   }
+  if (missing > kMaxListed)
+    problems.push_back("... and " + std::to_string(missing - kMaxListed) + " more tiles of " + std::to_string(count) +
+                       " are missing (" + std::to_string(missing) + " in all)");
 }
 
 }  // namespace
 
 std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems) {
   std::vector<ExrImage> tiles;
+  uint64_t held = 0;  // pixels of the tiles read
   for (const std::string& path : paths) {
     std::string error;
     auto tile = read_exr(path, kMaxPixels, error);
-    if (!tile) problems.push_back(error);
-    else tiles.push_back(std::move(*tile));
+    if (!tile) {
+      problems.push_back(error);
+      continue;
+    }
+    const ExrLayer* colour = tile->layer("");
+    if (!colour || colour->channels.size() < 3 || colour->channels[0] != "R" || colour->channels[1] != "G" ||
+        colour->channels[2] != "B") {
+      problems.push_back(path + ": expected the colour channels R, G, B");
+      continue;
+    }
+    held += tile->window.pixels();
+    tiles.push_back(std::move(*tile));
+    // Tiles that each hold their own pixels hold the image's at most: past that some overlap, and
+    // reading on (thousands of whole-image tiles) would only fill memory.
+    if (held > static_cast<uint64_t>(tiles.front().width) * static_cast<uint64_t>(tiles.front().height)) break;
   }
   if (!problems.empty() || tiles.empty()) return std::nullopt;
 
@@ -116,12 +142,19 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
   }
   if (!problems.empty()) return std::nullopt;
 
-  // Exactly once.
+  // Exactly once: the first few overlapping pairs named, the rest counted.
+  uint64_t overlapping = 0;
   for (size_t a = 0; a < tiles.size(); ++a)
     for (size_t b = a + 1; b < tiles.size(); ++b)
-      if (overlap(tiles[a].window, tiles[b].window))
+      if (overlap(tiles[a].window, tiles[b].window) && ++overlapping <= kMaxListed)
         problems.push_back(paths[a] + " (" + window_text(tiles[a].window) + ") and " + paths[b] + " (" +
                            window_text(tiles[b].window) + ") overlap");
+  if (overlapping > kMaxListed)
+    problems.push_back("... and " + std::to_string(overlapping - kMaxListed) + " more overlapping pairs among the " +
+                       std::to_string(tiles.size()) + " tiles read");
+  if (overlapping > 0 && tiles.size() < paths.size())
+    problems.push_back("the first " + std::to_string(tiles.size()) + " of the " + std::to_string(paths.size()) +
+                       " tiles already hold more pixels than the image: reading stopped there");
   if (!problems.empty()) return std::nullopt;
   uint64_t covered = 0;
   for (const ExrImage& t : tiles) covered += t.window.pixels();
