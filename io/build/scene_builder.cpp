@@ -395,8 +395,10 @@ std::optional<BuiltScene> build_scene(const SceneDescription& desc, const JsonDo
   Builder builder(desc, source, options, diags);
   builder.add_nodes(desc.nodes, -1);
   builder.add_animation();
+  // After finish(): it reads the environment image, which is an input like every other file.
+  std::optional<BuiltScene> built = builder.finish();
   if (files) *files = builder.take_files();
-  return builder.finish();
+  return built;
 }
 
 }  // namespace rt

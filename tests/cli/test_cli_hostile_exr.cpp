@@ -269,3 +269,35 @@ TEST_CASE("--skip-existing renders again an EXR of other settings or with damage
   CHECK_THAT(r.output, Catch::Contains("1 of 2 frame's output is already there and complete") &&
                            Catch::Contains("wrote " + dir + "/f_01.exr"));
 }
+
+TEST_CASE("an environment image is one of the scene's inputs: never overwritten, and in the scene hash",
+          "[exr][cli][hostile]") {
+  const std::string dir = folder("env-input");
+  fs::copy_file(rt::test::source_path("scenes/textures/sky.hdr"), dir + "/sky.hdr");
+  write(dir + "/sky.exr", image_of(16, 8, 0));
+  for (const char* sky : {"sky.hdr", "sky.exr"}) {
+    rt::test::write_file("env-input/scene.json", std::string(R"({"render": {"width": 16, "height": 8},
+      "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]}, "background": {"environment": ")") + sky + R"("},
+      "materials": {"m": {"kd": 0.5}}, "lights": [{"type": "point", "position": [0, 3, 0]}],
+      "nodes": [{"shape": "sphere", "material": "m"}]})");
+    INFO(sky);
+    // -o naming the environment image: refused, the image untouched.
+    Run r;
+    if (std::string(sky) == "sky.exr") {
+      const std::string before = read_file(dir + "/sky.exr");
+      r = rtcli("render '" + dir + "/scene.json' -o '" + dir + "/sky.exr'");
+      CHECK(r.code == 2);
+      CHECK_THAT(r.output, Catch::Contains("it is the input file"));
+      CHECK(read_file(dir + "/sky.exr") == before);
+    }
+    // Tiles rendered before and after the image changed do not merge.
+    r = rtcli("render '" + dir + "/scene.json' -q --tile 0/2 -o '" + dir + "/t0.exr'");
+    REQUIRE(r.code == 0);
+    std::ofstream(dir + "/" + sky, std::ios::binary | std::ios::app) << '\n';
+    r = rtcli("render '" + dir + "/scene.json' -q --tile 1/2 -o '" + dir + "/t1.exr'");
+    REQUIRE(r.code == 0);
+    r = rtcli("merge '" + dir + "/t0.exr' '" + dir + "/t1.exr' -o '" + dir + "/m.png'");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("a different scene_hash"));
+  }
+}
