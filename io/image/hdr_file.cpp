@@ -126,6 +126,18 @@ std::optional<HdrImage> decode_hdr(std::span<const unsigned char> bytes, uint64_
             std::to_string(height);
     return std::nullopt;
   }
+  // The fewest bytes that many scanlines can be written in (a run-length line: a 4-byte header and
+  // a run of at most 127 bytes in 2, for each of 4 channels; else 4 bytes a pixel), checked before
+  // the texels are allocated: a header promising 8192 x 4096 with no pixels took 400 MB.
+  const bool rle_width = width >= 8 && width < 32768;
+  const uint64_t min_line = rle_width ? 4 + 4 * 2 * ((static_cast<uint64_t>(width) + 126) / 127)
+                                      : 4 * static_cast<uint64_t>(width);
+  if (c.left() / min_line < static_cast<uint64_t>(height)) {
+    error = "the header promises " + std::to_string(width) + " x " + std::to_string(height) + " texels, which take at least " +
+            std::to_string(min_line * static_cast<uint64_t>(height)) + " bytes, and " + std::to_string(c.left()) +
+            " follow it (cut short?)";
+    return std::nullopt;
+  }
   HdrImage image;
   image.width = static_cast<int>(width);
   image.height = static_cast<int>(height);

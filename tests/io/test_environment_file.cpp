@@ -93,8 +93,20 @@ TEST_CASE("hdr: every truncation and corruption of a file ends in an error, neve
   CHECK_THAT(message("#?RADIANCE\n\n-Y 100000 +X 100000\n"), Catch::Contains("expected at most 1000000 texels"));
   // (std::string literals: the pixel data holds zero bytes.)
   CHECK_THAT(message("#?RADIANCE\n\n-Y 1 +X 2\n\x01\x01\x01\x05\x01\x01\x01\x05"s), Catch::Contains("old run-length"));
-  CHECK_THAT(message("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\xff\x07"s), Catch::Contains("overruns its scanline"));
-  CHECK_THAT(message("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x09"s), Catch::Contains("its width is 9"));
+  // (Padded to the fewest bytes a line of 8 can take, 12, so that the scanline itself is read.)
+  CHECK_THAT(message("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\xff\x07\0\0\0\0\0\0"s),
+             Catch::Contains("overruns its scanline"));
+  CHECK_THAT(message("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x09\0\0\0\0\0\0\0\0"s), Catch::Contains("its width is 9"));
+  // A header promising 8192 x 4096 texels with no pixels after it: refused before the 400 MB of
+  // texels are allocated (issue 36), from the bytes that follow.
+  {
+    const std::string text = "#?RADIANCE\n\n-Y 4096 +X 8192\n\x02\x02\x20\x00"s;
+    std::string e;
+    CHECK_FALSE(decode_hdr(std::vector<uint8_t>(text.begin(), text.end()), uint64_t{1} << 26, e));
+    CHECK_THAT(e, Catch::Contains("the header promises 8192 x 4096 texels, which take at least 2146304 bytes, and 4 follow"));
+  }
+  CHECK_THAT(message("#?RADIANCE\n\n-Y 3 +X 4\n" + std::string(47, '\x10')), Catch::Contains("take at least 48 bytes"));
+  CHECK(message("#?RADIANCE\n\n-Y 3 +X 4\n" + std::string(48, '\x10')) == "read");
 }
 
 TEST_CASE("environment files: .hdr and .exr load as linear radiance, anything else is refused by name", "[hdr]") {
