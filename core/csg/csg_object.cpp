@@ -8,24 +8,6 @@
 namespace rt {
 namespace {
 
-// Whether the line meets the box at all (its interval ignored).
-bool line_meets_box(const Aabb& box, const Ray& line) {
-  if (box.empty()) return false;
-  float t0 = -kInfinity, t1 = kInfinity;
-  for (int a = 0; a < 3; ++a) {
-    const float o = line.origin[a], d = line.direction[a];
-    if (d == 0.0f) {
-      if (o < box.lo[a] || o > box.hi[a]) return false;
-      continue;
-    }
-    float ta = (box.lo[a] - o) / d, tb = (box.hi[a] - o) / d;
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-  }
-  return t0 <= t1;
-}
-
 // The box grown by a little more than rounding: leaf boxes are tested in world space, the
 // shapes in their own, and a box as tight as a cube's faces could otherwise lose a real span.
 Aabb padded(const Aabb& box) {
@@ -77,7 +59,7 @@ void CsgObject::add_surface(const CsgSurface& s) {
 
 void CsgObject::close(uint32_t node) { nodes_[node].end = static_cast<uint32_t>(nodes_.size()); }
 
-void CsgObject::finish() {
+void CsgObject::finish(bool index_children) {
   // Children follow their parent, so a backward pass sees every subtree before its root.
   for (size_t i = nodes_.size(); i-- > 0;) {
     CsgNode& n = nodes_[i];
@@ -95,6 +77,22 @@ void CsgObject::finish() {
       first = false;
     }
     if (n.bounds.empty()) n.bounds = Aabb{};
+  }
+  // Operations of many children get their children's boxes in a tree (core/csg/csg_child_index.h).
+  child_indices_.clear();
+  for (size_t i = 0; index_children && i < nodes_.size(); ++i) {
+    CsgNode& n = nodes_[i];
+    n.child_index = CsgNode::kNoChildIndex;
+    if (n.leaf) continue;
+    std::vector<uint32_t> children;
+    std::vector<Aabb> boxes;
+    for (uint32_t c = static_cast<uint32_t>(i) + 1; c < n.end; c = nodes_[c].end) {
+      children.push_back(c);
+      boxes.push_back(nodes_[c].bounds);
+    }
+    if (children.size() < CsgChildIndex::kMinIndexedChildren) continue;
+    n.child_index = static_cast<uint32_t>(child_indices_.size());
+    child_indices_.emplace_back(children, boxes);
   }
 }
 
@@ -115,15 +113,38 @@ void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) co
     return;
   }
   const bool cuts = n.op == CsgOp::kIntersection || n.op == CsgOp::kDifference;
-  uint32_t child = index + 1;
-  node_spans(child, line, out);
   CsgSpanList operand, combined;
-  for (child = nodes_[child].end; child < n.end; child = nodes_[child].end) {
-    if (out.empty() && cuts) return;  // nothing left to cut
+  // One child's spans combined into `out`, as the operation takes them in order.
+  const auto take = [&](uint32_t child) {
     node_spans(child, line, operand);
-    if (operand.empty() && n.op != CsgOp::kIntersection) continue;
+    if (operand.empty() && n.op != CsgOp::kIntersection) return;
     csg_combine(n.op, out, operand, combined);
     out = combined;
+  };
+  if (n.child_index != CsgNode::kNoChildIndex) {
+    // Only the children whose boxes the line meets: the others have no spans, which union, merge
+    // and difference skip and which empty an intersection.
+    constexpr int kMet = 256;
+    uint32_t met[kMet];
+    const int count = child_indices_[n.child_index].met(line, met, kMet);
+    if (count >= 0) {
+      const bool first_met = count > 0 && met[0] == index + 1;
+      if (cuts && !first_met) return;
+      if (n.op == CsgOp::kIntersection && static_cast<uint32_t>(count) < child_indices_[n.child_index].size()) return;
+      int k = 0;
+      if (first_met) node_spans(met[k++], line, out);
+      for (; k < count; ++k) {
+        if (out.empty() && cuts) return;  // nothing left to cut
+        take(met[k]);
+      }
+      return;
+    }
+  }
+  uint32_t child = index + 1;
+  node_spans(child, line, out);
+  for (child = nodes_[child].end; child < n.end; child = nodes_[child].end) {
+    if (out.empty() && cuts) return;  // nothing left to cut
+    take(child);
   }
 }
 

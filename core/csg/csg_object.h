@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/accel/mesh_instance.h"
+#include "core/csg/csg_child_index.h"
 #include "core/csg/csg_spans.h"
 #include "core/hit.h"
 #include "core/mesh.h"
@@ -36,6 +37,9 @@ struct CsgNode {
   uint32_t first_surface = 0;  // a leaf's surfaces: [first_surface, first_surface + surface_count)
   uint32_t surface_count = 0;  // a shape has one; a mesh operand one per primitive
   Aabb bounds;                 // a little wider than exact, so rounding never drops a span
+  uint32_t child_index = kNoChildIndex;  // an operation of many children: its CsgChildIndex
+
+  static constexpr uint32_t kNoChildIndex = ~0u;
 };
 
 class CsgObject {
@@ -45,12 +49,13 @@ class CsgObject {
   static constexpr int kMaxDepth = 16;
 
   // Building, in prefix order: open(op) ... operands ... close(index); a leaf is begin_leaf(),
-  // its surfaces, close(index). Then finish() computes the bounds.
+  // its surfaces, close(index). Then finish() computes the bounds, and the child indices of
+  // operations with many children (`index_children`: false only to test them against the plain walk).
   uint32_t open(CsgOp op);
   uint32_t begin_leaf();
   void add_surface(const CsgSurface& s);
   void close(uint32_t node);
-  void finish();
+  void finish(bool index_children = true);
 
   const std::vector<CsgNode>& nodes() const { return nodes_; }
   const std::vector<CsgSurface>& surfaces() const { return surfaces_; }
@@ -67,6 +72,7 @@ class CsgObject {
 
   std::vector<CsgNode> nodes_;
   std::vector<CsgSurface> surfaces_;
+  std::vector<CsgChildIndex> child_indices_;
 };
 
 // Hit records of a CSG solid: hit.part, b1, b2 are the operand surface's own; hit.operand is

@@ -239,3 +239,55 @@ TEST_CASE("CSG: the BVH's closest and any hits agree with testing every primitiv
     CHECK(n_bvh == n_brute);
   }
 }
+
+TEST_CASE("CSG: an operation of many operands finds through its child index exactly the spans of the plain walk",
+          "[csg]") {
+  // 3 x 400 spheres under union, merge, difference (a slab minus them) and an intersection of 40
+  // overlapping ones, nested: each line's spans, with and without the child indices, bit for bit.
+  Rng rng(5);
+  const auto random_sphere = [&](float spread, float radius) {
+    return sphere(Vec3(spread * (2 * rng.next_float() - 1), spread * (2 * rng.next_float() - 1),
+                       0.5f * spread * (2 * rng.next_float() - 1)),
+                  radius * (0.5f + rng.next_float()));
+  };
+  const auto build = [&](bool index) {
+    rng = Rng(5);
+    CsgObject c;
+    const uint32_t root = c.open(CsgOp::kUnion);
+    for (const CsgOp op : {CsgOp::kUnion, CsgOp::kMerge, CsgOp::kDifference}) {
+      const uint32_t node = c.open(op);
+      if (op == CsgOp::kDifference) leaf(c, cube(Vec3(0), 3.0f));
+      for (int i = 0; i < 400; ++i) leaf(c, random_sphere(3.0f, 0.2f));
+      c.close(node);
+    }
+    const uint32_t both = c.open(CsgOp::kIntersection);
+    for (int i = 0; i < 40; ++i) leaf(c, sphere(Vec3(0.01f * static_cast<float>(i), 0, 0), 1.0f));
+    c.close(both);
+    c.close(root);
+    c.finish(index);
+    return c;
+  };
+  const CsgObject indexed = build(true), plain = build(false);
+  int spans = 0, differences = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 o(8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1));
+    const Vec3 target(3 * (2 * rng.next_float() - 1), 3 * (2 * rng.next_float() - 1), 3 * (2 * rng.next_float() - 1));
+    const Ray line = make_ray(o, target - o);
+    CsgSpanList a, b;
+    indexed.spans(line, a);
+    plain.spans(line, b);
+    spans += a.size();
+    if (a.size() != b.size()) {
+      ++differences;
+      continue;
+    }
+    for (int k = 0; k < a.size(); ++k) {
+      const CsgSpan &x = a[k], &y = b[k];
+      if (x.in.t != y.in.t || x.out.t != y.out.t || x.in.surface != y.in.surface || x.out.surface != y.out.surface ||
+          x.medium != y.medium)
+        ++differences;
+    }
+  }
+  CHECK(differences == 0);
+  CHECK(spans > 20000);  // the lines do cross the solid, many times
+}
