@@ -13,6 +13,10 @@ struct Ray {
   float tmin = 0.0f;
   float tmax = kInfinity;
 
+  // Written out (not left to C++20's parenthesised aggregates): Ray(o, d) builds with clang 14 too.
+  Ray() = default;
+  Ray(Vec3 o, Vec3 d, float t0 = 0.0f, float t1 = kInfinity) : origin(o), direction(d), tmin(t0), tmax(t1) {}
+
   Vec3 at(float t) const { return origin + t * direction; }
 };
 

@@ -30,7 +30,7 @@ Vec3 point_in(const Aabb& box, Rng& rng) {
 std::vector<Ray> incoherent_rays(const Aabb& bounds) {
   const Vec3 centre = bounds.centre();
   const float side = 3.0f * max_component(bounds.extent());
-  const Aabb cube(centre - Vec3(0.5f * side), centre + Vec3(0.5f * side));
+  const Aabb cube{centre - Vec3(0.5f * side), centre + Vec3(0.5f * side)};  // braces: clang 14 has no C++20 parenthesized aggregates
   std::vector<Ray> rays(kIncoherentRays);
   for (size_t i = 0; i < rays.size(); ++i) {
     Rng rng(mix64(i), 7);

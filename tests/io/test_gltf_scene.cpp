@@ -367,18 +367,18 @@ TEST_CASE("glTF doubleSided false: rays pass through the back, shadows still fal
                                                R"("}, "transform": {"scale": )" + scale + "}}]}");
   };
   const auto hits = [](const Scene& s, float z, float dz) {
-    Ray r(Vec3(0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz));
+    Ray r{Vec3(0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz)};
     Hit hit;
     return s.intersect(r, hit);
   };
   const LoadedScene single = scene("single.json", square_with("single-sided.gltf", false), "1");
   CHECK(hits(single.scene, 5.0f, -1.0f));        // from the front: there
   CHECK_FALSE(hits(single.scene, -5.0f, 1.0f));  // from behind: camera and secondary rays pass
-  CHECK(single.scene.occluded(Ray(Vec3(0.5f, 0.5f, -5.0f), Vec3(0.0f, 0.0f, 1.0f))));  // shadows fall
+  CHECK(single.scene.occluded(Ray{Vec3(0.5f, 0.5f, -5.0f), Vec3(0.0f, 0.0f, 1.0f)}));  // shadows fall
   // Mirrored (a negative scale), the front still faces +z: glTF turns the winding with the determinant.
   const LoadedScene mirrored = scene("mirrored.json", square_with("single-sided-m.gltf", false), "[-1, 1, 1]");
   const auto hits_at = [](const Scene& s, float z, float dz) {
-    Ray r(Vec3(-0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz));
+    Ray r{Vec3(-0.5f, 0.5f, z), Vec3(0.0f, 0.0f, dz)};
     Hit hit;
     return s.intersect(r, hit);
   };

@@ -89,7 +89,7 @@ TEST_CASE("projections: the axis, and a label on a cylinder", "[materials][uv]")
   const AnalyticShape can{ShapeKind::kCylinder, 0,
                           *make_transform(compose_trs(Vec3(1, 2, 3), Vec3(-90, 0, 0), Vec3(0.5f, 0.5f, 2)))};
   for (const Vec2 aim : {Vec2(0.1f, 0.3f), Vec2(-0.2f, 0.8f), Vec2(0.15f, 1.7f)}) {
-    Ray ray(Vec3(1 + aim.x, 2 + aim.y, 10), Vec3(0, 0, -1));
+    Ray ray{Vec3(1 + aim.x, 2 + aim.y, 10), Vec3(0, 0, -1)};
     Hit hit;
     REQUIRE(intersect_shape(can, ray, hit));
     const SurfaceInteraction si = shape_surface(can, ray, hit);
@@ -100,7 +100,7 @@ TEST_CASE("projections: the axis, and a label on a cylinder", "[materials][uv]")
   }
   // On a sphere the default stays y; asked for, z.
   const AnalyticShape ball{ShapeKind::kSphere, 0, Transform{}};
-  Ray down(Vec3(0, 5, 0.01f), Vec3(0, -1, 0));
+  Ray down{Vec3(0, 5, 0.01f), Vec3(0, -1, 0)};
   Hit hit;
   REQUIRE(intersect_shape(ball, down, hit));
   const SurfaceInteraction top = shape_surface(ball, down, hit);
