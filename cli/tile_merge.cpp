@@ -93,12 +93,13 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
 
 }  // namespace
 
-std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems) {
+std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems,
+                                    uint64_t max_pixels) {
   std::vector<ExrImage> tiles;
   uint64_t held = 0;  // pixels of the tiles read
   for (const std::string& path : paths) {
     std::string error;
-    auto tile = read_exr(path, kMaxPixels, error);
+    auto tile = read_exr(path, max_pixels, error);
     if (!tile) {
       problems.push_back(error);
       continue;

@@ -9,12 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "core/render_settings.h"
 #include "io/image/exr_file.h"
 
 namespace rt {
 
 // The whole image, its metadata the tiles' with rtcli:crop the whole image and no rtcli:tile
-// (what a render of the whole image writes); nothing, with every problem in `problems`.
-std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems);
+// (what a render of the whole image writes); nothing, with every problem in `problems`. Each tile
+// is read within `max_pixels` (and so max_pixels x kMaxExrValuesPerPixel values: the fuzzer's
+// smaller limit lets it reach every channel x pixel product).
+std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::vector<std::string>& problems,
+                                    uint64_t max_pixels = kMaxPixels);
 
 }  // namespace rt

@@ -13,7 +13,10 @@
 #   gltf_image    the same bytes as a glTF image in a buffer view, used in every material slot
 #   extras_image  the same bytes as the image file a glTF material's rtcli_bump extras name
 #   environment   Radiance .hdr bytes: decode, build the sampling distribution, sample and look up
-#   exr           OpenEXR bytes as a tile for rtcli merge: read every channel and attribute, merge
+#   environment_exr  OpenEXR bytes as a scene's environment file: load (bounded reader, structure
+#                 walk, OpenEXR's RGBA interface, texel budget), sample and look up
+#   exr           OpenEXR bytes as a tile for rtcli merge: read every channel and attribute within a
+#                 pixel limit of 2^20 (so every channel x pixel product is in reach), merge
 #
 #   tools/fuzz.sh all SECONDS    every target in turn, SECONDS each
 #
@@ -23,7 +26,7 @@
 # Once fixed, copy it into tests/fuzz/regressions/TARGET/: the normal test suite replays it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-targets="scene gltf bvh texture texture_file gltf_image extras_image environment exr"
+targets="scene gltf bvh texture texture_file gltf_image extras_image environment environment_exr exr"
 if [ $# -lt 2 ] || ! [[ " $targets all " == *" $1 "* ]] || ! [[ "$2" =~ ^[0-9]+$ ]]; then
   echo "usage: tools/fuzz.sh ${targets// /|}|all SECONDS [libFuzzer options...]" >&2
   exit 2
@@ -56,7 +59,7 @@ if [ -z "$(ls -A "$corpus")" ]; then
     gltf) seed "$root"/scenes/models/*.gl* "$root"/../shared/gltf/**/*.gltf "$root"/../shared/gltf/**/*.glb ;;
     bvh) python3 "$root/tests/fuzz/make_bvh_seeds.py" "$corpus" ;;
     environment) seed "$root"/scenes/textures/*.hdr ;;
-    exr) seed "$root"/tests/fuzz/regressions/exr/* ;;
+    exr | environment_exr) seed "$root"/tests/fuzz/regressions/exr/* ;;
     texture | texture_file | gltf_image | extras_image)
       seed "$root"/tests/data/images/* "$root"/tests/data/bad/textures/*.png "$root"/tests/fuzz/regressions/texture/*
       if [ "$target" = texture ]; then seed "$root"/scenes/textures/*.png "$root"/../shared/gltf/**/*.png; fi ;;

@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <string>
 
+namespace rt {
+class Environment;
+}
+
 namespace rt::fuzz {
 
 // A JSON scene file: parse, check, build (glTF references resolve against scenes/), render 4x4.
@@ -32,9 +36,16 @@ std::string gltf_image(const uint8_t* data, size_t size);
 // whose sampling must give finite directions with the density pdf() gives them, and finite
 // radiance everywhere.
 std::string environment_image(const uint8_t* data, size_t size);
+// The same for OpenEXR bytes as a scene's environment file: loaded as a scene loads it (the
+// bounded reader, the structure walk, OpenEXR's RGBA interface, the texel budget), then sampled.
+std::string environment_exr(const uint8_t* data, size_t size);
+// The sampling checks of an environment (`seed` picks the sample points).
+std::string check_environment_sampling(const Environment& env, uint64_t seed);
 
-// OpenEXR bytes as a tile given to rtcli merge: read (every channel, the string attributes, a pixel
-// limit), checked, and merged alone (which succeeds only for a whole image).
+// OpenEXR bytes as a tile given to rtcli merge: read (every channel, the string attributes) within a
+// pixel limit of 2^20, so 12 x 2^20 values (where merge's own allows 2^26 pixels: a product the
+// fuzzer's memory limit would stop first), checked, and merged alone (which succeeds only for a
+// whole image).
 std::string exr_tile(const uint8_t* data, size_t size);
 std::string extras_image(const uint8_t* data, size_t size);
 

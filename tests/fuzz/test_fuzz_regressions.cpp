@@ -36,6 +36,8 @@ TEST_CASE("fuzz regressions: EXR tiles", "[fuzz]") {
 
 TEST_CASE("fuzz regressions: environment images", "[fuzz]") {
   CHECK(replay("environment", rt::fuzz::environment_image) >= 1);
+  CHECK(replay("environment_exr", rt::fuzz::environment_exr) >= 2);
+  CHECK(replay("exr", rt::fuzz::environment_exr) >= 3);  // the tiles' finds, as environment files too
 }
 TEST_CASE("fuzz regressions: texture images", "[fuzz]") {
   CHECK(replay("texture", rt::fuzz::texture_image) >= 2);
