@@ -241,7 +241,7 @@ TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's d
   CHECK_THAT(r.output, Catch::Contains("0.001 frames per second: a GIF frame lasts at most 655.35 s"));
 }
 
-TEST_CASE("--skip-existing renders again an EXR of other settings or with damaged pixels", "[exr][cli][split]") {
+TEST_CASE("cli: --skip-existing renders again an EXR of other settings or with damaged pixels", "[exr][cli][split]") {
   const std::string dir = folder("skip-exr");
   const std::string render = "render scenes/turntable.json --frames 0-1 --width 16 --height 12 --exr-float -o '" + dir +
                              "/f_##.exr' --skip-existing";
