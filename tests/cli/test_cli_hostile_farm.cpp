@@ -28,7 +28,7 @@ std::string folder(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("farm: a value that would break out of a job script is refused by name, and nothing is written",
+TEST_CASE("cli farm: a value that would break out of a job script is refused by name, and nothing is written",
           "[cli][farm][hostile]") {
   const std::string dir = folder("farm-hostile");
   // Each as the shell passes it: single-quoted, a real newline inside.
@@ -66,7 +66,7 @@ TEST_CASE("farm: a value that would break out of a job script is refused by name
   CHECK_THAT(read_file(dir + "/f/render.sbatch"), Catch::Contains("#SBATCH --job-name=rtcli-it_s\n"));
 }
 
-TEST_CASE("farm: counts are named when out of range, and a still gets no more tasks than rows", "[cli][farm][errors]") {
+TEST_CASE("cli farm: counts are named when out of range, and a still gets no more tasks than rows", "[cli][farm][errors]") {
   const std::string dir = folder("farm-counts");
   for (const char* count : {"--tasks 0", "--tasks 100001", "--tasks abc", "--tasks 2 --cpus 0"}) {
     INFO(count);
@@ -83,7 +83,7 @@ TEST_CASE("farm: counts are named when out of range, and a still gets no more ta
   CHECK(r.code == 0);
 }
 
-TEST_CASE("farm: status reads job ids as digits only, never through a shell", "[cli][farm][hostile]") {
+TEST_CASE("cli farm: status reads job ids as digits only, never through a shell", "[cli][farm][hostile]") {
   const std::string dir = folder("farm-status");
   const std::string pwned = dir + "/pwned";
   for (const std::string& jobs : std::vector<std::string>{"render 1;touch " + pwned + "\n", "render $(touch " + pwned + ")\n",
@@ -105,7 +105,7 @@ TEST_CASE("farm: status reads job ids as digits only, never through a shell", "[
   CHECK_THAT(r.output, Catch::Contains("named pipe"));
 }
 
-TEST_CASE("farm: an animation's frames are encoded in numeric order, negative ones included", "[cli][farm]") {
+TEST_CASE("cli farm: an animation's frames are encoded in numeric order, negative ones included", "[cli][farm]") {
   const std::string dir = folder("farm-negative");
   Run r = rtcli("farm slurm scenes/turntable.json --tasks 2 --frames=-3-2 --width 16 --height 12 --dry-run -q -o '" +
                 dir + "/turn.gif'");
