@@ -6,15 +6,15 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench/bench_command.h"
-#include "cli/encode_command.h"
+#include "cli/frames/encode_command.h"
 #include "cli/farm/farm_command.h"
 #include "io/image/gif_file.h"
-#include "cli/merge_command.h"
-#include "cli/exit_codes.h"
-#include "cli/number_checks.h"
-#include "cli/render_command.h"
-#include "cli/suggestions.h"
-#include "cli/validate_command.h"
+#include "cli/frames/merge_command.h"
+#include "cli/common/exit_codes.h"
+#include "cli/common/number_checks.h"
+#include "cli/render/render_command.h"
+#include "cli/common/suggestions.h"
+#include "cli/common/validate_command.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
 

@@ -7,7 +7,7 @@
 // per channel, a display-linear value that is then sRGB-encoded. Nothing above 1 turns white
 // abruptly (f(1) = 0.80, f(4) = 0.97; the fit reaches 1 at x = 7.24 and is clamped there), and
 // mid grey is lifted a little (f(0.18) = 0.27). Every integrator that makes radiance goes through
-// it (debug views do not: cli/render_command.cpp); the adaptive sampler compares displayed
+// it (debug views do not: cli/render/render_command.cpp); the adaptive sampler compares displayed
 // values, so it sees what the picture shows.
 #pragma once
 

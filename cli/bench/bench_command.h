@@ -18,7 +18,7 @@ struct BenchCommand {
   int repeats = 5;        // timed runs of each figure, after one warm-up
   std::string rays;       // replay these ray sets instead of generating them
   std::string save_rays;  // write the ray sets traced here, for another build or Embree to replay
-  std::optional<std::string> isa;  // --isa: the BVH kernels measured (cli/isa_choice.h)
+  std::optional<std::string> isa;  // --isa: the BVH kernels measured (cli/common/isa_choice.h)
 };
 
 int run_bench(const BenchCommand& cmd);

@@ -1,7 +1,7 @@
 #include "cli/bench/bench_model.h"
 
 #include "cli/bench/generated_mesh.h"
-#include "cli/scene_loading.h"
+#include "cli/common/scene_loading.h"
 #include "io/scene_loader.h"
 
 namespace rt {

@@ -15,14 +15,14 @@
 #include <set>
 #include <sstream>
 
-#include "cli/exit_codes.h"
+#include "cli/common/exit_codes.h"
 #include "cli/farm/slurm_jobs.h"
-#include "cli/frame_output.h"
-#include "cli/report.h"
-#include "cli/scene_loading.h"
+#include "cli/frames/frame_output.h"
+#include "cli/common/report.h"
+#include "cli/common/scene_loading.h"
 #include "io/base/input_file.h"
 #include "io/image/atomic_file.h"
-#include "cli/frame_list.h"
+#include "cli/frames/frame_list.h"
 #include "io/scene_loader.h"
 
 namespace fs = std::filesystem;

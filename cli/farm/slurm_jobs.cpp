@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/frame_output.h"
+#include "cli/frames/frame_output.h"
 
 namespace rt {
 namespace {

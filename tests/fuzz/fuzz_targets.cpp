@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/tile_merge.h"
+#include "cli/frames/tile_merge.h"
 #include "core/lights/environment.h"
 #include "io/image/environment_file.h"
 #include "io/image/exr_file.h"

@@ -4,8 +4,8 @@
 #include <fstream>
 #include <set>
 
-#include "cli/frame_list.h"
-#include "cli/frame_output.h"
+#include "cli/frames/frame_list.h"
+#include "cli/frames/frame_output.h"
 #include "io/image/color_quantiser.h"
 #include "io/image/gif_file.h"
 #include "tests/support/run_rtcli.h"

@@ -1,0 +1,140 @@
+#include "cli/render/frame_renderer.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "cli/render/aov_layers.h"
+#include "cli/common/exit_codes.h"
+#include "cli/common/interrupt.h"
+#include "cli/common/progress_bar.h"
+#include "core/frame_scenes.h"
+#include "core/render/stereo_images.h"
+#include "core/thread_count.h"
+
+namespace rt {
+
+namespace {
+
+ExrLayer layer_of(const Film& film, const std::string& name, std::vector<std::string> channels) {
+  ExrLayer layer{name, std::move(channels), {}};
+  const size_t n = layer.channels.size();
+  layer.values.reserve(film.color.pixels.size() * n);
+  for (const Vec3& p : film.color.pixels)
+    for (size_t c = 0; c < n; ++c) layer.values.push_back(p[static_cast<int>(c)]);
+  return layer;
+}
+
+}  // namespace
+
+std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
+                                 const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
+                                 std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
+  ProgressBar bar(stderr);
+  const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
+  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
+  totals.passes = stereo.enabled() ? 2 : 1;
+  const int all_passes = frames.count() * totals.passes;
+  std::string error;
+  Image left;
+  for (int index = 0; index < frames.count(); ++index) {
+    const int frame = frames.frames[static_cast<size_t>(index)];
+    const Scene& scene = scenes.at(frame);
+    totals.place_seconds = scenes.placing_seconds();
+    Camera camera = scene.camera;
+    camera.stereo = stereo;
+    const Camera eyes[2] = {camera.eye_camera(-1), camera.eye_camera(1)};
+    for (int pass = 0; pass < totals.passes; ++pass) {
+      const InterruptWatch interrupt;
+      RenderControl control;
+      const int done = index * totals.passes + pass;
+      if (show_progress) {
+        std::string label =
+            frames.count() > 1 ? "frame " + std::to_string(index + 1) + "/" + std::to_string(frames.count()) : "";
+        if (totals.passes == 2) label += std::string(label.empty() ? "" : " ") + (pass == 0 ? "left eye" : "right eye");
+        bar.set_label(label);
+        control.progress = [&, done](const RenderProgress& p) {
+          RenderProgress all = p;  // the bar counts passes: done passes, plus this one's share
+          all.pixels_done += static_cast<uint64_t>(done) * p.pixels_total;
+          all.pixels_total *= static_cast<uint64_t>(all_passes);
+          all.seconds += totals.seconds + totals.place_seconds;
+          bar.update(all);
+        };
+      }
+      control.cancel = &interrupt.flag();
+      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}}
+                                               : RenderView{nullptr, 0, content.window};
+      totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
+      bar.clear();
+      if (totals.last.cancelled) {
+        const double seconds = totals.seconds + totals.last.seconds;
+        bool written = false;
+        for (const FrameSink& sink : sinks) written = written || !sink.written().empty();
+        if (frames.count() == 1) std::fprintf(stderr, "rtcli: interrupted after %.2f s; nothing written\n", seconds);
+        else
+          std::fprintf(stderr, "rtcli: interrupted in frame %d after %.2f s; %s\n", frame, seconds,
+                       written ? "the frames before it were written" : "nothing written");
+        return 128 + interrupt.signal();  // the shell's convention: 130 for Ctrl-C
+      }
+      totals.seconds += totals.last.seconds;
+      totals.rays += totals.last.rays;
+      totals.pixels_per_pass = static_cast<uint64_t>(film.width()) * static_cast<uint64_t>(film.height());
+      for (const uint8_t d : film.depth) totals.refined += d > 0;
+      for (const uint16_t n : film.samples) totals.samples += n;
+      if (pass == 0 && totals.passes == 2) left = film.color;
+    }
+
+    if (is_exr(sinks[0].kind())) {  // linear, with its layers and metadata (no stereo: checked before)
+      ExrImage exr;
+      exr.width = settings.width;
+      exr.height = settings.height;
+      exr.window = film.window();
+      exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
+      for (const std::string& aov : content.aovs) {
+        const AovLayer& a = *find_aov(aov);  // checked by render_plan
+        RenderSettings data = settings;
+        data.integrator = a.integrator;
+        if (a.one_ray) data.antialias.mode = "none";
+        Film layer;
+        const InterruptWatch interrupt;
+        RenderControl control;
+        control.cancel = &interrupt.flag();
+        const RenderStats s = render(scene, data, layer, control, static_cast<uint32_t>(frame), RenderView{nullptr, 0, content.window});
+        if (s.cancelled) {
+          std::fprintf(stderr, "rtcli: interrupted in frame %d's %s layer; %s\n", frame, aov.c_str(),
+                       sinks[0].written().empty() ? "nothing written" : "the frames before it were written");
+          return 128 + interrupt.signal();
+        }
+        totals.seconds += s.seconds;
+        totals.rays += s.rays;
+        exr.layers.push_back(layer_of(layer, a.name, a.channels));
+      }
+      exr.attributes = render_attributes(content.identity, frame, exr.window);
+      const SignalBlock block;
+      if (!sinks[0].add_exr(exr, frame, content.exr_float, error)) {
+        std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+        return kExitFailure;
+      }
+      continue;
+    }
+    const SignalBlock block;  // each temporary file is always renamed or removed
+    bool ok = true;
+    const DisplayTransform& display = settings.display;
+    if (!stereo.enabled()) {
+      ok = sinks[0].add(encode_srgb8(film.color, display), frame, error);
+    } else if (stereo.mode == StereoMode::kPair) {
+      ok = sinks[0].add(encode_srgb8(left, display), frame, error) &&
+           sinks[1].add(encode_srgb8(film.color, display), frame, error);
+    } else {
+      ok = sinks[0].add(encode_srgb8(compose_stereo(left, film.color, stereo), display), frame, error);
+    }
+    if (!ok) {
+      std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
+      return kExitFailure;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace rt
