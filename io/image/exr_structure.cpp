@@ -67,6 +67,49 @@ std::optional<std::pair<uint64_t, int>> channel_list(const Reader& r, size_t at,
   return std::make_pair(bytes_per_pixel, count);
 }
 
+// OpenEXR reads a value of a known type by its type, not by the size the file declares: a float
+// declared 516 bytes long is read as 4, and the next 512 bytes are taken for attributes (a
+// 1251-byte file so read took 1.6 GB, found by the exr fuzzer). So the declared size must be the
+// type's own: fixed for the fixed types, the walk's length for the lists, w x h x 4 + 8 for a
+// preview image. Types OpenEXR does not know it keeps as opaque bytes of the declared size.
+std::string attribute_size_problem(const Reader& r, const std::string& type, uint32_t size) {
+  static const std::pair<const char*, uint32_t> kFixed[] = {
+      {"box2i", 16},  {"box2f", 16},    {"float", 4},     {"double", 8},       {"int", 4},        {"v2i", 8},
+      {"v2f", 8},     {"v2d", 16},      {"v3i", 12},      {"v3f", 12},         {"v3d", 24},       {"m33f", 36},
+      {"m33d", 72},   {"m44f", 64},     {"m44d", 128},    {"compression", 1},  {"lineOrder", 1},  {"envmap", 1},
+      {"deepImageState", 1}, {"chromaticities", 32}, {"rational", 8}, {"keycode", 28}, {"timecode", 8}, {"tiledesc", 9}};
+  for (const auto& [name, bytes] : kFixed)
+    if (type == name)
+      return size == bytes ? "" : "declared " + std::to_string(size) + " bytes, where it takes " + std::to_string(bytes);
+  if (type == "chlist") {
+    // Entries, then a NUL that must be the value's last byte.
+    Reader c{r.bytes, r.at};
+    const size_t end = r.at + size;
+    std::string channel;
+    while (c.at < end && r.bytes[c.at] != 0) {
+      if (!c.text(channel) || c.at + 16 > end) return "an entry runs past its declared size";
+      c.at += 16;
+    }
+    return c.at + 1 == end ? "" : "its end is not at its declared size";
+  }
+  if (type == "stringvector") {
+    for (size_t at = r.at, end = r.at + size; at < end;) {
+      if (end - at < 4) return "an entry runs past its declared size";
+      const int32_t length = r.i32(at);
+      if (length < 0 || static_cast<uint64_t>(length) > end - at - 4) return "an entry runs past its declared size";
+      at += 4 + static_cast<size_t>(length);
+    }
+    return "";
+  }
+  if (type == "preview") {
+    if (size < 8) return "declared " + std::to_string(size) + " bytes, fewer than its size takes";
+    const uint64_t w = r.u32(r.at), h = r.u32(r.at + 4);
+    return (size - 8) % 4 == 0 && w * h == (size - 8) / 4 ? "" : "a " + std::to_string(w) + " x " + std::to_string(h) + " preview in " +
+                                            std::to_string(size) + " bytes";
+  }
+  return "";  // string (its size is its length) and unknown types (opaque bytes)
+}
+
 }  // namespace
 
 uint64_t max_exr_file_bytes(const ExrLimits& limits) {
@@ -97,6 +140,8 @@ bool check_exr_structure(const std::vector<unsigned char>& bytes, const ExrLimit
     const uint32_t size = r.u32(r.at);
     r.at += 4;
     if (!r.has(size)) return bad("attribute " + name + " is larger than the file");
+    if (const std::string why_not = attribute_size_problem(r, type, size); !why_not.empty())
+      return bad("attribute " + name + " of type " + type + ": " + why_not);
     if ((name == "dataWindow" || name == "displayWindow") && type == "box2i" && size == 16) {
       const Box b{r.i32(r.at), r.i32(r.at + 4), r.i32(r.at + 8), r.i32(r.at + 12)};
       if (b.x1 < b.x0 || b.y1 < b.y0 || b.width() * b.height() > limits.max_pixels)
