@@ -20,7 +20,7 @@
 
 int main(int argc, char** argv) {
   using namespace rt;
-  CLI::App app{"rtcli - a data-driven ray tracer: JSON scenes and glTF models in, PNG images out."};
+  CLI::App app{"rtcli - a data-driven ray tracer: JSON scenes and glTF models in; PNG, JPEG, EXR and GIF out."};
   app.set_version_flag("--version", std::string("rtcli ") + RTCLI_VERSION);
   app.require_subcommand(1);
 

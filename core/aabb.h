@@ -20,11 +20,6 @@ struct Aabb {
   bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
   Vec3 extent() const { return hi - lo; }
   Vec3 centre() const { return 0.5f * (lo + hi); }
-  float surface_area() const {
-    if (empty()) return 0.0f;
-    const Vec3 e = extent();
-    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
-  }
   int largest_axis() const {
     const Vec3 e = extent();
     return (e.x >= e.y && e.x >= e.z) ? 0 : (e.y >= e.z ? 1 : 2);

@@ -116,7 +116,6 @@ class Bvh {
   // id here and hit.part = the triangle's index in its mesh.
   uint32_t primitive_count() const { return csg_begin() + static_cast<uint32_t>(csgs_.size()); }
   bool is_triangle(uint32_t id) const { return id < triangle_count_; }
-  bool is_shape(uint32_t id) const { return id >= triangle_count_ && id < instance_begin(); }
   bool is_instance(uint32_t id) const { return id >= instance_begin() && id < csg_begin(); }
   bool is_csg(uint32_t id) const { return id >= csg_begin(); }
   const AnalyticShape& shape(uint32_t id) const { return shapes_[id - triangle_count_]; }

@@ -25,8 +25,7 @@ void CsgChildIndex::build(uint32_t box, uint32_t begin, uint32_t end, int depth)
     boxes_[box].count = end - begin;
     return;
   }
-  const Vec3 extent = centres.extent();
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  const int axis = centres.largest_axis();
   const uint32_t mid = begin + (end - begin) / 2;
   // Ties broken by the child's index: the same tree on every machine.
   std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end, [&](const Item& a, const Item& b) {
