@@ -22,9 +22,6 @@ using rt::test::write_file;
 
 namespace {
 
-// Ten seconds is forever for a refusal: a hang becomes a failure, not a stuck test run.
-Run rtcli_bounded(const std::string& args) { return rtcli(args, RTCLI_SOURCE_DIR, "timeout 10"); }
-
 bool has_temporary_files(const std::string& folder) {
   for (const auto& entry : fs::directory_iterator(folder))
     if (entry.path().filename().string().rfind(".rtcli-", 0) == 0) return true;
@@ -37,23 +34,23 @@ TEST_CASE("cli: special files are refused, not read forever", "[cli][errors][hos
   const std::string fifo = output_path("fifo.json");
   fs::remove(fifo);
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  Run r = rtcli_bounded("render '" + fifo + "' -o '" + output_path("fifo.png") + "'");
+  Run r = rt::test::rtcli_bounded("render '" + fifo + "' -o '" + output_path("fifo.png") + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("fifo.json: error: is a named pipe (FIFO), not a regular file"));
-  r = rtcli_bounded("render /dev/zero -o '" + output_path("zero.png") + "'");
+  r = rt::test::rtcli_bounded("render /dev/zero -o '" + output_path("zero.png") + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("/dev/zero: error: is a character device, not a regular file"));
   // The same through a mesh reference and as a glTF model.
   const std::string scene = write_file("fifo-mesh.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
     "nodes": [{"mesh": {"file": "fifo.json"}}, {"mesh": {"file": "/dev/zero"}}]})");
-  r = rtcli_bounded("validate '" + scene + "'");
+  r = rt::test::rtcli_bounded("validate '" + scene + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("/nodes/0/mesh/file") && Catch::Contains("named pipe") &&
                            Catch::Contains("/nodes/1/mesh/file") && Catch::Contains("character device"));
   const std::string glb = output_path("fifo.glb");
   fs::remove(glb);
   REQUIRE(::mkfifo(glb.c_str(), 0600) == 0);
-  r = rtcli_bounded("render '" + glb + "' -o '" + output_path("fifo-glb.png") + "'");
+  r = rt::test::rtcli_bounded("render '" + glb + "' -o '" + output_path("fifo-glb.png") + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("named pipe"));
 }
@@ -64,7 +61,7 @@ TEST_CASE("cli: a symbolic link loop says what it is", "[cli][errors][hostile]")
   fs::remove(b);
   fs::create_symlink(b, a);
   fs::create_symlink(a, b);
-  const Run r = rtcli_bounded("render '" + a + "' -o '" + output_path("loop.png") + "'");
+  const Run r = rt::test::rtcli_bounded("render '" + a + "' -o '" + output_path("loop.png") + "'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("loop-a.json: error: is a loop of symbolic links"));
 }
@@ -103,12 +100,12 @@ TEST_CASE("cli: a sphere 2e38 away beside two cubes renders", "[cli][hostile]") 
     "materials": {"m": {}}, "lights": [{"type": "point", "position": [0, 5, 5]}],
     "nodes": [{"shape": "sphere", "material": "m", "transform": {"translate": [2e38, 0, 0]}},
               {"shape": "cube", "material": "m"}, {"shape": "cube", "material": "m", "transform": {"translate": [3, 0, 0]}}]})");
-  const Run r = rtcli_bounded("render '" + scene + "' --width 40 --height 30 -o '" + output_path("far.png") + "'");
+  const Run r = rt::test::rtcli_bounded("render '" + scene + "' --width 40 --height 30 -o '" + output_path("far.png") + "'");
   CHECK(r.code == 0);
   const std::string beyond =
       write_file("beyond-float.json", R"({"camera": {"position": [0, 0, 8], "look_at": [0, 0, 0]},
     "materials": {"m": {}}, "nodes": [{"shape": "sphere", "material": "m", "transform": {"translate": [3e38, 0, 0], "scale": 1e38}}]})");
-  const Run b = rtcli_bounded("render '" + beyond + "' -o '" + output_path("beyond.png") + "'");
+  const Run b = rt::test::rtcli_bounded("render '" + beyond + "' -o '" + output_path("beyond.png") + "'");
   CHECK(b.code == 2);
   CHECK_THAT(b.output, Catch::Contains("/nodes/0: expected a shape within the single-precision range"));
 }

@@ -23,16 +23,6 @@ using rt::test::Run;
 
 namespace {
 
-std::string folder(const std::string& name) {
-  const std::string dir = output_path(name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// Ten seconds is forever for a refusal: a hang becomes a failure.
-Run rtcli_bounded(const std::string& args) { return rtcli(args, RTCLI_SOURCE_DIR, "timeout 10"); }
-
 // A width x height image of `layers` extra 3-channel layers beside the colour, its window `window`.
 rt::ExrImage image_of(int width, int height, int layers, rt::PixelWindow window = {}) {
   rt::ExrImage image;
@@ -68,7 +58,7 @@ size_t offset_table(const std::string& bytes) {
 }  // namespace
 
 TEST_CASE("EXR: a chunk table that points every entry at one chunk is refused before decoding", "[exr][hostile]") {
-  const std::string dir = folder("exr-chunks");
+  const std::string dir = rt::test::fresh_folder("exr-chunks");
   // 256 rows of ZIP: 16 chunks of 16 lines, each decoded once when the table is honest.
   const std::string path = write(dir + "/tile.exr", image_of(256, 256, 2));
   std::string bytes = read_file(path);
@@ -110,17 +100,17 @@ TEST_CASE("EXR: a chunk table that points every entry at one chunk is refused be
   // The honest file reads.
   CHECK(rt::read_exr(path, 1 << 20, error));
   // merge and encode say the same, naming the file.
-  Run r = rtcli_bounded("merge '" + dir + "/one-chunk.exr' -o '" + dir + "/m.png'");
+  Run r = rt::test::rtcli_bounded("merge '" + dir + "/one-chunk.exr' -o '" + dir + "/m.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("one-chunk.exr: not a readable OpenEXR image"));
-  r = rtcli_bounded("encode '" + path + "' '" + dir + "/one-chunk.exr' -o '" + dir + "/m.gif'");
+  r = rt::test::rtcli_bounded("encode '" + path + "' '" + dir + "/one-chunk.exr' -o '" + dir + "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("frame 2 of 2, ") && Catch::Contains("one-chunk.exr: not a readable"));
   CHECK_FALSE(fs::exists(dir + "/m.gif"));
 }
 
 TEST_CASE("EXR: channels x pixels are bounded by the pixel limit before anything is allocated", "[exr][hostile]") {
-  const std::string dir = folder("exr-values");
+  const std::string dir = rt::test::fresh_folder("exr-values");
   std::string error;
   // 3 + 3 x 3 = 12 values a pixel: the most read_exr holds.
   CHECK(rt::read_exr(write(dir + "/twelve.exr", image_of(64, 64, 3)), 64 * 64, error));
@@ -132,34 +122,34 @@ TEST_CASE("EXR: channels x pixels are bounded by the pixel limit before anything
 }
 
 TEST_CASE("EXR: a named pipe as a tile or a frame is refused, not read forever", "[exr][hostile][cli]") {
-  const std::string dir = folder("exr-fifo");
+  const std::string dir = rt::test::fresh_folder("exr-fifo");
   REQUIRE(::mkfifo((dir + "/tile.exr").c_str(), 0600) == 0);
-  Run r = rtcli_bounded("merge '" + dir + "/tile.exr' -o '" + dir + "/m.png'");
+  Run r = rt::test::rtcli_bounded("merge '" + dir + "/tile.exr' -o '" + dir + "/m.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("tile.exr: is a named pipe (FIFO), not a regular file"));
-  r = rtcli_bounded("encode '" + dir + "/tile.exr' -o '" + dir + "/m.gif'");
+  r = rt::test::rtcli_bounded("encode '" + dir + "/tile.exr' -o '" + dir + "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("frame 1 of 1, ") && Catch::Contains("named pipe"));
   REQUIRE(::mkfifo((dir + "/frame.png").c_str(), 0600) == 0);
-  r = rtcli_bounded("encode '" + dir + "/frame.png' -o '" + dir + "/m.gif'");
+  r = rt::test::rtcli_bounded("encode '" + dir + "/frame.png' -o '" + dir + "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("frame 1 of 1, ") && Catch::Contains("frame.png") && Catch::Contains("named pipe"));
   // A missing frame among others is named by its place.
-  r = rtcli_bounded("encode '" + write(dir + "/a.exr", image_of(8, 8, 0)) + "' '" + dir + "/gone.exr' -o '" + dir +
+  r = rt::test::rtcli_bounded("encode '" + write(dir + "/a.exr", image_of(8, 8, 0)) + "' '" + dir + "/gone.exr' -o '" + dir +
                     "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("frame 2 of 2, ") && Catch::Contains("gone.exr"));
 }
 
 TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are cut short", "[exr][hostile][cli]") {
-  const std::string dir = folder("merge-bands");
+  const std::string dir = rt::test::fresh_folder("merge-bands");
   // One band of a 16-row image claiming to be band 0 of ten million, then of two billion.
   for (const char* band : {"0/10000000", "0/2000000000", "0/16"}) {
     INFO(band);
     rt::ExrImage tile = image_of(8, 16, 0, rt::PixelWindow{0, 0, 8, 1});
     tile.attributes["rtcli:tile"] = band;
     write(dir + "/t.exr", tile);
-    const Run r = rtcli_bounded("merge '" + dir + "/t.exr' -o '" + dir + "/m.png'");
+    const Run r = rt::test::rtcli_bounded("merge '" + dir + "/t.exr' -o '" + dir + "/m.png'");
     CHECK(r.code == 2);
     CHECK(r.output.size() < 2000);  // ten million "missing" lines before
     if (std::string(band) == "0/16")
@@ -177,7 +167,7 @@ TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are
     fs::create_symlink(row, link);
     args += " '" + link + "'";
   }
-  Run r = rtcli_bounded("merge" + args + " -o '" + dir + "/m.png'");
+  Run r = rt::test::rtcli_bounded("merge" + args + " -o '" + dir + "/m.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("r0.exr (x 0-7, y 0-0) and") &&
                            Catch::Contains("... and 44840 more overlapping pairs among the 300 tiles read"));
@@ -190,7 +180,7 @@ TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are
     fs::create_symlink(whole, link);
     args += " '" + link + "'";
   }
-  r = rtcli_bounded("merge" + args + " -o '" + dir + "/m.png'");
+  r = rt::test::rtcli_bounded("merge" + args + " -o '" + dir + "/m.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("w0.exr (x 0-7, y 0-7) and") &&
                            Catch::Contains("the first 2 of the 300 tiles already hold more pixels than the image"));
@@ -199,28 +189,28 @@ TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are
   rt::ExrImage grey = image_of(8, 8, 0);
   grey.layers[0].channels = {"Y", "A", "Z"};
   write(dir + "/grey.exr", grey);
-  const Run g = rtcli_bounded("merge '" + dir + "/grey.exr' -o '" + dir + "/m.png'");
+  const Run g = rt::test::rtcli_bounded("merge '" + dir + "/grey.exr' -o '" + dir + "/m.png'");
   CHECK(g.code == 2);
   CHECK_THAT(g.output, Catch::Contains("grey.exr: expected the colour channels R, G, B"));
 }
 
 TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's delays never wrap", "[exr][hostile][cli]") {
-  const std::string dir = folder("encode-fps");
+  const std::string dir = rt::test::fresh_folder("encode-fps");
   for (const char* fps : {"1e-30", "inf", "nan", "0.001", "fast"}) {
     INFO(fps);
     rt::ExrImage frame = image_of(8, 8, 0);
     frame.attributes["rtcli:fps"] = fps;
     write(dir + "/f.exr", frame);
-    const Run r = rtcli_bounded("encode '" + dir + "/f.exr' -o '" + dir + "/m.gif'");
+    const Run r = rt::test::rtcli_bounded("encode '" + dir + "/f.exr' -o '" + dir + "/m.gif'");
     CHECK(r.code == 2);
     CHECK_THAT(r.output, Catch::Contains("f.exr: rtcli:fps \"" + std::string(fps) + "\": expected a frame rate from 0.002"));
     CHECK_FALSE(fs::exists(dir + "/m.gif"));
   }
-  Run r = rtcli_bounded("encode '" + dir + "/f.exr' --fps 0.001 -o '" + dir + "/m.gif'");
+  Run r = rt::test::rtcli_bounded("encode '" + dir + "/f.exr' --fps 0.001 -o '" + dir + "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("--fps: expected a number from 0.002 to 1000"));
   // The slowest rate: 500 s a frame, 50000 hundredths (0.001 fps wrapped to 344.6 s before).
-  r = rtcli_bounded("encode '" + dir + "/f.exr' --fps 0.002 -q -o '" + dir + "/slow.gif'");
+  r = rt::test::rtcli_bounded("encode '" + dir + "/f.exr' --fps 0.002 -q -o '" + dir + "/slow.gif'");
   REQUIRE(r.code == 0);
   const std::string gif = read_file(dir + "/slow.gif");
   const size_t gce = gif.find("\x21\xf9\x04");
@@ -235,14 +225,14 @@ TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's d
     "nodes": [{"name": "s", "shape": "sphere", "material": "m"}],
     "animation": {"fps": 0.001, "frames": [0, 1], "tracks": [{"node": "s", "property": "rotate",
       "keys": [{"frame": 0, "value": {"axis": [0, 1, 0], "degrees": 0}}, {"frame": 1, "value": {"axis": [0, 1, 0], "degrees": 90}}]}]}})");
-  r = rtcli_bounded("render '" + scene + "' -o '" + dir + "/slow-scene.gif'");
+  r = rt::test::rtcli_bounded("render '" + scene + "' -o '" + dir + "/slow-scene.gif'");
   INFO(r.output);
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("0.001 frames per second: a GIF frame lasts at most 655.35 s"));
 }
 
 TEST_CASE("cli: --skip-existing renders again an EXR of other settings or with damaged pixels", "[exr][cli][split]") {
-  const std::string dir = folder("skip-exr");
+  const std::string dir = rt::test::fresh_folder("skip-exr");
   const std::string render = "render scenes/turntable.json --frames 0-1 --width 16 --height 12 --exr-float -o '" + dir +
                              "/f_##.exr' --skip-existing";
   Run r = rtcli(render);
@@ -272,7 +262,7 @@ TEST_CASE("cli: --skip-existing renders again an EXR of other settings or with d
 
 TEST_CASE("an environment image is one of the scene's inputs: never overwritten, and in the scene hash",
           "[exr][cli][hostile]") {
-  const std::string dir = folder("env-input");
+  const std::string dir = rt::test::fresh_folder("env-input");
   fs::copy_file(rt::test::source_path("scenes/textures/sky.hdr"), dir + "/sky.hdr");
   write(dir + "/sky.exr", image_of(16, 8, 0));
   for (const char* sky : {"sky.hdr", "sky.exr"}) {

@@ -17,20 +17,9 @@ using rt::test::read_file;
 using rt::test::rtcli;
 using rt::test::Run;
 
-namespace {
-
-std::string folder(const std::string& name) {
-  const std::string dir = output_path(name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-}  // namespace
-
 TEST_CASE("cli farm: a value that would break out of a job script is refused by name, and nothing is written",
           "[cli][farm][hostile]") {
-  const std::string dir = folder("farm-hostile");
+  const std::string dir = rt::test::fresh_folder("farm-hostile");
   // Each as the shell passes it: single-quoted, a real newline inside.
   const struct {
     std::string args, expected;
@@ -67,7 +56,7 @@ TEST_CASE("cli farm: a value that would break out of a job script is refused by 
 }
 
 TEST_CASE("cli farm: counts are named when out of range, and a still gets no more tasks than rows", "[cli][farm][errors]") {
-  const std::string dir = folder("farm-counts");
+  const std::string dir = rt::test::fresh_folder("farm-counts");
   for (const char* count : {"--tasks 0", "--tasks 100001", "--tasks abc", "--tasks 2 --cpus 0"}) {
     INFO(count);
     const Run r = rtcli("farm slurm scenes/antialias.json " + std::string(count) + " --dry-run -o '" + dir + "/s.png'");
@@ -84,7 +73,7 @@ TEST_CASE("cli farm: counts are named when out of range, and a still gets no mor
 }
 
 TEST_CASE("cli farm: status reads job ids as digits only, never through a shell", "[cli][farm][hostile]") {
-  const std::string dir = folder("farm-status");
+  const std::string dir = rt::test::fresh_folder("farm-status");
   const std::string pwned = dir + "/pwned";
   for (const std::string& jobs : std::vector<std::string>{"render 1;touch " + pwned + "\n", "render $(touch " + pwned + ")\n",
                                   "render 1 2\n", "finish 12a\n", "submit 5\n"}) {
@@ -106,7 +95,7 @@ TEST_CASE("cli farm: status reads job ids as digits only, never through a shell"
 }
 
 TEST_CASE("cli farm: an animation's frames are encoded in numeric order, negative ones included", "[cli][farm]") {
-  const std::string dir = folder("farm-negative");
+  const std::string dir = rt::test::fresh_folder("farm-negative");
   Run r = rtcli("farm slurm scenes/turntable.json --tasks 2 --frames=-3-2 --width 16 --height 12 --dry-run -q -o '" +
                 dir + "/turn.gif'");
   INFO(r.output);

@@ -15,20 +15,12 @@ using rt::test::rtcli;
 
 namespace {
 
-// A fresh folder under the test output.
-std::string folder(const std::string& name) {
-  const std::string dir = rt::test::output_path(name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 const std::string kStill = "render scenes/antialias.json --width 96 --height 54 -q";
 
 }  // namespace
 
 TEST_CASE("cli: 8 EXR tiles merge into the PNG and the EXR a whole render writes, byte for byte", "[cli][split]") {
-  const std::string dir = folder("split-tiles");
+  const std::string dir = rt::test::fresh_folder("split-tiles");
   REQUIRE(rtcli(kStill + " -o '" + dir + "/whole.png'").code == 0);
   REQUIRE(rtcli(kStill + " --exr-float --aov albedo,normal,depth -o '" + dir + "/whole.exr'").code == 0);
   std::string tiles;
@@ -105,7 +97,7 @@ TEST_CASE("cli: 8 EXR tiles merge into the PNG and the EXR a whole render writes
 }
 
 TEST_CASE("cli: half-float tiles merge into the half EXR a whole render writes", "[cli][split]") {
-  const std::string dir = folder("split-half");
+  const std::string dir = rt::test::fresh_folder("split-half");
   REQUIRE(rtcli(kStill + " -o '" + dir + "/whole.exr'").code == 0);
   std::string tiles;
   for (int i = 0; i < 3; ++i) {
@@ -120,7 +112,7 @@ TEST_CASE("cli: half-float tiles merge into the half EXR a whole render writes",
 }
 
 TEST_CASE("cli: frame chunks encode into the GIF a whole render writes; --skip-existing resumes", "[cli][split]") {
-  const std::string dir = folder("split-frames");
+  const std::string dir = rt::test::fresh_folder("split-frames");
   const std::string anim = "render scenes/turntable.json --frames 0-11 --width 48 --height 36 -q";
   REQUIRE(rtcli(anim + " -o '" + dir + "/whole.gif'").code == 0);
   for (int c = 0; c < 4; ++c)
@@ -145,7 +137,7 @@ TEST_CASE("cli: frame chunks encode into the GIF a whole render writes; --skip-e
 }
 
 TEST_CASE("cli: --tile auto and --chunk auto take a Slurm array task's share", "[cli][split]") {
-  const std::string dir = folder("split-auto");
+  const std::string dir = rt::test::fresh_folder("split-auto");
   const std::string env = "SLURM_ARRAY_TASK_ID=12 SLURM_ARRAY_TASK_MIN=10 SLURM_ARRAY_TASK_COUNT=4";
   auto r = rtcli(kStill + " --tile auto -o '" + dir + "/t.exr'", RTCLI_SOURCE_DIR, env);
   INFO(r.output);
@@ -164,7 +156,7 @@ TEST_CASE("cli: --tile auto and --chunk auto take a Slurm array task's share", "
 }
 
 TEST_CASE("cli: bad parts and bad tiles are refused with the reason", "[cli][split]") {
-  const std::string dir = folder("split-bad");
+  const std::string dir = rt::test::fresh_folder("split-bad");
   const std::string out = " -o '" + dir + "/x.exr'";
   const std::pair<std::string, std::string> cases[] = {
       {" --crop 0,0,97,10" + out, "--crop: expected 0 <= x0 < x1 <= 96"},
@@ -188,7 +180,7 @@ TEST_CASE("cli: bad parts and bad tiles are refused with the reason", "[cli][spl
 }
 
 TEST_CASE("cli: farm slurm --dry-run writes the two job scripts; options the farm sets are refused", "[cli][split]") {
-  const std::string dir = folder("split-farm");
+  const std::string dir = rt::test::fresh_folder("split-farm");
   auto r = rtcli("farm slurm scenes/antialias.json --tasks 6 --cpus 2 --partition gpu --time 0:30:00 --width 96 "
                  "--dry-run -o '" + dir + "/still.png'");
   INFO(r.output);

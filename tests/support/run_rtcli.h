@@ -33,6 +33,10 @@ inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_
   return run_shell("cd '" + cwd + "' && " + prefix + " '" + RTCLI_BINARY + "' " + args + " 2>&1");
 }
 
+// rtcli under a 10-second limit: for refusals, which must be quick; a hang becomes a failure, not a
+// stuck test run.
+inline Run rtcli_bounded(const std::string& args) { return rtcli(args, RTCLI_SOURCE_DIR, "timeout 10"); }
+
 // A render sent SIGINT (Ctrl-C) once it has loaded: a Ctrl-C while loading ends the process at
 // once, with no message. How long loading takes here (a sanitizer build is slower) is measured
 // with a one-pixel render of the same scene; the signal comes at three times that, plus `extra`

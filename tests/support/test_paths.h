@@ -19,6 +19,14 @@ inline std::string output_path(const std::string& name) {
   return std::string(RTCLI_TEST_OUTPUT_DIR) + "/" + name;
 }
 
+// An empty folder `name` under the scratch folder (removed first if a run before left it).
+inline std::string fresh_folder(const std::string& name) {
+  const std::string dir = output_path(name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 inline std::string write_file(const std::string& name, const std::string& text) {
   const std::string path = output_path(name);
   std::ofstream(path, std::ios::binary) << text;
