@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 namespace rt {
@@ -48,6 +49,9 @@ std::string check_environment_sampling(const Environment& env, uint64_t seed);
 // whole image).
 std::string exr_tile(const uint8_t* data, size_t size);
 std::string extras_image(const uint8_t* data, size_t size);
+
+// The input written to a file of this process's own (for loaders that read files).
+void write_bytes(const std::filesystem::path& path, const uint8_t* data, size_t size);
 
 // For the libFuzzer entry points: a broken invariant aborts, which libFuzzer reports and saves.
 int abort_on_problem(const std::string& problem);
