@@ -46,7 +46,32 @@ Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direc
   return n;
 }
 
+// The emission factor times its texture (before an unlit material's colour).
+Vec3 own_emission(const Material& m, const SurfaceInteraction& si, const std::vector<Texture>& textures, Vec3 direction,
+                  float cone_width, SurfaceDetailSwitches detail) {
+  Vec3 e = m.emission;
+  if (m.emission_texture.present() && detail.textures && e != Vec3(0.0f))
+    e *= sample_at(m.emission_texture, si, textures, direction, cone_width, detail);
+  return e;
+}
+
+// The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
+Vec3 base_color_at(const Material& m, const SurfaceInteraction& si, const std::vector<Texture>& textures,
+                   Vec3 direction, float cone_width, SurfaceDetailSwitches detail) {
+  Vec3 kd = m.kd * Vec3(si.color);
+  if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, direction, cone_width, detail);
+  return kd;
+}
+
 }  // namespace
+
+Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
+                      const std::vector<Texture>& textures, float cone_width, SurfaceDetailSwitches detail) {
+  const Vec3 direction = glm::normalize(ray_direction);
+  Vec3 e = own_emission(m, si, textures, direction, cone_width, detail);
+  if (m.unlit) e += base_color_at(m, si, textures, direction, cone_width, detail);
+  return e;
+}
 
 EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
                                   const std::vector<Texture>& textures, float cone_width,
@@ -70,9 +95,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   s.entering = si.front_face;
   s.material = si.material;
   s.medium = si.medium == kOwnMedium ? si.material : si.medium;
-  // The diffuse (or base) colour: the factor, times the colour texture, times COLOR_0.
-  Vec3 kd = m.kd * Vec3(si.color);
-  if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, -s.wo, cone_width, detail);
+  const Vec3 kd = base_color_at(m, si, textures, -s.wo, cone_width, detail);
   Vec3 transmission = m.transmission;
   if (detail.textures && m.transmission_texture.present() && m.transmissive())
     transmission *= sample_at(m.transmission_texture, si, textures, -s.wo, cone_width, detail).x;
@@ -113,9 +136,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   s.transmission = transmission;
   s.ior = m.ior;
   s.absorption = m.absorption;
-  s.emission = m.emission;
-  if (m.emission_texture.present() && detail.textures && s.emission != Vec3(0.0f))
-    s.emission *= sample_at(m.emission_texture, si, textures, -s.wo, cone_width, detail);
+  s.emission = own_emission(m, si, textures, -s.wo, cone_width, detail);
   if (m.unlit) {  // shown as it is: nothing reflected, scattered or passed on
     s.emission += kd;
     s.diffuse = s.specular = s.reflectivity = s.transmission = Vec3(0.0f);

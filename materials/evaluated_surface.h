@@ -53,4 +53,10 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
                                   const std::vector<Texture>& textures, float cone_width = 0.0f,
                                   SurfaceDetailSwitches detail = {});
 
+// evaluate_surface(...).emission alone: what the surface gives off towards where a ray of
+// `ray_direction` came from, without the rest of the material (light sampling's emitter points).
+Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
+                      const std::vector<Texture>& textures, float cone_width = 0.0f,
+                      SurfaceDetailSwitches detail = {});
+
 }  // namespace rt

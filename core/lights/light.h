@@ -1,11 +1,16 @@
-// Lights are a closed set, dispatched statically: point, spot and directional lights (hard
-// shadows, one shadow ray) and rectangular area lights (soft shadows, render.shadow_samples rays
-// stratified over the rectangle).
+// The scene's lights are a closed set, dispatched statically: point, spot and directional lights
+// (deltas: one shadow ray, hard shadows) and rectangular area lights (soft shadows). Each answers
+// the light sampling interface: sample_li draws a direction towards it from a point, pdf_li gives
+// the density with which sample_li draws a direction that a ray found by other means (a BSDF
+// sample) met it along. Emissive surfaces (core/lights/emitters.h) and the sky
+// (core/lights/environment.h) answer the same two questions.
 #pragma once
 
+#include <cmath>
 #include <variant>
 
 #include "core/lights/directional_light.h"
+#include "core/lights/light_sample.h"
 #include "core/lights/point_light.h"
 #include "core/lights/rect_light.h"
 #include "core/lights/spot_light.h"
@@ -14,63 +19,80 @@ namespace rt {
 
 using Light = std::variant<PointLight, RectLight, SpotLight, DirectionalLight>;
 
-// One sample of the light seen from a surface point.
-struct LightSample {
-  Vec3 direction{0.0f};  // unit, from the point towards the light
-  float distance = 0.0f;
-  Vec3 radiance{0.0f};  // arriving at the point, attenuation applied, shadow not yet tested
-};
-
-inline LightSample light_sample_towards(Vec3 from, Vec3 to, Vec3 radiance_at_unit) {
-  LightSample s;
-  const Vec3 d = to - from;
-  s.distance = glm::length(d);
-  s.direction = s.distance > 0.0f ? d / s.distance : Vec3(0.0f, 1.0f, 0.0f);
-  s.radiance = radiance_at_unit;
-  return s;
-}
-
-// u in [0, 1)^2 picks the point on an area light; a point light ignores it.
-inline LightSample sample_light(const PointLight& light, Vec3 point, Vec2 /*u*/) {
+// u in [0, 1)^2 picks the point on an area light; a delta light ignores it.
+inline LightSample sample_li(const PointLight& light, Vec3 point, Vec2 /*u*/) {
   LightSample s = light_sample_towards(point, light.position, light.color);
   s.radiance *= light.attenuation(s.distance);
+  s.pdf = 1.0f;
+  s.delta = true;
   return s;
 }
 
-inline LightSample sample_light(const SpotLight& light, Vec3 point, Vec2 /*u*/) {
+inline LightSample sample_li(const SpotLight& light, Vec3 point, Vec2 /*u*/) {
   LightSample s = light_sample_towards(point, light.position, light.color);
   s.radiance *= light.attenuation(s.distance) * light.cone(-s.direction);
+  s.pdf = 1.0f;
+  s.delta = true;
   return s;
 }
 
-inline LightSample sample_light(const DirectionalLight& light, Vec3 /*point*/, Vec2 /*u*/) {
+inline LightSample sample_li(const DirectionalLight& light, Vec3 /*point*/, Vec2 /*u*/) {
   LightSample s;
   s.direction = -light.direction;
   s.distance = kInfinity;
   s.radiance = light.color;
+  s.pdf = 1.0f;
+  s.delta = true;
   return s;
 }
 
-// `unit_normal` is light.normal(), computed once by a caller that samples the light many times.
-inline LightSample sample_rect_light(const RectLight& light, Vec3 unit_normal, Vec3 point, Vec2 u) {
-  LightSample s = light_sample_towards(point, light.point(u), light.color);
-  const float cos_light = -glm::dot(s.direction, unit_normal);
-  const float emitted = light.two_sided ? std::fabs(cos_light) : std::max(0.0f, cos_light);
-  s.radiance *= light.attenuation(s.distance) * emitted;
+// What sampling a rect light needs of its shape, worked out once for many samples.
+struct RectFrame {
+  Vec3 normal_area{0.0f};  // edge1 x edge2: the normal, as long as the area
+  float area = 0.0f;
+  explicit RectFrame(const RectLight& light)
+      : normal_area(glm::cross(light.edge1, light.edge2)), area(glm::length(normal_area)) {}
+};
+
+// A point of the rectangle drawn uniformly by area: density d^2 / (cos_light area) per solid
+// angle. `radiance` is the light's colour, what its face emits (rect_light.h says what each
+// integrator makes of it).
+inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
+  LightSample s;
+  const Vec3 to = light.point(u) - point;
+  const float d2 = glm::dot(to, to);
+  s.distance = std::sqrt(d2);
+  if (!(d2 > 0.0f)) return s;  // on the light itself: pdf 0
+  s.direction = to / s.distance;
+  s.radiance = light.color;
+  float cos_light = -glm::dot(s.direction, frame.normal_area) / frame.area;
+  if (light.two_sided) cos_light = std::fabs(cos_light);
+  if (!(cos_light > 0.0f)) return s;  // its dark back, or edge-on: pdf 0
+  s.cos_light = cos_light;
+  s.pdf = d2 / (cos_light * frame.area);
   return s;
 }
 
-inline LightSample sample_light(const RectLight& light, Vec3 point, Vec2 u) {
-  return sample_rect_light(light, light.normal(), point, u);
+inline LightSample sample_li(const RectLight& light, Vec3 point, Vec2 u) {
+  return sample_li(light, RectFrame(light), point, u);
 }
 
-inline LightSample sample_light(const Light& light, Vec3 point, Vec2 u) {
-  return std::visit([&](const auto& l) { return sample_light(l, point, u); }, light);
+inline LightSample sample_li(const Light& light, Vec3 point, Vec2 u) {
+  return std::visit([&](const auto& l) { return sample_li(l, point, u); }, light);
 }
 
-// How many shadow samples a light takes: one for a point light, shadow_samples for an area light.
-inline int light_sample_count(const Light& light, int shadow_samples) {
-  return std::holds_alternative<RectLight>(light) ? shadow_samples : 1;
+// The density of sample_li(light, point, u) for the direction `direction` (unit) that meets the
+// light's face `distance` away from `point`.
+inline float pdf_li(const RectLight& light, Vec3 direction, float distance) {
+  const RectFrame frame(light);
+  const float cos_light = std::fabs(glm::dot(direction, frame.normal_area)) / frame.area;
+  return distance * distance / (cos_light * frame.area);
 }
+
+inline bool is_delta(const Light& light) { return !std::holds_alternative<RectLight>(light); }
+
+// How many shadow samples Whitted takes of a light: one of a delta light, shadow_samples of an
+// area light.
+inline int light_sample_count(const Light& light, int shadow_samples) { return is_delta(light) ? 1 : shadow_samples; }
 
 }  // namespace rt

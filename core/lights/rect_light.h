@@ -2,11 +2,16 @@
 // and two edge vectors so that it can face any way: its points are corner + s edge1 + t edge2,
 // s, t in [0, 1]. It emits towards normalize(edge1 x edge2) (and both ways if two_sided).
 //
-// It lights like its point samples: a point y of it, seen from x at distance d, sends
-//   colour * attenuation(d) * max(0, cos theta_y)
-// (theta_y between its normal and the direction to x; |cos| when two-sided), so a small rect
-// light facing a point lights it as a point light of the same colour and intensity would. Seen
-// directly (camera, reflection and glossy rays), its face shows colour: its emitted radiance.
+// One emission, `color`, read by each integrator by its own rule (docs/rendering.md, "Lights and units"):
+//  - Seen directly (camera, mirror and glossy rays, and BSDF rays of the path tracer), its face
+//    shows `color`: the radiance it emits, in both integrators.
+//  - The path tracer samples its face as the area emitter it is: a point y seen from x at
+//    distance d adds color x cos(theta_y) x cos(theta_x) x area / d^2, the physical rule.
+//  - Whitted lights a point as its samples would as point lights: each sends
+//    color x attenuation(d) x cos(theta_y) (theta_y between the light's normal and the direction
+//    to x; |cos| when two-sided), so a small rect light facing a point lights it as a point light
+//    of the same colour and attenuation would. A Blender area light sets `attenuation` so that
+//    this matches its power (io/gltf/extras.cpp).
 #pragma once
 
 #include "core/lights/attenuation.h"
@@ -18,14 +23,9 @@ struct RectLight {
   Vec3 corner{0.0f};
   Vec3 edge1{1.0f, 0.0f, 0.0f};
   Vec3 edge2{0.0f, 0.0f, 1.0f};
-  Vec3 color{1.0f};  // linear RGB, already multiplied by the scene's "intensity"
-  Attenuation attenuation;
+  Vec3 color{1.0f};  // the radiance of its face: linear RGB, already multiplied by the scene's "intensity"
+  Attenuation attenuation;  // Whitted's
   bool two_sided = false;
-  // The radiance of its face as the path tracer's area emitter. A scene file's rect light
-  // emits its colour (what Whitted shows on its face); one from a Blender area light of power P
-  // emits P / (4 A) x its colour, as Cycles' does (tools/cycles measures it), where Whitted's
-  // colour is set for its own rule (io/gltf/extras.cpp).
-  Vec3 radiance{1.0f};
 
   // Unit normal, the side it emits towards: edge1 x edge2. (io refuses parallel or zero edges.)
   Vec3 normal() const { return glm::normalize(glm::cross(edge1, edge2)); }

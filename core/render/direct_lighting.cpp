@@ -36,16 +36,21 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     // A point light is one sample; an area light shadow_samples points stratified over it, one
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
     const int count = light_sample_count(light, samples);
-    // A rect light's frame, once per point rather than once per sample.
     const RectLight* rect = std::get_if<RectLight>(&light);
-    const Vec3 rect_normal = rect ? rect->normal() : Vec3(0.0f);
+    const RectFrame frame = rect ? RectFrame(*rect) : RectFrame(RectLight{});  // once per point, not per sample
     const StratifiedGrid grid(count);
-    const auto sample_at = [&](int i) {
-      const Vec2 u = count == 1 && (centred || !std::holds_alternative<RectLight>(light))
+    // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
+    // light of its colour would, times the light's attenuation and its cosine towards the point.
+    // Inlined: as a call of its own (it returns a LightSample) soft_shadows.json took 11% longer (measured).
+    const auto sample_at = [&](int i) __attribute__((always_inline)) {
+      const Vec2 u = count == 1 && (centred || !rect)
                          ? Vec2(0.5f)
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
-      return rect ? sample_rect_light(*rect, rect_normal, s.position, u) : sample_light(light, s.position, u);
+      if (!rect) return sample_li(light, s.position, u);
+      LightSample ls = sample_li(*rect, frame, s.position, u);
+      ls.radiance *= ls.pdf > 0.0f ? rect->attenuation(ls.distance) * ls.cos_light : 0.0f;
+      return ls;
     };
     // The shadow ray towards a sample, or false when the sample cannot light the point.
     const auto shadow_ray = [&](const LightSample& ls, Ray& shadow) {

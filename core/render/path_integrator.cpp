@@ -2,6 +2,7 @@
 
 #include "core/render/direct_lighting.h"
 #include "core/render/medium_stack.h"
+#include "core/render/scene_lights.h"
 
 namespace rt {
 namespace {
@@ -35,85 +36,25 @@ float bsdf_weight(PathSettings::Strategy strategy, float bsdf_pdf, float light_p
 
 }  // namespace
 
+// One shadow ray to each light of the scene's list (core/render/scene_lights.h): a delta light
+// counts fully, a light that BSDF rays can also meet is weighted against them (MIS).
 Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, int bounce, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
   const uint64_t path = static_cast<uint64_t>(bounce);
   const PathSettings::Strategy strategy = ctx.settings.path.strategy;
-  const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // rect lights and emissive surfaces
+  const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // all but the delta lights
   Vec3 sum(0.0f);
-  for (size_t l = 0; l < scene.lights.size(); ++l) {
-    const Light& light = scene.lights[l];
-    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, l);
-    if (const RectLight* rect = std::get_if<RectLight>(&light)) {
-      if (!sample_areas) continue;
-      // An area emitter of radiance `color`: a point drawn uniformly by area, density d^2 /
-      // (cos A) per solid angle.
-      const Vec3 to = rect->point(u) - s.position;
-      const float d2 = glm::dot(to, to);
-      if (!(d2 > 0.0f)) continue;
-      const float distance = std::sqrt(d2);
-      const Vec3 wi = to / distance;
-      const Vec3 normal_area = glm::cross(rect->edge1, rect->edge2);
-      const float area = glm::length(normal_area);
-      float cos_light = -glm::dot(wi, normal_area) / area;
-      if (rect->two_sided) cos_light = std::fabs(cos_light);
-      if (!(cos_light > 0.0f)) continue;
-      const Vec3 f = bsdf.eval(wi);
-      if (max_component(f) <= 0.0f) continue;
-      const float light_pdf = d2 / (cos_light * area);
-      if (!visible(s, wi, distance, ctx)) continue;
-      sum += f * rect->radiance * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
-      continue;
-    }
-    // Point, spot, directional: a delta, reached by light sampling alone.
-    const LightSample ls = sample_light(light, s.position, u);
-    if (max_component(ls.radiance) <= 0.0f) continue;
+  for (size_t l = 0; l < light_count(scene); ++l) {
+    if (!sample_areas && !light_is_delta(scene, l)) continue;
+    const LightSample ls = sample_li(scene, l, s.position, ctx.samples, path, ctx.settings.detail);
+    if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) continue;
     const Vec3 f = bsdf.eval(ls.direction);
     if (max_component(f) <= 0.0f) continue;
     if (!visible(s, ls.direction, ls.distance, ctx)) continue;
-    sum += f * ls.radiance * kDeltaLightScale;
-  }
-  if (sample_areas && !scene.emitters.empty()) {
-    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size());
-    const float u_pick = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size() + 1).x;
-    const EmitterSample e = scene.emitters.sample(u_pick, u);
-    const Vec3 to = e.point - s.position;
-    const float d2 = glm::dot(to, to);
-    if (d2 > 0.0f && e.area_pdf > 0.0f) {
-      const float distance = std::sqrt(d2);
-      const Vec3 wi = to / distance;
-      const Vec3 f = bsdf.eval(wi);
-      if (max_component(f) > 0.0f) {
-        // The emitter's own record at the point, as a ray from here would meet it.
-        Ray towards;
-        towards.origin = s.position;
-        towards.direction = wi;
-        Hit hit = e.hit;
-        hit.t = distance;
-        const SurfaceInteraction si = scene.surface(towards, hit);
-        const float cos_light = std::fabs(glm::dot(si.geometric_normal, wi));
-        if (cos_light > 0.0f) {
-          const EvaluatedSurface emitter = evaluate_surface(scene.materials()[si.material], si, wi, scene.textures(),
-                                                            0.0f, ctx.settings.detail);
-          const float light_pdf = e.area_pdf * d2 / cos_light;
-          if (max_component(emitter.emission) > 0.0f && visible(s, wi, distance, ctx))
-            sum += f * emitter.emission * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
-        }
-      }
-    }
-  }
-  // An environment image: a direction drawn by its luminance. (A uniform colour is left to BSDF
-  // sampling, which draws a diffuse surface's directions as well as uniform sampling would.)
-  const Environment& sky = scene.background;
-  if (sample_areas && sky.is_image()) {
-    const Vec2 u = ctx.samples.get2(SamplePurpose::kLight, path, scene.lights.size() + 2);
-    Vec3 wi, emitted;
-    float light_pdf = 0.0f;
-    if (sky.sample(u, wi, emitted, light_pdf)) {
-      const Vec3 f = bsdf.eval(wi);
-      if (max_component(f) > 0.0f && max_component(emitted) > 0.0f && visible(s, wi, kInfinity, ctx))
-        sum += f * emitted * (light_weight(strategy, light_pdf, bsdf.pdf(wi)) / light_pdf);
-    }
+    if (ls.delta)
+      sum += f * ls.radiance * kDeltaLightScale;
+    else
+      sum += f * ls.radiance * (light_weight(strategy, ls.pdf, bsdf.pdf(ls.direction)) / ls.pdf);
   }
   return sum;
 }
@@ -148,14 +89,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     }
     if (met.light) {
       const RectLight& rect = *met.light;
-      float weight = 1.0f;
-      if (!delta) {
-        const Vec3 normal_area = glm::cross(rect.edge1, rect.edge2);
-        const float area = glm::length(normal_area);
-        const float cos_light = std::fabs(glm::dot(dir, normal_area)) / area;
-        weight = bsdf_weight(settings.path.strategy, bsdf_pdf, distance * distance / (cos_light * area));
-      }
-      radiance += beta * rect.radiance * weight;
+      const float weight = delta ? 1.0f : bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance));
+      radiance += beta * rect.color * weight;
       break;
     }
     const SurfaceInteraction si = scene.surface(ray, met.hit);
@@ -165,11 +100,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         evaluate_surface(material, si, ray.direction, scene.textures(), cone_width, settings.detail);
     if (s.emission != Vec3(0.0f)) {
       float weight = 1.0f;
-      if (!delta && scene.emitters.draws(met.hit.prim)) {
-        const float cos_light = std::fabs(glm::dot(si.geometric_normal, dir));
-        weight = bsdf_weight(settings.path.strategy, bsdf_pdf,
-                             scene.emitters.area_pdf(material.emission) * distance * distance / cos_light);
-      }
+      const float light_pdf = delta ? 0.0f : surface_pdf_li(scene, met.hit, si.geometric_normal, dir, distance);
+      if (light_pdf > 0.0f) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, light_pdf);
       radiance += beta * s.emission * weight;
     }
     if (bounce >= settings.max_depth) break;

@@ -44,11 +44,13 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   light.edge1 = Vec3(sx, 0.0f, 0.0f);
   light.edge2 = Vec3(0.0f, -sy, 0.0f);
   const Vec3 c = color ? glm::max(Vec3((*color)[0], (*color)[1], (*color)[2]), Vec3(0.0f)) : Vec3(1.0f);
-  light.color = c * (*power / (kPi * kPi));
   // Cycles' area light of power P has radiance P / (4 A): head-on it lights like a point light
   // of the same power (intensity P / (4 pi) W/sr, times pi for the cosine lobe's peak).
-  light.radiance = c * (*power / (4.0f * sx * sy));
-  light.attenuation = Attenuation{0.0f, 0.0f, 1.0f};
+  const float area = sx * sy;
+  light.color = c * (*power / (4.0f * area));
+  // Whitted lights by each sample's colour x attenuation (core/lights/rect_light.h): falling off
+  // as 1 / d^2 from P / pi^2 head-on, as a Blender point light of that power does under Whitted.
+  light.attenuation = Attenuation{0.0f, 0.0f, kPi * kPi / (4.0f * area)};
   light.two_sided = flag(a, "two_sided");
   return light;
 }

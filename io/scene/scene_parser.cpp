@@ -267,7 +267,6 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       light.edge1 = *e1;
       light.edge2 = *e2;
       light.color = emitted;
-      light.radiance = emitted;
       light.attenuation = *attenuation;
       light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
       out.emplace_back(light);

@@ -41,15 +41,15 @@ TEST_CASE("glTF lights: photometric units converted by the documented rule", "[g
   // 683 pi candela of white light: colour 1, falling off as 1 / d^2.
   auto light = light_from_gltf("point", {1, 1, 1}, 683.0 * M_PI, 0, 0, why);
   REQUIRE(light);
-  const LightSample at2 = sample_light(*light, Vec3(0, 0, -2), Vec2(0.5f));
+  const LightSample at2 = sample_li(*light, Vec3(0, 0, -2), Vec2(0.5f));
   CHECK(at2.radiance.x == Approx(0.25f));
   // A Blender 1000 W point light exported as 1000 * 683 / (4 pi) cd, 5 m away: 1000 / (4 pi 25) / pi = 1.0132.
   light = light_from_gltf("point", {1, 1, 1}, 1000.0 * 683.0 / (4 * M_PI), 0, 0, why);
-  CHECK(sample_light(*light, Vec3(5, 0, 0), Vec2(0.5f)).radiance.y == Approx(1000.0 / (4 * M_PI * 25) / M_PI));
+  CHECK(sample_li(*light, Vec3(5, 0, 0), Vec2(0.5f)).radiance.y == Approx(1000.0 / (4 * M_PI * 25) / M_PI));
   // 10 lux of sunlight straight down: 10 / (683 pi) = 0.00466 everywhere.
   light = light_from_gltf("directional", {}, 10.0, 0, 0, why);
   REQUIRE(light);
-  const LightSample sun = sample_light(*light, Vec3(100, -3, 7), Vec2(0.5f));
+  const LightSample sun = sample_li(*light, Vec3(100, -3, 7), Vec2(0.5f));
   CHECK(sun.radiance.z == Approx(10.0 / (683.0 * M_PI)));
   CHECK(sun.direction.z == Approx(1.0f));  // towards the light: the node's +Z, the light shines down -Z
   CHECK(std::isinf(sun.distance));
@@ -57,7 +57,7 @@ TEST_CASE("glTF lights: photometric units converted by the documented rule", "[g
   light = light_from_gltf("spot", {1, 1, 1}, 683.0 * M_PI, 0.2, 0.6, why);
   REQUIRE(light);
   const auto at_angle = [&](double a) {
-    return sample_light(*light, Vec3(std::sin(a), 0, -std::cos(a)), Vec2(0.5f)).radiance.x;
+    return sample_li(*light, Vec3(std::sin(a), 0, -std::cos(a)), Vec2(0.5f)).radiance.x;
   };
   CHECK(at_angle(0.1) == Approx(1.0f));
   CHECK(at_angle(0.7) == 0.0f);

@@ -29,7 +29,7 @@ TEST_CASE("phong: Lambert term plus a specular lobe around the mirror direction"
 
 TEST_CASE("point light: quadratic attenuation 1 / (c0 + c1 d + c2 d^2)", "[lights]") {
   const PointLight light{{0, 4, 0}, Vec3(2.0f), {1.0f, 0.5f, 0.25f}};
-  const LightSample s = sample_light(Light(light), Vec3(0), Vec2(0.5f));
+  const LightSample s = sample_li(Light(light), Vec3(0), Vec2(0.5f));
   CHECK(s.distance == Approx(4.0f));
   CHECK(s.direction.y == Approx(1.0f));
   CHECK(s.radiance.x == Approx(2.0f / (1.0f + 2.0f + 4.0f)));

@@ -44,31 +44,44 @@ std::string shadow_scene(bool occluder) {
 
 }  // namespace
 
-TEST_CASE("rect light: emits towards edge1 x edge2, like a point light of its colour nearby", "[lights]") {
+TEST_CASE("rect light: emits towards edge1 x edge2; Whitted lights like a point light of its colour nearby",
+          "[lights]") {
   RectLight down;  // at height 4, facing down: (2,0,0) x (0,0,2) = (0,-4,0)
   down.corner = Vec3(-0.01f, 4.0f, -0.01f);
   down.edge1 = Vec3(0.02f, 0, 0);
   down.edge2 = Vec3(0, 0, 0.02f);
   down.color = Vec3(2.0f);
   CHECK(down.normal().y == Approx(-1.0f));
-  // Straight below, a small light sends its colour, like a point light there.
-  const LightSample below = sample_light(Light(down), Vec3(0.0f), Vec2(0.5f));
+  // Straight below: its face's radiance, head-on, drawn with density d^2 / area per solid angle.
+  const LightSample below = sample_li(Light(down), Vec3(0.0f), Vec2(0.5f));
   CHECK(below.radiance.x == Approx(2.0f));
   CHECK(below.direction.y == Approx(1.0f));
   CHECK(below.distance == Approx(4.0f));
-  // At 60 degrees off its normal: half, the emitter's cosine.
-  const LightSample slanted = sample_light(Light(down), Vec3(4.0f * std::sqrt(3.0f), 0.0f, 0.0f), Vec2(0.5f));
-  CHECK(slanted.radiance.x == Approx(1.0f).epsilon(1e-3));
+  CHECK(below.cos_light == Approx(1.0f));
+  CHECK(below.pdf == Approx(16.0f / 0.0004f));
+  CHECK_FALSE(below.delta);
+  // At 60 degrees off its normal: the emitter's cosine is a half.
+  const LightSample slanted = sample_li(Light(down), Vec3(4.0f * std::sqrt(3.0f), 0.0f, 0.0f), Vec2(0.5f));
+  CHECK(slanted.cos_light == Approx(0.5f).epsilon(1e-3));
+  CHECK(slanted.pdf == Approx(64.0f / (0.5f * 0.0004f)).epsilon(1e-3));
+  // Whitted's rule: colour x attenuation x cos at the light, then Phong at the floor (cos 1
+  // below, cos 0.5 at 60 degrees).
+  Scene scene;
+  scene.lights = {down};
+  RenderSettings settings;
+  settings.shadow_samples = 1;
+  CHECK(floor_light(scene, settings, 0.0f).x == Approx(2.0f));
+  CHECK(floor_light(scene, settings, 4.0f * std::sqrt(3.0f)).x == Approx(2.0f * 0.5f * 0.5f).epsilon(1e-3));
   // Above it, nothing, unless two-sided; swapping the edges turns it round.
-  CHECK(sample_light(Light(down), Vec3(0, 8, 0), Vec2(0.5f)).radiance.x == 0.0f);
+  CHECK(sample_li(Light(down), Vec3(0, 8, 0), Vec2(0.5f)).pdf == 0.0f);
   RectLight up = down;
   std::swap(up.edge1, up.edge2);
   CHECK(up.normal().y == Approx(1.0f));
-  CHECK(sample_light(Light(up), Vec3(0, 8, 0), Vec2(0.5f)).radiance.x == Approx(2.0f));
-  CHECK(sample_light(Light(up), Vec3(0.0f), Vec2(0.5f)).radiance.x == 0.0f);
+  CHECK(sample_li(Light(up), Vec3(0, 8, 0), Vec2(0.5f)).pdf > 0.0f);
+  CHECK(sample_li(Light(up), Vec3(0.0f), Vec2(0.5f)).pdf == 0.0f);
   RectLight both = down;
   both.two_sided = true;
-  CHECK(sample_light(Light(both), Vec3(0, 8, 0), Vec2(0.5f)).radiance.x == Approx(2.0f));
+  CHECK(sample_li(Light(both), Vec3(0, 8, 0), Vec2(0.5f)).cos_light == Approx(1.0f));
   // Samples cover the rectangle, corner to corner, for skewed edges too.
   RectLight skew = down;
   skew.edge1 = Vec3(1, 0, 0);

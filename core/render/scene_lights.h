@@ -1,0 +1,39 @@
+// The scene's lights in one list, as light sampling sees them: the scene's lights (point, spot,
+// directional, rect) by their index, then its emissive surfaces as one light (a point drawn from
+// the Emitters table: core/lights/emitters.h), then the sky (a direction drawn from an
+// environment image by luminance). Each answers sample_li; the pdf_li functions give the
+// density of whatever a BSDF ray met, for multiple importance sampling. The path tracer's
+// direct light is one loop over this list (core/render/path_integrator.cpp).
+//
+// Light l's numbers are keyed (SamplePurpose::kLight, path, key): key l for the scene's lights,
+// n and n + 1 for the surfaces (the point, the entry), n + 2 for the sky, n = scene.lights.size().
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/lights/light_sample.h"
+#include "core/render_settings.h"
+#include "core/sampling.h"
+#include "core/scene.h"
+
+namespace rt {
+
+// How many lights the list holds: the scene's, the surfaces and the sky (the last two draw
+// nothing when the scene has no emissive surface or no environment image).
+inline size_t light_count(const Scene& scene) { return scene.lights.size() + 2; }
+
+// Whether light l is a delta light (no ray meets it by chance: light sampling alone finds it).
+inline bool light_is_delta(const Scene& scene, size_t l) { return l < scene.lights.size() && is_delta(scene.lights[l]); }
+
+// A sample of light l for the shading point `point`, from the numbers of `samples` at bounce
+// `path`. pdf 0: none (nothing to draw, or a point the light does not emit from).
+LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
+                      SurfaceDetailSwitches detail);
+
+// The density with which sample_li draws the direction `direction` (unit) from a point to the
+// emissive surface of `hit`, met `distance` away with unit geometric normal `normal`; 0 when
+// light sampling never draws that surface.
+float surface_pdf_li(const Scene& scene, const Hit& hit, Vec3 normal, Vec3 direction, float distance);
+
+}  // namespace rt
