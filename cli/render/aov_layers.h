@@ -1,26 +1,27 @@
-// The layers an EXR output may hold beside the colour (--aov): each one's name, the integrator
-// that renders its data, its channels, and whether it is one ray through the pixel's centre.
-// Albedo and normal are averaged as the colour is (what denoisers expect); the depth is one ray,
-// as Blender's Z pass, since an average of a near surface and the background's 1e10 is no
-// distance at all.
+// The layers an EXR output may hold beside the colour (--aov): each one's name, its channels, and
+// which of the film's first-hit layers it holds (core/render/aovs.h: filled by the integrator in
+// the same pass as the colour and averaged by the same pixel sampler, the depth the nearest).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "core/render/film.h"
+#include "io/image/exr_file.h"
+
 namespace rt {
 
 struct AovLayer {
+  enum class Source { kAlbedo, kNormal, kDistance };
   const char* name;
-  const char* integrator;
   std::vector<std::string> channels;
-  bool one_ray;
+  Source source;
 };
 
 inline const std::vector<AovLayer>& aov_layers() {
-  static const std::vector<AovLayer> layers = {{"albedo", "albedo", {"R", "G", "B"}, false},
-                                               {"normal", "aov-normal", {"X", "Y", "Z"}, false},
-                                               {"depth", "aov-depth", {"Z"}, true}};
+  static const std::vector<AovLayer> layers = {{"albedo", {"R", "G", "B"}, AovLayer::Source::kAlbedo},
+                                               {"normal", {"X", "Y", "Z"}, AovLayer::Source::kNormal},
+                                               {"depth", {"Z"}, AovLayer::Source::kDistance}};
   return layers;
 }
 
@@ -29,6 +30,20 @@ inline const AovLayer* find_aov(const std::string& name) {
   for (const AovLayer& l : aov_layers())
     if (name == l.name) return &l;
   return nullptr;
+}
+
+// The layer's values from a film rendered with its first-hit layers (RenderView::aovs).
+inline ExrLayer aov_layer(const Film& film, const AovLayer& aov) {
+  ExrLayer layer{aov.name, aov.channels, {}};
+  if (aov.source == AovLayer::Source::kDistance) {
+    layer.values = film.distance;
+    return layer;
+  }
+  const Image& image = aov.source == AovLayer::Source::kAlbedo ? film.albedo : film.normal;
+  layer.values.reserve(image.pixels.size() * 3);
+  for (const Vec3& p : image.pixels)
+    for (int c = 0; c < 3; ++c) layer.values.push_back(p[c]);
+  return layer;
 }
 
 }  // namespace rt

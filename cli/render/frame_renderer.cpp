@@ -63,8 +63,9 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
         };
       }
       control.cancel = &interrupt.flag();
-      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}}
-                                               : RenderView{nullptr, 0, content.window};
+      // EXR layers come from the same pass as the colour (no stereo with EXR: checked before).
+      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
+                                               : RenderView{nullptr, 0, content.window, !content.aovs.empty()};
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
       if (totals.last.cancelled) {
@@ -91,25 +92,7 @@ std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& lo
       exr.height = settings.height;
       exr.window = film.window();
       exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
-      for (const std::string& aov : content.aovs) {
-        const AovLayer& a = *find_aov(aov);  // checked by render_plan
-        RenderSettings data = settings;
-        data.integrator = a.integrator;
-        if (a.one_ray) data.antialias.mode = "none";
-        Film layer;
-        const InterruptWatch interrupt;
-        RenderControl control;
-        control.cancel = &interrupt.flag();
-        const RenderStats s = render(scene, data, layer, control, static_cast<uint32_t>(frame), RenderView{nullptr, 0, content.window});
-        if (s.cancelled) {
-          std::fprintf(stderr, "rtcli: interrupted in frame %d's %s layer; %s\n", frame, aov.c_str(),
-                       sinks[0].written().empty() ? "nothing written" : "the frames before it were written");
-          return 128 + interrupt.signal();
-        }
-        totals.seconds += s.seconds;
-        totals.rays += s.rays;
-        exr.layers.push_back(layer_of(layer, a.name, a.channels));
-      }
+      for (const std::string& aov : content.aovs) exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
       exr.attributes = render_attributes(content.identity, frame, exr.window);
       const SignalBlock block;
       if (!sinks[0].add_exr(exr, frame, content.exr_float, error)) {

@@ -25,6 +25,16 @@ std::vector<LatticeSample> take_border(std::vector<std::vector<LatticeSample>>& 
 
 Vec3 average(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (a + b + c + d) * 0.25f; }
 
+// A cell's four samples' layers, each a quarter of the cell's share of the pixel.
+void add_layers(Aovs& layers, float share, const LatticeSample& a, const LatticeSample& b, const LatticeSample& c,
+                const LatticeSample& d) {
+  const float quarter = 0.25f * share;
+  layers.add(a.aovs, quarter);
+  layers.add(b.aovs, quarter);
+  layers.add(c.aovs, quarter);
+  layers.add(d.aovs, quarter);
+}
+
 // Lattice points traced a packet of neighbours at a time: add() queues a point, (x, y) in key
 // units from the image's top-left corner, and where its sample goes; flush() traces what is
 // queued (add() does when the packet is full). A point's random numbers are keyed by its place,
@@ -45,7 +55,7 @@ class PointBatch {
     for (int i = 0; i < batch_.count; ++i) {
       const Vec3& r = batch_.radiance[i];
       const Vec3 shown = ctx_.settings.display.apply(r);  // what the picture shows of it
-      *to_[i] = LatticeSample{r, {srgb8(shown.x), srgb8(shown.y), srgb8(shown.z)}, true};
+      *to_[i] = LatticeSample{r, {srgb8(shown.x), srgb8(shown.y), srgb8(shown.z)}, true, batch_.aovs[i]};
     }
     batch_.clear();
   }
@@ -126,8 +136,8 @@ bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, con
 }
 
 // The cell with top-left lattice point (i, j) and `size` lattice steps per side, at `depth`.
-Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int size, int depth,
-                                     PixelContext& ctx) const {
+Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, float share,
+                                     Aovs* layers, PixelContext& ctx) const {
   // Each point is traced once, by the first cell that needs it (the row's pixel corners and a
   // split's new points are traced ahead, a packet at a time).
   const auto trace_ahead = [&](PointBatch& batch, int ci, int cj) {
@@ -155,6 +165,7 @@ Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int si
   const LatticeSample& d = corner(i + size, j + size);
   if (size == 1 || !differ(a, b, c, d)) {
     lattice.deepest = std::max(lattice.deepest, depth);
+    if (layers) add_layers(*layers, share, a, b, c, d);
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
   const int h = size / 2;
@@ -166,9 +177,11 @@ Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int si
   trace_ahead(split, i + size, j + h);
   trace_ahead(split, i + h, j + size);
   split.flush();
-  return average(refine_corners(lattice, i, j, h, depth + 1, ctx), refine_corners(lattice, i + h, j, h, depth + 1, ctx),
-                 refine_corners(lattice, i, j + h, h, depth + 1, ctx),
-                 refine_corners(lattice, i + h, j + h, h, depth + 1, ctx));
+  const float quarter = 0.25f * share;
+  return average(refine_corners(lattice, i, j, h, depth + 1, quarter, layers, ctx),
+                 refine_corners(lattice, i + h, j, h, depth + 1, quarter, layers, ctx),
+                 refine_corners(lattice, i, j + h, h, depth + 1, quarter, layers, ctx),
+                 refine_corners(lattice, i + h, j + h, h, depth + 1, quarter, layers, ctx));
 }
 
 bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out) {
@@ -217,7 +230,7 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       lattice.hand_in(0, n, bottom[static_cast<size_t>(x - tile.x0)]);
       lattice.hand_in(n, n, bottom[static_cast<size_t>(x - tile.x0 + 1)]);
       FilmPixel& pixel = out.at(x, y);
-      pixel.color = refine_corners(lattice, 0, 0, n, 0, ctx);
+      pixel.color = refine_corners(lattice, 0, 0, n, 0, 1.0f, ctx.aovs ? &pixel.aovs : nullptr, ctx);
       pixel.depth = static_cast<uint8_t>(lattice.deepest);
       pixel.samples = static_cast<uint16_t>(lattice.used);
       for (int k = 0; k <= n; ++k) {
@@ -235,7 +248,8 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
 
 // The cell with top-left corner (x, y) and `size` key units per side, at `depth`: the average of
 // its four quarters' centres, or of its four quarters refined the same way.
-Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const {
+Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, float share, FilmPixel& pixel,
+                                     PixelContext& ctx) const {
   const int q = size / 4;
   LatticeSample a, b, c, d;
   PointBatch centres(ctx);
@@ -247,18 +261,21 @@ Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, FilmPixe
   pixel.samples = static_cast<uint16_t>(pixel.samples + 4);
   if (depth == max_depth_ || !differ(a, b, c, d)) {
     pixel.depth = static_cast<uint8_t>(std::max<int>(pixel.depth, depth));
+    if (ctx.aovs) add_layers(pixel.aovs, share, a, b, c, d);
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
   const int h = size / 2;
-  return average(refine_centres(x, y, h, depth + 1, pixel, ctx), refine_centres(x + h, y, h, depth + 1, pixel, ctx),
-                 refine_centres(x, y + h, h, depth + 1, pixel, ctx),
-                 refine_centres(x + h, y + h, h, depth + 1, pixel, ctx));
+  const float quarter = 0.25f * share;
+  return average(refine_centres(x, y, h, depth + 1, quarter, pixel, ctx),
+                 refine_centres(x + h, y, h, depth + 1, quarter, pixel, ctx),
+                 refine_centres(x, y + h, h, depth + 1, quarter, pixel, ctx),
+                 refine_centres(x + h, y + h, h, depth + 1, quarter, pixel, ctx));
 }
 
 bool AdaptiveSampler::render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out) {
   return render_pixels(tile, ctx, out, [&](int x, int y) {
     FilmPixel pixel;
-    pixel.color = refine_centres(x * kKeyCells, y * kKeyCells, kKeyCells, 0, pixel, ctx);
+    pixel.color = refine_centres(x * kKeyCells, y * kKeyCells, kKeyCells, 0, 1.0f, pixel, ctx);
     return pixel;
   });
 }

@@ -29,6 +29,7 @@ struct LatticeSample {
   Vec3 radiance{0.0f};
   std::array<uint8_t, 3> display{};
   bool known = false;
+  Aovs aovs;  // when the render asks for them
 };
 
 class AdaptiveSampler final : public PixelSampler {
@@ -42,8 +43,11 @@ class AdaptiveSampler final : public PixelSampler {
   struct PixelLattice;
   bool render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out);
   bool render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out);
-  Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, PixelContext& ctx) const;
-  Vec3 refine_centres(int x, int y, int size, int depth, FilmPixel& pixel, PixelContext& ctx) const;
+  // Each returns the cell's radiance; `share` is its area as a fraction of the pixel's, with
+  // which its samples' layers go into `layers` (null: none asked).
+  Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, float share, Aovs* layers,
+                      PixelContext& ctx) const;
+  Vec3 refine_centres(int x, int y, int size, int depth, float share, FilmPixel& pixel, PixelContext& ctx) const;
   bool differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c, const LatticeSample& d) const;
 
   float threshold_levels_;  // the threshold in levels of 255

@@ -4,9 +4,7 @@
 //   depth    distance from the camera, linear from white at the nearest point of the scene's
 //            bounds to black at their farthest corner;
 //   albedo   the evaluated diffuse colour (kd, less what the material transmits).
-// And the data an EXR file's layers hold (--aov), not offered as views: the shading normal as it
-// is (world space, unit length), and the distance along the camera ray (1e10 where nothing is
-// hit, as Blender writes it).
+// Like every integrator they fill the camera sample's layers (core/render/aovs.h) when asked.
 // An area light's face seen first is drawn as a surface would be (its normal, its coordinates
 // along its edges, its distance; no albedo: black). A ray that hits nothing is black. One
 // class, parameterised by the view of the hit.
@@ -25,22 +23,29 @@ struct DebugHit {
 };
 
 inline Vec3 black() { return Vec3(0.0f); }
-inline Vec3 far_away() { return Vec3(1e10f); }  // Blender's depth where nothing is hit
 
-// (A function for the miss value: clang 14, the fuzzers' compiler, takes no float template arguments.)
-template <Vec3 (*View)(const DebugHit&, const Scene&), Vec3 (*Miss)() = black>
+template <Vec3 (*View)(const DebugHit&, const Scene&)>
 class DebugIntegrator final : public Integrator {
  public:
   Vec3 radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int /*depth*/, TraceContext& ctx) const override {
     DebugHit h{camera_ray, {}, 0.0f, false};
-    if (!met.surface && !met.light) return Miss();
+    if (!met.surface && !met.light) {
+      record_no_hit(ctx);
+      return black();
+    }
     h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
     if (met.light) {
       h.light = true;
       h.surface.shading_normal = met.light->normal();
       h.surface.texcoord[0].uv = met.light_uv;
+      record_first_hit(ctx, Vec3(0.0f), h.surface.shading_normal, h.distance);
     } else {
       h.surface = ctx.scene.surface(h.ray, met.hit);
+      if (ctx.aovs) {
+        const EvaluatedSurface s = evaluate_surface(ctx.scene.materials()[h.surface.material], h.surface,
+                                                    h.ray.direction, ctx.scene.textures());
+        record_first_hit(ctx, s.diffuse, s.n, h.distance);
+      }
     }
     return View(h, ctx.scene);
   }
@@ -72,14 +77,9 @@ inline Vec3 albedo_view(const DebugHit& h, const Scene& scene) {
   return evaluate_surface(scene.materials()[h.surface.material], h.surface, h.ray.direction, scene.textures()).diffuse;
 }
 
-inline Vec3 normal_data(const DebugHit& h, const Scene&) { return h.surface.shading_normal; }
-inline Vec3 distance_data(const DebugHit& h, const Scene&) { return Vec3(h.distance); }
-
 using NormalsIntegrator = DebugIntegrator<normals_view>;
 using UvIntegrator = DebugIntegrator<uv_view>;
 using DepthIntegrator = DebugIntegrator<depth_view>;
 using AlbedoIntegrator = DebugIntegrator<albedo_view>;
-using NormalDataIntegrator = DebugIntegrator<normal_data>;
-using DistanceDataIntegrator = DebugIntegrator<distance_data, far_away>;
 
 }  // namespace rt

@@ -1,6 +1,6 @@
 // What a render produces per pixel: the colour, plus the bookkeeping channels a pixel sampler
 // writes beside it: how many camera samples the pixel's value averages, and how deep adaptive
-// anti-aliasing split it (0 = not refined). Each worker fills a FilmTile; the renderer copies
+// anti-aliasing split it (0 = not refined); and when asked, the first hit's layers (aovs.h). Each worker fills a FilmTile; the renderer copies
 // the finished tile into the Film, so no two threads ever write the same memory.
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/render/aovs.h"
 #include "core/render/tile_grid.h"
 
 namespace rt {
@@ -18,6 +19,7 @@ struct FilmPixel {
   Vec3 color{0.0f};
   uint16_t samples = 0;  // camera samples the colour averages (a shared corner counts in each pixel)
   uint8_t depth = 0;     // refinement depth
+  Aovs aovs;             // when the render asks for them
 };
 
 class FilmTile {
@@ -45,6 +47,9 @@ struct Film {
   Image color;                    // linear RGB
   std::vector<uint16_t> samples;  // per pixel, row-major
   std::vector<uint8_t> depth;     // per pixel, row-major
+  // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
+  Image albedo, normal;
+  std::vector<float> distance;
   int x0 = 0, y0 = 0;             // where the film's first pixel is in the image
 
   Film() = default;
@@ -52,17 +57,25 @@ struct Film {
 
   // Sized for width x height pixels, all zero, grown a slice at a time with `cancel` checked in
   // between: at 8192 x 8192 the film is a gigabyte to write, and Ctrl-C must not wait for it.
-  // False (the film left partly grown) once `cancel` is set.
-  bool allocate(int width, int height, const std::atomic<bool>* cancel) {
+  // With `aovs`, the first hit's layers too. False (the film left partly grown) once `cancel` is set.
+  bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false) {
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
-    color.width = width;
-    color.height = height;
+    color.width = albedo.width = normal.width = width;
+    color.height = albedo.height = normal.height = height;
     color.pixels.clear();
     samples.clear();
     depth.clear();
+    albedo.pixels.clear();
+    normal.pixels.clear();
+    distance.clear();
     color.pixels.reserve(n);
     samples.reserve(n);
     depth.reserve(n);
+    if (aovs) {
+      albedo.pixels.reserve(n);
+      normal.pixels.reserve(n);
+      distance.reserve(n);
+    }
     constexpr size_t kSlice = size_t{1} << 20;
     while (samples.size() < n) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return false;
@@ -70,9 +83,15 @@ struct Film {
       color.pixels.resize(next, Vec3(0.0f));
       samples.resize(next, 0);
       depth.resize(next, 0);
+      if (aovs) {
+        albedo.pixels.resize(next, Vec3(0.0f));
+        normal.pixels.resize(next, Vec3(0.0f));
+        distance.resize(next, Aovs::kFarAway);
+      }
     }
     return true;
   }
+  bool has_aovs() const { return !distance.empty(); }
 
   int width() const { return color.width; }
   int height() const { return color.height; }
@@ -86,9 +105,15 @@ struct Film {
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) {
         const FilmPixel& p = t.at(x, y);
-        color.at(x - x0, y - y0) = p.color;
-        samples[index(x - x0, y - y0)] = p.samples;
-        depth[index(x - x0, y - y0)] = p.depth;
+        const size_t i = index(x - x0, y - y0);
+        color.pixels[i] = p.color;
+        samples[i] = p.samples;
+        depth[i] = p.depth;
+        if (has_aovs()) {
+          albedo.pixels[i] = p.aovs.albedo;
+          normal.pixels[i] = p.aovs.normal;
+          distance[i] = p.aovs.distance;
+        }
       }
   }
 };

@@ -12,7 +12,6 @@ struct Entry {
   std::unique_ptr<Integrator> (*make)();
   bool radiance;  // false: a debug view (integrator_shows_radiance)
   bool samples_pixels = false;  // integrator_samples_pixels
-  bool listed = true;           // false: for EXR layers only, not in integrator_names()
 };
 
 template <class T>
@@ -28,8 +27,6 @@ constexpr Entry kIntegrators[] = {
     {"uv", &make<UvIntegrator>, false},
     {"depth", &make<DepthIntegrator>, false},
     {"albedo", &make<AlbedoIntegrator>, false},
-    {"aov-normal", &make<NormalDataIntegrator>, false, false, false},
-    {"aov-depth", &make<DistanceDataIntegrator>, false, false, false},
 };
 
 }  // namespace
@@ -54,8 +51,7 @@ bool integrator_samples_pixels(std::string_view name) {
 
 std::vector<std::string> integrator_names() {
   std::vector<std::string> names;
-  for (const Entry& e : kIntegrators)
-    if (e.listed) names.emplace_back(e.name);
+  for (const Entry& e : kIntegrators) names.emplace_back(e.name);
   return names;
 }
 

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/render/aovs.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
 #include "core/sampling.h"
@@ -26,7 +27,20 @@ struct TraceContext {
   // The cone's width where camera rays start: 0 from a point (perspective), one pixel's width
   // for parallel rays (orthographic).
   float pixel_footprint = 0.0f;
+  // The camera sample's layers (core/render/aovs.h) when the render asks for them, else null:
+  // the integrator fills them where the camera ray meets its first surface, light or nothing
+  // (record_first_hit), and no later hit of the sample touches them.
+  Aovs* aovs = nullptr;
 };
+
+// The camera sample's layers from what its ray met first; nothing once recorded (or not asked).
+inline void record_first_hit(TraceContext& ctx, Vec3 albedo, Vec3 normal, float distance) {
+  if (!ctx.aovs) return;
+  *ctx.aovs = Aovs{albedo, normal, distance};
+  ctx.aovs = nullptr;
+}
+// The camera ray met nothing: the layers keep their defaults (black, no normal, far away).
+inline void record_no_hit(TraceContext& ctx) { ctx.aovs = nullptr; }
 
 class Integrator {
  public:

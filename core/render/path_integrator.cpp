@@ -81,6 +81,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         if (m.absorption[c] > 0.0f) beta[c] *= std::exp(-m.absorption[c] * distance);
     }
     if (!met.surface && !met.light) {  // into the background: a uniform colour or an HDR image
+      record_no_hit(ctx);
       const Environment& sky = scene.background;
       float weight = 1.0f;
       if (!delta && sky.is_image()) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, sky.pdf(dir));
@@ -89,6 +90,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     }
     if (met.light) {
       const RectLight& rect = *met.light;
+      record_first_hit(ctx, Vec3(0.0f), rect.normal(), distance);
       const float weight = delta ? 1.0f : bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance));
       radiance += beta * rect.color * weight;
       break;
@@ -98,6 +100,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     cone_width += cone_spread * distance;
     const EvaluatedSurface s =
         evaluate_surface(material, si, ray.direction, scene.textures(), cone_width, settings.detail);
+    if (ctx.aovs) [[unlikely]]
+      record_first_hit(ctx, s.diffuse, s.n, distance);
     if (s.emission != Vec3(0.0f)) {
       float weight = 1.0f;
       const float light_pdf = delta ? 0.0f : surface_pdf_li(scene, met.hit, si.geometric_normal, dir, distance);

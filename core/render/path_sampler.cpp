@@ -20,6 +20,7 @@ bool PathSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out
       if (ctx.cancelled()) return false;
       const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
       Vec3 sum(0.0f);
+      Aovs layers;  // summed, then scaled by 1 / n
       double luminance = 0.0, luminance_squares = 0.0;
       int n = 0;
       while (n < spp) {
@@ -39,6 +40,7 @@ bool PathSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out
           const float peak = max_component(value);
           if (settings_.clamp > 0.0f && peak > settings_.clamp) value *= settings_.clamp / peak;
           sum += value;
+          if (ctx.aovs) layers.add(batch.aovs[i], 1.0f);
           const double l = (value.x + value.y + value.z) / 3.0;
           luminance += l;
           luminance_squares += l * l;
@@ -49,7 +51,9 @@ bool PathSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out
             pixel_relative_error(luminance, luminance_squares, n) < settings_.noise_threshold)
           break;
       }
-      out.at(x, y) = FilmPixel{sum / static_cast<float>(n), static_cast<uint16_t>(n), 0};
+      layers.albedo /= static_cast<float>(n);
+      layers.normal /= static_cast<float>(n);
+      out.at(x, y) = FilmPixel{sum / static_cast<float>(n), static_cast<uint16_t>(n), 0, layers};
     }
     ctx.row_done(tile.width());
   }

@@ -5,7 +5,8 @@
 // checked after every packet of samples once kMinSamples are in. A pixel's samples and its stop
 // depend only on its own keys, so the image is the same for any thread count or tile order.
 // Each sample's radiance passes render.clamp (if set) and the check that drops anything but a
-// finite, non-negative colour (counted in RayCounters::invalid_samples).
+// finite, non-negative colour (counted in RayCounters::invalid_samples). The first-hit layers,
+// when asked, average the same samples (core/render/aovs.h).
 #pragma once
 
 #include "core/render/pixel_sampler.h"

@@ -28,6 +28,7 @@ void CameraBatch::trace(PixelContext& ctx) {
   ctx.scene.intersect_packet(rays, met, rays_made);
   ctx.counters[RayKind::kCamera] += static_cast<uint64_t>(rays_made);
   for (int i = 0; i < count; ++i) {
+    if (ctx.aovs) aovs[i] = Aovs{};
     if (ray_of[i] < 0) {
       radiance[i] = Vec3(0.0f);
       continue;
@@ -38,7 +39,8 @@ void CameraBatch::trace(PixelContext& ctx) {
                        ctx.counters,
                        c.samples,
                        c.spacing * camera.pixel_spread(s.width, s.height),
-                       c.spacing * camera.pixel_footprint(s.width, s.height)};
+                       c.spacing * camera.pixel_footprint(s.width, s.height),
+                       ctx.aovs ? &aovs[i] : nullptr};
     radiance[i] = ctx.integrator.radiance_from_hit(rays[ray_of[i]], met[ray_of[i]], 0, trace);
   }
 }
@@ -68,18 +70,24 @@ class UniformSampler final : public PixelSampler {
     constexpr int kOpen = 2 * kPacketSize;
     Vec3 sums[kOpen];
     std::fill(sums, sums + kOpen, Vec3(0.0f));
+    Aovs layers[kOpen];  // each sample adds its share
+    const float share = step * step;
     CameraBatch batch;
     for (int y = tile.y0; y < tile.y1; ++y) {
       int written = tile.x0;  // the pixels left of this one are in `out`
       // Traces what is queued, then writes out the pixels left of x: all their samples are in.
       const auto drain = [&](int x) {
         batch.trace(ctx);
-        for (int k = 0; k < batch.count; ++k) sums[batch.tag[k] % kOpen] += batch.radiance[k];
+        for (int k = 0; k < batch.count; ++k) {
+          sums[batch.tag[k] % kOpen] += batch.radiance[k];
+          if (ctx.aovs) layers[batch.tag[k] % kOpen].add(batch.aovs[k], share);
+        }
         batch.clear();
         for (; written < x; ++written) {
           Vec3& sum = sums[written % kOpen];
-          out.at(written, y) = FilmPixel{sum * (step * step), static_cast<uint16_t>(n_ * n_), 0};
+          out.at(written, y) = FilmPixel{sum * share, static_cast<uint16_t>(n_ * n_), 0, layers[written % kOpen]};
           sum = Vec3(0.0f);
+          layers[written % kOpen] = Aovs{};
         }
       };
       for (int x = tile.x0; x < tile.x1; ++x) {

@@ -31,6 +31,7 @@ struct PixelContext {
   // eye's (1) random numbers are keyed apart; the left eye's (0) are a mono render's.
   const Camera* camera = nullptr;
   uint32_t eye = 0;
+  bool aovs = false;  // fill each pixel's first-hit layers (FilmPixel::aovs) beside its colour
 
   const Camera& view() const { return camera ? *camera : scene.camera; }
   // A sample point's key (a pixel's index, a lattice point) with the eye in its top bits.
@@ -86,11 +87,13 @@ struct CameraSample {
 // Camera samples queued and traced kPacketSize at a time: their rays meet the scene as one packet
 // (Scene::intersect_packet), then each is shaded alone, with the radiance it would have alone.
 // A sampler adds samples with a tag of its own (which pixel), and once full() calls trace(), reads
-// radiance[i] and tag[i] for i < count in the order added, and clear()s.
+// radiance[i], aovs[i] (when the render asks for them) and tag[i] for i < count in the order
+// added, and clear()s.
 struct CameraBatch {
   CameraSample sample[kPacketSize];
   uint32_t tag[kPacketSize];
   Vec3 radiance[kPacketSize];
+  Aovs aovs[kPacketSize];
   int count = 0;
 
   bool full() const { return count == kPacketSize; }
@@ -98,7 +101,7 @@ struct CameraBatch {
     sample[count] = s;
     tag[count++] = t;
   }
-  // Fills radiance[0, count); counts the camera rays.
+  // Fills radiance[0, count) (and aovs, if PixelContext::aovs); counts the camera rays.
   void trace(PixelContext& ctx);
   void clear() { count = 0; }
 };

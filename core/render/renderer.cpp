@@ -26,7 +26,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
 
   film.x0 = window.x0;
   film.y0 = window.y0;
-  if (!film.allocate(window.width(), window.height(), control.cancel)) {
+  if (!film.allocate(window.width(), window.height(), control.cancel, view.aovs)) {
     RenderStats stats;
     stats.seconds = elapsed();
     stats.cancelled = true;
@@ -51,7 +51,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
-    PixelContext ctx{scene, settings, *integrator, mine, frame, control.cancel, &pixels_done, view.camera, view.eye};
+    PixelContext ctx{scene, settings, *integrator, mine,     frame,   control.cancel,
+                     &pixels_done, view.camera, view.eye, view.aovs};
     FilmTile tile_film;
     // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
     for (int k = next++; k < grid.count(); k = next++) {

@@ -42,12 +42,14 @@ struct RenderControl {
 };
 
 // Whose eyes look: a camera other than the scene's (one eye of a stereo pair), and the eye's key
-// (0: the left eye or a mono render, 1: the right eye); and which pixels of the image are
-// rendered (empty: all of them).
+// (0: the left eye or a mono render, 1: the right eye); which pixels of the image are rendered
+// (empty: all of them); and whether the film gathers the first hit's layers too (aovs.h: albedo,
+// normal, distance, in the same pass as the colour).
 struct RenderView {
   const Camera* camera = nullptr;
   uint32_t eye = 0;
   PixelWindow window;
+  bool aovs = false;
 };
 
 // Renders frame `frame` into `film` (resized to the view's window of the settings.width x

@@ -13,13 +13,20 @@ namespace rt {
   Vec3 radiance = scene.background.radiance(ray.direction);
   // An area light's face seen before any surface shows its emitted radiance, so mirrors show
   // the light's shape.
-  if (met.light) radiance = met.light->color;
+  if (met.light) {
+    radiance = met.light->color;
+    record_first_hit(ctx, Vec3(0.0f), met.light->normal(), ray.tmax * glm::length(ray.direction));
+  } else if (!met.surface) {
+    record_no_hit(ctx);
+  }
   if (met.surface) {
     const Hit& hit = met.hit;
     const SurfaceInteraction si = scene.surface(ray, hit);
     const float cone_width = state.cone_width + state.cone_spread * hit.t * glm::length(ray.direction);
     const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),
                                                 cone_width, ctx.settings.detail);
+    if (ctx.aovs) [[unlikely]]
+      record_first_hit(ctx, s.diffuse, s.n, hit.t * glm::length(ray.direction));
     radiance = s.emission + direct_lighting(s, state.path, max_component(state.weight) * state.share, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) {

@@ -156,8 +156,8 @@ LightCheck check_light(const Scene& scene, size_t l, Vec3 point, int count = 100
       double sum = 0.0;
       for (int a = 0; a < kSub; ++a)
         for (int b = 0; b < kSub; ++b) {
-          const float z = -1.0f + 2.0f * (row + (a + 0.5f) / kSub) / kRows;
-          const float phi = 2.0f * kPi * (column + (b + 0.5f) / kSub) / kColumns;
+          const float z = -1.0f + 2.0f * (static_cast<float>(row) + (static_cast<float>(a) + 0.5f) / kSub) / kRows;
+          const float phi = 2.0f * kPi * (static_cast<float>(column) + (static_cast<float>(b) + 0.5f) / kSub) / kColumns;
           const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
           sum += pdf_along(scene, l, point, Vec3(r * std::cos(phi), r * std::sin(phi), z));
         }
@@ -350,7 +350,7 @@ TEST_CASE("light sampling: area_scale is how much a transform stretches a surfac
   // Each shape's canonical area, and its points on its surface with their normals outward.
   for (const ShapeKind kind : {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone}) {
     for (int i = 0; i < 64; ++i) {
-      const ShapePoint p = sample_object_surface(kind, Vec2((i % 8 + 0.37f) / 8.0f, (i / 8 + 0.61f) / 8.0f));
+      const ShapePoint p = sample_object_surface(kind, Vec2((static_cast<float>(i % 8) + 0.37f) / 8.0f, (static_cast<float>(i / 8) + 0.61f) / 8.0f));
       const SurfacePatch patch = object_space_patch(kind, p.position, p.part);
       INFO("kind " << static_cast<int>(kind) << " point " << p.position.x << ", " << p.position.y << ", " << p.position.z);
       CHECK(glm::dot(patch.normal, p.normal) == Approx(1.0f).epsilon(1e-4));
