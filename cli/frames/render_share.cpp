@@ -47,7 +47,7 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
 
 std::string share_text(const Share& share) { return std::to_string(share.index) + "/" + std::to_string(share.count); }
 
-std::optional<PixelWindow> parse_crop(const std::string& text, int width, int height, std::string& error) {
+std::optional<PixelWindow> parse_crop_text(const std::string& text, std::string& error) {
   std::vector<long> v;
   size_t start = 0;
   while (v.size() < 5) {
@@ -58,18 +58,22 @@ std::optional<PixelWindow> parse_crop(const std::string& text, int width, int he
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  const std::string size = std::to_string(width) + "x" + std::to_string(height);
-  if (v.size() != 4) {
-    error = "--crop: expected x0,y0,x1,y1 (four whole numbers, pixels, x1 and y1 excluded), found \"" + text + "\"";
+  constexpr long kMost = 1L << 30;  // past any image rtcli renders (docs/errors-and-limits.md)
+  if (v.size() != 4 || v[0] < 0 || v[1] < 0 || v[2] <= v[0] || v[3] <= v[1] || v[2] > kMost || v[3] > kMost) {
+    error = "--crop: expected x0,y0,x1,y1 (four whole numbers, pixels, 0 <= x0 < x1 and 0 <= y0 < y1, x1 and y1 "
+            "excluded), found \"" + text + "\"";
     return std::nullopt;
   }
-  const PixelWindow w{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
-  if (v[0] < 0 || v[1] < 0 || v[2] > width || v[3] > height || v[2] <= v[0] || v[3] <= v[1]) {
-    error = "--crop: expected 0 <= x0 < x1 <= " + std::to_string(width) + " and 0 <= y0 < y1 <= " +
-            std::to_string(height) + " (the image is " + size + "), found \"" + text + "\"";
-    return std::nullopt;
-  }
-  return w;
+  return PixelWindow{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
+}
+
+bool crop_fits(const PixelWindow& w, int width, int height, std::string& error) {
+  if (w.x1 <= width && w.y1 <= height) return true;
+  error = "--crop: expected 0 <= x0 < x1 <= " + std::to_string(width) + " and 0 <= y0 < y1 <= " +
+          std::to_string(height) + " (the image is " + std::to_string(width) + "x" + std::to_string(height) +
+          "), found \"" + std::to_string(w.x0) + "," + std::to_string(w.y0) + "," + std::to_string(w.x1) + "," +
+          std::to_string(w.y1) + "\"";
+  return false;
 }
 
 }  // namespace rt

@@ -34,7 +34,10 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
 // "I/N": how a share is written, in rtcli:tile and messages; parse_share reads it back.
 std::string share_text(const Share& share);
 
-// "x0,y0,x1,y1" inside a width x height image, not empty; nothing, with `error`, otherwise.
-std::optional<PixelWindow> parse_crop(const std::string& text, int width, int height, std::string& error);
+// "x0,y0,x1,y1": four whole numbers, 0 <= x0 < x1 and 0 <= y0 < y1; nothing, with `error`,
+// otherwise. Whether it fits the image is crop_fits' to say, once the image's size is known.
+std::optional<PixelWindow> parse_crop_text(const std::string& text, std::string& error);
+// Whether the window lies inside a width x height image; `error` says why not.
+bool crop_fits(const PixelWindow& crop, int width, int height, std::string& error);
 
 }  // namespace rt

@@ -28,11 +28,11 @@ ExrLayer layer_of(const Film& film, const std::string& name, std::vector<std::st
 
 }  // namespace
 
-std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
+std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded, const RenderSettings& settings,
                                  const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
                                  std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
-  const bool show_progress = !cmd.quiet && ::isatty(::fileno(stderr));
+  const bool show_progress = !job.quiet && ::isatty(::fileno(stderr));
   FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
   totals.passes = stereo.enabled() ? 2 : 1;
   const int all_passes = frames.count() * totals.passes;

@@ -8,7 +8,7 @@
 
 #include "cli/frames/frame_list.h"
 #include "cli/frames/frame_output.h"
-#include "cli/render/render_command.h"
+#include "cli/render/render_job.h"
 #include "cli/frames/render_metadata.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
@@ -38,7 +38,7 @@ struct FrameContent {
 
 // `sinks`: one output, or two (left, right) for stereo mode "pair". An exit code if it must stop
 // (Ctrl-C, a frame that cannot be written); the film holds the last render.
-std::optional<int> render_frames(const RenderCommand& cmd, const LoadedScene& loaded, const RenderSettings& settings,
+std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded, const RenderSettings& settings,
                                  const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
                                  std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals);
 

@@ -13,6 +13,7 @@
 #include "cli/common/number_checks.h"
 #include "cli/frames/output_checks.h"
 #include "cli/common/progress_bar.h"
+#include "cli/render/render_job.h"
 #include "cli/render/render_plan.h"
 #include "cli/render/render_stats.h"
 #include "cli/render/render_summary.h"
@@ -31,21 +32,6 @@
 
 namespace rt {
 namespace {
-
-std::string default_output(const std::string& scene, bool animation) {
-  return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");
-}
-
-// A name the render pipeline must know (an integrator, an anti-aliasing mode), or an error
-// listing the names it knows.
-bool check_name(const char* option, const char* what, const std::string& name, const std::vector<std::string>& names) {
-  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
-  std::string list;
-  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name.c_str(),
-               did_you_mean(name, names).c_str(), list.c_str());
-  return false;
-}
 
 // The scene's render settings with the command line's overrides applied.
 RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
@@ -83,27 +69,6 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   return s;
 }
 
-// The frames the command asks for; without --frame or --frames, the scene's first frame.
-std::optional<FrameList> requested_frames(const RenderCommand& cmd) {
-  if (!cmd.frames) return FrameList::range(0, 0);
-  std::string error;
-  const auto list = parse_frame_list(*cmd.frames, error);
-  if (!list)
-    std::fprintf(stderr,
-                 "rtcli: error: --frames: %s; expected a frame N, a range A-B, every S-th frame A-BxS, or a list "
-                 "of those (1,5,9-12), whole numbers within +-%d\n",
-                 error.c_str(), kMaxFrameNumber);
-  return list;
-}
-
-// What the command line asks for, checked before anything is loaded.
-struct RenderRequest {
-  FrameList frames;  // as asked; without --frame or --frames, the scene's first frame (known once loaded)
-  bool frames_given = false;
-  std::string output;
-  OutputKind kind = OutputKind::kPng;
-};
-
 // What a render writes, every name checked once the scene's own files are known.
 struct RenderOutputs {
   std::vector<std::string> paths;  // each frame's file (or the one PNG or GIF), then --aa-debug's two
@@ -111,65 +76,12 @@ struct RenderOutputs {
   std::string samples_map;  // --samples-debug's
 };
 
-std::optional<RenderRequest> check_arguments(const RenderCommand& cmd) {
-  if (cmd.integrator && !check_name("--integrator", "integrator", *cmd.integrator, integrator_names()))
-    return std::nullopt;
-  if (cmd.aa_mode && !check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names()))
-    return std::nullopt;
-  if (cmd.texture_filter &&
-      !check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names()))
-    return std::nullopt;
-  if (cmd.secondary_shadows &&
-      !check_name("--secondary-shadows", "secondary shadow rule", *cmd.secondary_shadows, secondary_shadow_names()))
-    return std::nullopt;
-  if (cmd.tone_map && !check_name("--tone-map", "tone curve", *cmd.tone_map, tone_map_names())) return std::nullopt;
-  if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
-    std::fprintf(stderr, "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
-                 cmd.fps ? "--fps" : "--animation",
-                 cmd.fps ? "\"animation\": {\"fps\": ...}" : "\"animation\" on its glTF reference (\"mesh\")");
-    return std::nullopt;
-  }
-  const std::optional<FrameList> asked = requested_frames(cmd);
-  if (!asked) return std::nullopt;
-  RenderRequest r{*asked, cmd.frames.has_value(), "", OutputKind::kPng};
-  r.output = cmd.output.empty() ? default_output(cmd.scene, asked->count() > 1) : cmd.output;
-  std::string error;
-  const std::optional<OutputKind> kind = output_kind(r.output, error);
-  if (!kind || !check_output(r.output, error)) {
-    std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
-    return std::nullopt;
-  }
-  r.kind = *kind;
-  if (asked->count() > 1 && is_single_image(r.kind)) {
-    std::fprintf(stderr,
-                 "rtcli: error: %d frames need an animated GIF (-o NAME.gif) or numbered files (-o NAME_####.png or "
-                 "NAME_####.exr), found \"%s\"\n",
-                 asked->count(), r.output.c_str());
-    return std::nullopt;
-  }
-  if (cmd.aa_debug && cmd.stereo && *cmd.stereo != "none") {
-    std::fprintf(stderr, "rtcli: error: --aa-debug shows one image's refinement; it does not go with --stereo\n");
-    return std::nullopt;
-  }
-  if (cmd.samples_debug && ((cmd.stereo && *cmd.stereo != "none") || r.kind != OutputKind::kPng)) {
-    std::fprintf(stderr, "rtcli: error: --samples-debug writes one image beside one PNG (no --stereo, no \"%s\")\n",
-                 r.output.c_str());
-    return std::nullopt;
-  }
-  if (cmd.aa_debug && r.kind != OutputKind::kPng) {
-    std::fprintf(stderr, "rtcli: error: --aa-debug writes images beside one PNG; it does not go with \"%s\"\n",
-                 r.output.c_str());
-    return std::nullopt;
-  }
-  return r;
-}
-
 // Without --frame or --frames: an animated GIF or a PNG sequence shows the scene's whole
 // animation (its timeline), a PNG the timeline's first frame.
-FrameList frames_to_render(const RenderRequest& request, const LoadedScene& loaded) {
-  if (request.frames_given) return request.frames;
+FrameList frames_to_render(const RenderJob& job, const LoadedScene& loaded) {
+  if (job.frames_given) return job.frames;
   const Timeline& t = loaded.graph.timeline;
-  if (!is_single_image(request.kind) && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
+  if (!is_single_image(job.kind) && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
   return FrameList::range(loaded.frame, loaded.frame);
 }
 
@@ -182,29 +94,28 @@ std::string eye_path(const std::string& output, const char* eye) {
 }
 
 // The outputs' patterns: the one asked for, or its two eyes' for stereo mode pair.
-std::vector<std::string> output_patterns(const RenderRequest& request, const StereoSettings& stereo) {
-  if (stereo.mode != StereoMode::kPair) return {request.output};
-  return {eye_path(request.output, "left"), eye_path(request.output, "right")};
+std::vector<std::string> output_patterns(const RenderJob& job, const StereoSettings& stereo) {
+  if (stereo.mode != StereoMode::kPair) return {job.output};
+  return {eye_path(job.output, "left"), eye_path(job.output, "right")};
 }
 
-std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const RenderRequest& request,
-                                           const FrameList& frames, const StereoSettings& stereo,
+std::optional<RenderOutputs> check_outputs(const RenderJob& job, const FrameList& frames, const StereoSettings& stereo,
                                            const std::vector<std::string>& inputs) {
   RenderOutputs out;
-  for (const std::string& pattern : output_patterns(request, stereo)) {
-    if (is_sequence(request.kind))
+  for (const std::string& pattern : output_patterns(job, stereo)) {
+    if (is_sequence(job.kind))
       for (const int f : frames.frames) out.paths.push_back(sequence_path(pattern, f));
     else out.paths.push_back(pattern);
   }
-  if (!cmd.stats.empty()) out.paths.push_back(cmd.stats);
-  if (cmd.aa_debug) {
-    out.aa_refined = beside(request.output, ".aa-refined");
-    out.aa_depth = beside(request.output, ".aa-depth");
+  if (!job.stats.empty()) out.paths.push_back(job.stats);
+  if (job.aa_debug) {
+    out.aa_refined = beside(job.output, ".aa-refined");
+    out.aa_depth = beside(job.output, ".aa-depth");
     out.paths.push_back(out.aa_refined);
     out.paths.push_back(out.aa_depth);
   }
-  if (cmd.samples_debug) {
-    out.samples_map = beside(request.output, ".samples");
+  if (job.samples_debug) {
+    out.samples_map = beside(job.output, ".samples");
     out.paths.push_back(out.samples_map);
   }
   std::string error;
@@ -220,7 +131,7 @@ std::optional<RenderOutputs> check_outputs(const RenderCommand& cmd, const Rende
 // The size limit on what the command line asks for, and a word about renders that will be slow
 // or show one picture many times.
 bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
-                    const SceneGraph& graph, OutputKind kind) {
+                    const SceneGraph& graph, OutputKind kind) {  // the overrides are the command's own
   if (kind == OutputKind::kGif && !(graph.timeline.fps >= kMinGifFps)) {
     std::fprintf(stderr,
                  "rtcli: error: %s: %g frames per second: a GIF frame lasts at most 655.35 s, so a GIF takes at least "
@@ -276,20 +187,17 @@ bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks,
 
 // The camera's stereo settings, --stereo's mode replacing the scene's; nothing (after saying why)
 // for a camera that cannot see in stereo.
-std::optional<StereoSettings> stereo_settings(const RenderCommand& cmd, const Camera& camera) {
+std::optional<StereoSettings> stereo_settings(const RenderJob& job, const Camera& camera) {
   StereoSettings s = camera.stereo;
-  if (cmd.stereo) {
-    const auto& names = kStereoModeNames;
-    s.mode = static_cast<StereoMode>(std::find(names.begin(), names.end(), *cmd.stereo) - names.begin());
-  }
+  if (job.choices.stereo) s.mode = *job.choices.stereo;
   if (s.enabled() && camera.projection == CameraProjection::kOrthographic) {
     std::fprintf(stderr,
                  "rtcli: error: --stereo needs a perspective, fisheye or equirectangular camera; %s's is orthographic "
                  "(parallel rays see no depth)\n",
-                 cmd.scene.c_str());
+                 job.scene.c_str());
     return std::nullopt;
   }
-  if (s.enabled() && cmd.aa_debug) {
+  if (s.enabled() && job.aa_debug) {
     std::fprintf(stderr,
                  "rtcli: error: --aa-debug shows one image's refinement; it does not go with a stereo camera\n");
     return std::nullopt;
@@ -300,49 +208,49 @@ std::optional<StereoSettings> stereo_settings(const RenderCommand& cmd, const Ca
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
-  // Check the arguments.
-  const std::optional<RenderRequest> request = check_arguments(cmd);
-  if (!request) return kExitBadInput;
+  // Check the arguments: from here on the job says what is asked, beside the settings' overrides.
+  const std::optional<RenderJob> job = make_render_job(cmd, process_environment());
+  if (!job) return kExitBadInput;
 
   // Load: the first frame asked for is the one built with the scene.
   const auto load_start = std::chrono::steady_clock::now();
   const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli");
   if (!isa) return kExitBadInput;
   LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files, *isa);
-  if (request->frames_given) options.frame = request->frames.first();
+  if (job->frames_given) options.frame = job->frames.first();
   options.animation = cmd.animation;
   options.fps = cmd.fps;
   options.integrator = cmd.integrator;
   if (cmd.background) options.background = parse_color(*cmd.background);
   if (cmd.ambient) options.ambient = parse_color(*cmd.ambient);
   Diagnostics diags;
-  const std::optional<LoadedScene> loaded = load_scene(cmd.scene, options, diags);
+  const std::optional<LoadedScene> loaded = load_scene(job->scene, options, diags);
   print_diagnostics(stderr, diags);
   if (!loaded) return kExitBadInput;
-  const FrameList frames = frames_to_render(*request, *loaded);
-  const std::optional<StereoSettings> stereo = stereo_settings(cmd, loaded->scene.camera);
+  const FrameList frames = frames_to_render(*job, *loaded);
+  const std::optional<StereoSettings> stereo = stereo_settings(*job, loaded->scene.camera);
   if (!stereo) return kExitBadInput;
-  const std::optional<RenderOutputs> outputs = check_outputs(cmd, *request, frames, *stereo, loaded->inputs);
+  const std::optional<RenderOutputs> outputs = check_outputs(*job, frames, *stereo, loaded->inputs);
   if (!outputs) return kExitBadInput;
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   const RenderSettings settings = with_overrides(loaded->settings, cmd);
-  if (!check_settings(cmd, settings, frames, loaded->graph, request->kind)) return kExitBadInput;
+  if (!check_settings(cmd, settings, frames, loaded->graph, job->kind)) return kExitBadInput;
   const std::optional<RenderPlan> plan =
-      plan_render(cmd, request->kind, output_patterns(*request, *stereo), frames, settings, *stereo, *loaded);
+      plan_render(*job, output_patterns(*job, *stereo), frames, settings, *stereo, *loaded);
   if (!plan) return kExitBadInput;
-  if (!plan->skipped.empty() && !cmd.quiet) std::fprintf(stderr, "rtcli: %s\n", plan->skipped.c_str());
+  if (!plan->skipped.empty() && !job->quiet) std::fprintf(stderr, "rtcli: %s\n", plan->skipped.c_str());
   if (plan->frames.frames.empty()) return kExitSuccess;
 
   // Render the frames.
   std::vector<FrameSink> sinks;
-  for (const std::string& pattern : output_patterns(*request, *stereo))
-    sinks.emplace_back(request->kind, pattern, stereo_image_width(stereo->mode, settings.width),
+  for (const std::string& pattern : output_patterns(*job, *stereo))
+    sinks.emplace_back(job->kind, pattern, stereo_image_width(stereo->mode, settings.width),
                        stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps, plan->frames.count(),
-                       cmd.dither, resolve_thread_count(settings.threads));
+                       job->dither, resolve_thread_count(settings.threads));
   RenderTotals totals;
   Film film;
   if (const std::optional<int> stop =
-          render_frames(cmd, *loaded, settings, *stereo, plan->frames, plan->content, sinks, film, totals))
+          render_frames(*job, *loaded, settings, *stereo, plan->frames, plan->content, sinks, film, totals))
     return *stop;
 
   // Write and summarise.
@@ -354,22 +262,22 @@ int run_render(const RenderCommand& cmd) {
   if (!finish_outputs(*outputs, sinks, film, totals.last.threads, most_samples)) return kExitFailure;
   std::vector<std::string> written;
   for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
-  if (!cmd.stats.empty()) {
+  if (!job->stats.empty()) {
     std::string error;
     const SignalBlock block;
     if (!write_render_stats(
-            cmd.stats, RenderStatsInput{cmd.scene, written, settings, *stereo, plan->frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
+            job->stats, RenderStatsInput{job->scene, written, settings, *stereo, plan->frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }
   }
-  if (!cmd.quiet) {
-    print_summary(cmd, settings, plan->frames, totals, load_seconds, written, loaded->scene.bvh.isa());
-    if (!cmd.stats.empty()) std::printf("wrote %s (the render's figures)\n", cmd.stats.c_str());
-    if (cmd.samples_debug)
+  if (!job->quiet) {
+    print_summary(*job, settings, plan->frames, totals, load_seconds, written, loaded->scene.bvh.isa());
+    if (!job->stats.empty()) std::printf("wrote %s (the render's figures)\n", job->stats.c_str());
+    if (job->samples_debug)
       std::printf("wrote %s (samples per pixel: black 0, blue, green, orange, white %d)\n",
                   outputs->samples_map.c_str(), most_samples);
-    if (cmd.aa_debug) {
+    if (job->aa_debug) {
       std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
       std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",
                   outputs->aa_depth.c_str());

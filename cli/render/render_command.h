@@ -1,12 +1,15 @@
-// `rtcli render SCENE [-o OUT.png] [--threads N] [--width W] [--height H] [--seed S]
-//   [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps] [--texture-filter NAME]
-//   [--shadow-samples N] [--secondary-shadows scaled|full] [--preview]
-//   [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
+// `rtcli render SCENE [-o OUT] [--threads N] [--isa sse|avx2|avx512|auto] [--width W] [--height H]
+//   [--seed S] [--integrator NAME] [--glossy-samples N] [--no-glossy] [--no-textures] [--no-bumps]
+//   [--texture-filter NAME] [--shadow-samples N] [--secondary-shadows scaled|full] [--preview]
+//   [--exposure STOPS] [--tone-map clamp|filmic] [--spp N] [--noise-threshold T] [--clamp C]
+//   [--samples-debug] [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames LIST] [--camera NAME]
-//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE] [--dither]
-//   [--allow-outside-files] [--stats FILE.json] [--isa sse|avx2|avx512|auto]
-//   [--crop x0,y0,x1,y1 | --tile I/N|auto] [--chunk I/N|auto] [--skip-existing] [--exr-float]
-//   [--aov albedo,normal,depth] [--quiet]`
+//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE]
+//   [--dither] [--allow-outside-files] [--stats FILE.json] [--crop x0,y0,x1,y1 | --tile I/N|auto]
+//   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--quiet]`
+// (cli/main.cpp declares them, with their help). RenderCommand holds the options as given; the
+// command reads them once into a checked RenderJob (cli/render/render_job.h) and the scene's
+// settings with their overrides, and nothing below it sees this struct.
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "cli/render/aov_layers.h"
 #include "cli/frames/render_metadata.h"
 #include "cli/render/settings_text.h"
 #include "cli/frames/render_share.h"
@@ -16,83 +15,56 @@ bool fail(const std::string& message) {
   return false;
 }
 
-// "albedo,normal,depth" in any order, each once.
-bool parse_aovs(const std::string& text, std::vector<std::string>& out) {
-  size_t start = 0;
-  while (true) {
-    const size_t comma = text.find(',', start);
-    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (!find_aov(name))
-      return fail("--aov: expected layers among albedo, normal, depth (comma-separated), found \"" + name + "\"");
-    for (const std::string& seen : out)
-      if (seen == name) return fail("--aov: \"" + name + "\" is given twice");
-    out.push_back(name);
-    if (comma == std::string::npos) return true;
-    start = comma + 1;
-  }
-}
-
-bool check_combinations(const RenderCommand& cmd, OutputKind kind, const StereoSettings& stereo) {
-  if ((cmd.exr_float || cmd.aov) && !is_exr(kind))
-    return fail(std::string(cmd.aov ? "--aov" : "--exr-float") + " applies to EXR output (-o NAME.exr or NAME_####.exr)");
-  if (stereo.enabled() && (is_exr(kind) || cmd.crop || cmd.tile))
-    return fail(std::string(is_exr(kind) ? "EXR output" : cmd.crop ? "--crop" : "--tile") +
+// A stereo camera renders two views: one file of one view cannot hold them.
+bool check_stereo(const RenderJob& job, const StereoSettings& stereo) {
+  if (stereo.enabled() && (is_exr(job.kind) || job.crop || job.tile))
+    return fail(std::string(is_exr(job.kind) ? "EXR output" : job.crop ? "--crop" : "--tile") +
                 " renders one view; it does not go with a stereo camera (--stereo none renders the left eye's view)");
-  if (cmd.chunk && !is_sequence(kind))
-    return fail("--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
-                "NAME_####.exr), then join them with rtcli encode");
-  if ((cmd.crop || cmd.tile) && (cmd.aa_debug || cmd.samples_debug))
-    return fail(std::string(cmd.aa_debug ? "--aa-debug" : "--samples-debug") + " shows the whole image; it does not go with " +
-                (cmd.crop ? "--crop" : "--tile"));
   return true;
 }
 
 }  // namespace
 
-std::optional<RenderPlan> plan_render(const RenderCommand& cmd, OutputKind kind, const std::vector<std::string>& patterns,
+std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<std::string>& patterns,
                                       const FrameList& frames, const RenderSettings& settings,
                                       const StereoSettings& stereo, const LoadedScene& loaded) {
-  if (!check_combinations(cmd, kind, stereo)) return std::nullopt;
+  if (!check_stereo(job, stereo)) return std::nullopt;
+  const OutputKind kind = job.kind;
   RenderPlan plan;
   plan.frames = frames;
   std::string error;
-  const EnvironmentLookup env = process_environment();
-  if (cmd.crop) {
-    const auto w = parse_crop(*cmd.crop, settings.width, settings.height, error);
-    if (!w) return fail(error), std::nullopt;
-    plan.content.window = *w;
+  if (job.crop) {
+    if (!crop_fits(*job.crop, settings.width, settings.height, error)) return fail(error), std::nullopt;
+    plan.content.window = *job.crop;
   }
-  if (cmd.tile) {
-    const auto share = parse_share(*cmd.tile, "--tile", env, error);
-    if (!share) return fail(error), std::nullopt;
-    if (share->count > settings.height)
-      return fail("--tile " + *cmd.tile + ": " + std::to_string(share->count) + " bands of rows for an image " +
+  if (job.tile) {
+    const Share& share = *job.tile;
+    if (share.count > settings.height)
+      return fail("--tile " + share_text(share) + ": " + std::to_string(share.count) + " bands of rows for an image " +
                   std::to_string(settings.height) + " rows high; give at most one band a row"),
              std::nullopt;
-    plan.content.window = cost_balanced_bands(loaded.scene, settings, share->count,
-                                              static_cast<uint32_t>(loaded.frame))[static_cast<size_t>(share->index)];
-    plan.content.identity.tile = share_text(*share);
+    plan.content.window = cost_balanced_bands(loaded.scene, settings, share.count,
+                                              static_cast<uint32_t>(loaded.frame))[static_cast<size_t>(share.index)];
+    plan.content.identity.tile = share_text(share);
   }
-  if (cmd.chunk) {
-    const auto share = parse_share(*cmd.chunk, "--chunk", env, error);
-    if (!share) return fail(error), std::nullopt;
-    plan.frames = frames.chunk(share->index, share->count);
+  if (job.chunk) {
+    const Share& share = *job.chunk;
+    plan.frames = frames.chunk(share.index, share.count);
     if (plan.frames.frames.empty())
-      plan.skipped = "chunk " + std::to_string(share->index) + "/" + std::to_string(share->count) + " of " +
-                     std::to_string(frames.count()) + " frames has none to render";
+      plan.skipped = "chunk " + share_text(share) + " of " + std::to_string(frames.count()) + " frames has none to render";
   }
-  if (cmd.aov && !parse_aovs(*cmd.aov, plan.content.aovs)) return std::nullopt;
-  plan.content.exr_float = cmd.exr_float;
+  plan.content.aovs = job.aovs;
+  plan.content.exr_float = job.exr_float;
   if (is_exr(kind)) {
     RenderIdentity& id = plan.content.identity;
-    id.scene = cmd.scene;
+    id.scene = job.scene;
     id.scene_hash = hash_files(loaded.inputs);
-    id.settings = settings_text(settings, cmd, stereo.mode);
+    id.settings = settings_text(settings, job.choices, stereo.mode);
     id.seed = settings.seed;
     id.display = settings.display;
     id.fps = loaded.graph.timeline.fps;
   }
-  if (cmd.skip_existing) {
+  if (job.skip_existing) {
     FrameList left;
     ExpectedExr expected;
     expected.layers = plan.content.aovs;

@@ -10,7 +10,7 @@
 #include "cli/frames/frame_list.h"
 #include "cli/frames/frame_output.h"
 #include "cli/render/frame_renderer.h"
-#include "cli/render/render_command.h"
+#include "cli/render/render_job.h"
 #include "core/stereo.h"
 #include "io/scene_loader.h"
 
@@ -22,9 +22,10 @@ struct RenderPlan {
   std::string skipped;  // the message when frames were left out or nothing is left
 };
 
-// `frames`: all the command asks for; `patterns`: the outputs (one, or each eye's). Nothing, after
-// printing why, for options that do not go together or do not fit the image.
-std::optional<RenderPlan> plan_render(const RenderCommand& cmd, OutputKind kind, const std::vector<std::string>& patterns,
+// `frames`: all the job asks for; `patterns`: the outputs (one, or each eye's). Nothing, after
+// printing why, for a part that does not fit the image or options that do not go with the
+// scene's camera.
+std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<std::string>& patterns,
                                       const FrameList& frames, const RenderSettings& settings,
                                       const StereoSettings& stereo, const LoadedScene& loaded);
 

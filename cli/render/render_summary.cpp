@@ -7,21 +7,21 @@
 
 namespace rt {
 
-void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
+void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames,
                    const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used) {
   const char* isa = isa_name(isa_used);  // whose BVH kernels traced the rays
   const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
   const unsigned threads = t.last.threads;
   if (frames.count() == 1) {
     std::fprintf(stderr, "rendered %s: %dx%d in %.2f s (load %.2f s), %srays (%s), %.2f Mrays/s, %u thread%s, %s\n",
-                 cmd.scene.c_str(), settings.width, settings.height, t.seconds, load_seconds,
+                 job.scene.c_str(), settings.width, settings.height, t.seconds, load_seconds,
                  format_count(static_cast<double>(t.rays.total())).c_str(), format_ray_counts(t.rays).c_str(),
                  rate / 1e6, threads, threads == 1 ? "" : "s", isa);
   } else {
     std::fprintf(stderr,
                  "rendered %s: frames %s (%d), %dx%d, %.2f s per frame (placing %.1f ms), %.2f s in all "
                  "(load %.2f s), %srays, %.2f Mrays/s, %u thread%s, %s\n",
-                 cmd.scene.c_str(), frames.text().c_str(), frames.count(), settings.width, settings.height,
+                 job.scene.c_str(), frames.text().c_str(), frames.count(), settings.width, settings.height,
                  t.seconds / frames.count(), 1e3 * t.place_seconds / frames.count(), t.seconds + t.place_seconds,
                  load_seconds, format_count(static_cast<double>(t.rays.total())).c_str(), rate / 1e6, threads,
                  threads == 1 ? "" : "s", isa);

@@ -7,13 +7,13 @@
 
 #include "cli/frames/frame_list.h"
 #include "cli/render/frame_renderer.h"
-#include "cli/render/render_command.h"
+#include "cli/render/render_job.h"
 #include "core/accel/isa.h"
 #include "core/render_settings.h"
 
 namespace rt {
 
-void print_summary(const RenderCommand& cmd, const RenderSettings& settings, const FrameList& frames,
+void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames,
                    const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used);
 
 }  // namespace rt

@@ -4,7 +4,7 @@
 
 namespace rt {
 
-std::string settings_text(const RenderSettings& s, const RenderCommand& cmd, StereoMode stereo) {
+std::string settings_text(const RenderSettings& s, const PixelChoices& c, StereoMode stereo) {
   const AntialiasSettings& aa = s.antialias;
   std::string t;
   const auto add = [&](const std::string& key, const std::string& value) { t += key + "=" + value + ";"; };
@@ -24,11 +24,11 @@ std::string settings_text(const RenderSettings& s, const RenderCommand& cmd, Ste
   add("path", std::to_string(s.path.samples_per_pixel) + "," + float_text(s.path.noise_threshold) + "," +
                   float_text(s.path.clamp) + "," + std::to_string(static_cast<int>(s.path.strategy)));
   add("stereo", std::string(kStereoModeNames[static_cast<size_t>(stereo)]));
-  add("camera", cmd.camera.value_or(""));
-  add("background", cmd.background.value_or(""));
-  add("ambient", cmd.ambient.value_or(""));
-  add("animation", cmd.animation.value_or(""));
-  add("fps", cmd.fps ? float_text(*cmd.fps) : "");
+  add("camera", c.camera);
+  add("background", c.background);
+  add("ambient", c.ambient);
+  add("animation", c.animation);
+  add("fps", c.fps ? float_text(*c.fps) : "");
   return t;
 }
 

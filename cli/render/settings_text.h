@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "cli/render/render_command.h"
+#include "cli/render/render_job.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
 
 namespace rt {
 
-std::string settings_text(const RenderSettings& settings, const RenderCommand& cmd, StereoMode stereo);
+std::string settings_text(const RenderSettings& settings, const PixelChoices& choices, StereoMode stereo);
 
 }  // namespace rt

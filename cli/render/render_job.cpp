@@ -1,0 +1,161 @@
+#include "cli/render/render_job.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/common/suggestions.h"
+#include "cli/frames/output_checks.h"
+#include "cli/render/aov_layers.h"
+#include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
+#include "io/scene_loader.h"
+
+namespace rt {
+namespace {
+
+bool fail(const std::string& message) {
+  std::fprintf(stderr, "rtcli: error: %s\n", message.c_str());
+  return false;
+}
+
+std::string default_output(const std::string& scene, bool animation) {
+  return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");
+}
+
+// A name the render pipeline must know (an integrator, an anti-aliasing mode), or an error
+// listing the names it knows.
+bool check_name(const char* option, const char* what, const std::string& name, const std::vector<std::string>& names) {
+  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name.c_str(),
+               did_you_mean(name, names).c_str(), list.c_str());
+  return false;
+}
+
+bool check_names(const RenderCommand& cmd) {
+  return (!cmd.integrator || check_name("--integrator", "integrator", *cmd.integrator, integrator_names())) &&
+         (!cmd.aa_mode || check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names())) &&
+         (!cmd.texture_filter ||
+          check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names())) &&
+         (!cmd.secondary_shadows || check_name("--secondary-shadows", "secondary shadow rule", *cmd.secondary_shadows,
+                                               secondary_shadow_names())) &&
+         (!cmd.tone_map || check_name("--tone-map", "tone curve", *cmd.tone_map, tone_map_names()));
+}
+
+// "albedo,normal,depth" in any order, each once.
+bool parse_aovs(const std::string& text, std::vector<std::string>& out) {
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (!find_aov(name))
+      return fail("--aov: expected layers among albedo, normal, depth (comma-separated), found \"" + name + "\"");
+    for (const std::string& seen : out)
+      if (seen == name) return fail("--aov: \"" + name + "\" is given twice");
+    out.push_back(name);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
+}
+
+// The frames the command asks for; without --frame or --frames, the scene's first frame.
+std::optional<FrameList> requested_frames(const RenderCommand& cmd) {
+  if (!cmd.frames) return FrameList::range(0, 0);
+  std::string error;
+  const auto list = parse_frame_list(*cmd.frames, error);
+  if (!list)
+    std::fprintf(stderr,
+                 "rtcli: error: --frames: %s; expected a frame N, a range A-B, every S-th frame A-BxS, or a list "
+                 "of those (1,5,9-12), whole numbers within +-%d\n",
+                 error.c_str(), kMaxFrameNumber);
+  return list;
+}
+
+// The output and its kind, and what may be written beside it.
+bool read_output(const RenderCommand& cmd, RenderJob& job) {
+  job.output = cmd.output.empty() ? default_output(cmd.scene, job.frames.count() > 1) : cmd.output;
+  std::string error;
+  const std::optional<OutputKind> kind = output_kind(job.output, error);
+  if (!kind || !check_output(job.output, error)) return fail(error);
+  job.kind = *kind;
+  if (job.frames.count() > 1 && is_single_image(job.kind))
+    return fail(std::to_string(job.frames.count()) +
+                " frames need an animated GIF (-o NAME.gif) or numbered files (-o NAME_####.png or NAME_####.exr), "
+                "found \"" + job.output + "\"");
+  const bool stereo = job.choices.stereo && *job.choices.stereo != StereoMode::kNone;
+  if (job.aa_debug && stereo) return fail("--aa-debug shows one image's refinement; it does not go with --stereo");
+  if (job.samples_debug && (stereo || job.kind != OutputKind::kPng))
+    return fail("--samples-debug writes one image beside one PNG (no --stereo, no \"" + job.output + "\")");
+  if (job.aa_debug && job.kind != OutputKind::kPng)
+    return fail("--aa-debug writes images beside one PNG; it does not go with \"" + job.output + "\"");
+  if ((job.exr_float || !job.aovs.empty()) && !is_exr(job.kind))
+    return fail(std::string(job.aovs.empty() ? "--exr-float" : "--aov") +
+                " applies to EXR output (-o NAME.exr or NAME_####.exr)");
+  if (job.chunk && !is_sequence(job.kind))
+    return fail("--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
+                "NAME_####.exr), then join them with rtcli encode");
+  if ((job.crop || job.tile) && (job.aa_debug || job.samples_debug))
+    return fail(std::string(job.aa_debug ? "--aa-debug" : "--samples-debug") +
+                " shows the whole image; it does not go with " + (job.crop ? "--crop" : "--tile"));
+  return true;
+}
+
+// --crop, --tile and --chunk: the part of the render asked for.
+bool read_share(const RenderCommand& cmd, const EnvironmentLookup& env, RenderJob& job) {
+  std::string error;
+  if (cmd.crop) {
+    job.crop = parse_crop_text(*cmd.crop, error);
+    if (!job.crop) return fail(error);
+  }
+  if (cmd.tile) {
+    job.tile = parse_share(*cmd.tile, "--tile", env, error);
+    if (!job.tile) return fail(error);
+  }
+  if (cmd.chunk) {
+    job.chunk = parse_share(*cmd.chunk, "--chunk", env, error);
+    if (!job.chunk) return fail(error);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const EnvironmentLookup& env) {
+  if (!check_names(cmd)) return std::nullopt;
+  if ((cmd.fps || cmd.animation) && !is_gltf_path(cmd.scene)) {
+    std::fprintf(stderr, "rtcli: error: %s applies to a glTF file rendered on its own; a scene file sets %s\n",
+                 cmd.fps ? "--fps" : "--animation",
+                 cmd.fps ? "\"animation\": {\"fps\": ...}" : "\"animation\" on its glTF reference (\"mesh\")");
+    return std::nullopt;
+  }
+  RenderJob job;
+  job.scene = cmd.scene;
+  const std::optional<FrameList> asked = requested_frames(cmd);
+  if (!asked) return std::nullopt;
+  job.frames = *asked;
+  job.frames_given = cmd.frames.has_value();
+  job.stats = cmd.stats;
+  job.skip_existing = cmd.skip_existing;
+  job.exr_float = cmd.exr_float;
+  job.aa_debug = cmd.aa_debug;
+  job.samples_debug = cmd.samples_debug;
+  job.dither = cmd.dither;
+  job.quiet = cmd.quiet;
+  PixelChoices& c = job.choices;
+  c.camera = cmd.camera.value_or("");
+  c.background = cmd.background.value_or("");
+  c.ambient = cmd.ambient.value_or("");
+  c.animation = cmd.animation.value_or("");
+  c.fps = cmd.fps;
+  if (cmd.stereo) {  // CLI11 checked the name against kStereoModeNames
+    const auto& names = kStereoModeNames;
+    c.stereo = static_cast<StereoMode>(std::find(names.begin(), names.end(), *cmd.stereo) - names.begin());
+  }
+  if (cmd.aov && !parse_aovs(*cmd.aov, job.aovs)) return std::nullopt;
+  if (!read_share(cmd, env, job) || !read_output(cmd, job)) return std::nullopt;
+  return job;
+}
+
+}  // namespace rt
