@@ -1,5 +1,5 @@
 // An indexed triangle mesh in its own (object) space, as imported from glTF: scenes place it
-// with MeshInstance (core/accel/mesh_instance.h), once or many times. Normals and UVs are
+// with MeshInstance (core/mesh_instance.h), once or many times. Normals and UVs are
 // optional (empty when the file had none); without normals a mesh is shaded flat with its
 // geometric normals, as the glTF specification requires.
 #pragma once

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/animation/track.h"
-#include "core/csg/csg_template.h"
+#include "core/csg_template.h"
 #include "core/scene.h"
 
 namespace rt {

@@ -107,8 +107,10 @@ class Bvh {
   // more than the call. Same crossings in the same order as for_each_hit.
   template <class Visitor>
   bool visit_hits(const Ray& ray, Visitor& visit) const {
-    return kernels_->visit_hits(*this, ray, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); },
-                                &visit);
+    return visit_hits_through(ray, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); }, &visit);
+  }
+  bool visit_hits_through(const Ray& ray, HitVisitorFn visit, void* visitor) const {
+    return kernels_->visit_hits(*this, ray, visit, visitor);
   }
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the

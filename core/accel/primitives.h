@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/accel/mesh_instance.h"
+#include "core/mesh_instance.h"
 #include "core/csg/csg_object.h"
 #include "core/mesh.h"
 #include "core/shapes/analytic_shape.h"

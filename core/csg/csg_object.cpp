@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/accel/bvh_traversal.h"
+#include "core/csg/csg_mesh_hits.h"
 
 namespace rt {
 namespace {
@@ -177,7 +177,7 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
       Ray half = object_ray(m.transform, line);
       half.direction *= sign;
       half.tmin = 0.0f;
-      m.bvh->for_each_hit(half, [&](const Hit& h) {
+      auto add = [&](const Hit& h) {
         const Crossing c{CsgBoundary{sign * h.t, surface, h.prim, h.b1, h.b2},
                          faces_against(operand, h.prim, half.direction) == (sign > 0.0f)};
         if (count < kMaxMeshCrossings) {
@@ -190,7 +190,8 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
           if (std::fabs(c.at.t) < std::fabs(far->at.t)) *far = c;
         }
         return false;
-      });
+      };
+      visit_mesh_hits(*m.bvh, half, add);
     }
   }
   std::sort(crossings, crossings + count, [](const Crossing& x, const Crossing& y) { return x.at.t < y.at.t; });

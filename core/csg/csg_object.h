@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/accel/mesh_instance.h"
+#include "core/mesh_instance.h"
 #include "core/csg/csg_child_index.h"
 #include "core/csg/csg_spans.h"
 #include "core/hit.h"

@@ -5,7 +5,7 @@
 
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh_traversal.h"
-#include "core/csg/csg_template.h"
+#include "core/csg_template.h"
 #include "core/rng.h"
 #include "core/scene.h"
 #include "tests/support/geometry.h"

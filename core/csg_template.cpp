@@ -1,4 +1,4 @@
-#include "core/csg/csg_template.h"
+#include "core/csg_template.h"
 
 #include <algorithm>
 #include <map>
