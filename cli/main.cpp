@@ -15,6 +15,9 @@
 #include "cli/render/render_command.h"
 #include "cli/common/suggestions.h"
 #include "cli/common/validate_command.h"
+#include "core/accel/isa.h"
+#include "core/render/integrator.h"
+#include "core/render/pixel_sampler.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
 
@@ -39,16 +42,14 @@ int main(int argc, char** argv) {
       ->check(whole_number(1, kMaxImageSide));
   render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)")
       ->check(whole_number(0, UINT64_MAX));
-  render_cmd->add_option("--integrator", render.integrator,
-                         "whitted (default), path (path tracing), or a debug view: normals, uv, depth, albedo "
-                         "(overrides the scene)");
+  render_cmd->add_option("--integrator", render.integrator, integrators().help() + " (overrides the scene)");
   render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
       ->check(whole_number(1, kMaxGlossySamples));
   render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
   render_cmd->add_flag("--no-textures", render.no_textures, "Ignore colour and specular textures (kd and ks alone)");
   render_cmd->add_flag("--no-bumps", render.no_bumps, "Ignore bump and normal maps");
   render_cmd->add_option("--texture-filter", render.texture_filter,
-                         "nearest, bilinear or trilinear: every texture filtered so (overrides the scene)");
+                         "Every texture filtered so: " + kTextureFilters.help() + " (overrides the scene)");
   render_cmd
       ->add_option("--shadow-samples", render.shadow_samples,
                    "Shadow rays per area light and shading point (overrides the scene)")
@@ -57,8 +58,7 @@ int main(int argc, char** argv) {
                        "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
                        "given beside it still apply");
   render_cmd->add_option("--secondary-shadows", render.secondary_shadows,
-                         "scaled: shadow rays at reflected, refracted and glossy hits scaled by their weight in the "
-                         "pixel; full: all shadow_samples at every hit (overrides the scene)");
+                         kSecondaryShadows.help() + " (overrides the scene)");
   render_cmd
       ->add_option("--exposure", render.exposure,
                    "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
@@ -80,10 +80,8 @@ int main(int argc, char** argv) {
       ->check(real_number(0.0, 1e30));
   render_cmd->add_flag("--samples-debug", render.samples_debug,
                        "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
-  render_cmd->add_option("--tone-map", render.tone_map,
-                         "clamp: values above 1 cut to white; filmic: highlights rolled off (ACES fit) "
-                         "(overrides the scene)");
-  render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: none, uniform or adaptive (overrides the scene)");
+  render_cmd->add_option("--tone-map", render.tone_map, kToneMaps.help() + " (overrides the scene)");
+  render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
   render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
       ->check(whole_number(1, kMaxSamplesPerAxis));
   render_cmd
@@ -92,10 +90,8 @@ int main(int argc, char** argv) {
       ->check(real_number(0.0, 1.0));
   render_cmd->add_option("--aa-depth", render.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
       ->check(whole_number(0, kMaxAdaptiveDepth));
-  render_cmd
-      ->add_option("--aa-positions", render.aa_positions,
-                   "Adaptive anti-aliasing: sample cell corners (shared) or quarter centres")
-      ->check(CLI::IsMember({"corners", "centres"}));
+  render_cmd->add_option("--aa-positions", render.aa_positions,
+                         "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
   render_cmd->add_flag("--aa-debug", render.aa_debug,
                        "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
   CLI::Option* frames = render_cmd->add_option(
@@ -118,11 +114,9 @@ int main(int argc, char** argv) {
       ->add_option("--ambient", render.ambient,
                    "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
-  render_cmd
-      ->add_option("--stereo", render.stereo,
-                   "Stereo from the camera's two eyes: anaglyph (red-cyan), side_by_side, top_bottom, pair (NAME-left "
-                   "and NAME-right), or none (replaces the scene's camera.stereo mode)")
-      ->check(CLI::IsMember(std::vector<std::string>(kStereoModeNames.begin(), kStereoModeNames.end())));
+  render_cmd->add_option("--stereo", render.stereo,
+                         "Stereo from the camera's two eyes: " + kStereoModes.help() +
+                             " (replaces the scene's camera.stereo mode)");
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   const char* outside_help =
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
@@ -144,9 +138,9 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--stats", render.stats,
                          "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
-  const char* isa_help =
-      "Instruction set of the BVH traversal: sse, avx2, avx512 or auto (default: RTCLI_ISA, else auto, the best this "
-      "CPU runs); the image is the same with any";
+  const std::string isa_help = "Instruction set of the BVH traversal: " + kIsas.help() +
+                               "; auto: the best this CPU runs (default: RTCLI_ISA, else auto); the image is the same "
+                               "with any";
   render_cmd->add_option("--isa", render.isa, isa_help);
 
   ValidateCommand validate;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/name_table.h"
 #include "core/texture/texture.h"
 #include "core/tone_map.h"
 
@@ -15,6 +16,10 @@ namespace rt {
 
 // Where the adaptive sampler places the rays of a cell (docs/rendering.md, "Anti-aliasing").
 enum class SamplePositions { kCorners, kCentres };
+inline constexpr NameEntry<SamplePositions> kSamplePositionEntries[] = {
+    {"corners", SamplePositions::kCorners, "cell corners, shared with the neighbours"},
+    {"centres", SamplePositions::kCentres, "the centres of each cell's quarters"}};
+inline constexpr NameTable<SamplePositions> kSamplePositions{kSamplePositionEntries};
 
 // render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
 struct AntialiasSettings {
@@ -84,8 +89,12 @@ inline constexpr int kMaxSamplesPerPixel = 65535;  // the film's sample count is
 // Past this many camera rays per frame a render takes minutes to hours: warned about, not refused.
 inline constexpr uint64_t kCameraRaysWarning = uint64_t{1} << 30;
 
-// The names render.secondary_shadows and --secondary-shadows take, in the order of the bool.
-inline std::vector<std::string> secondary_shadow_names() { return {"full", "scaled"}; }
+// The names render.secondary_shadows and --secondary-shadows take: whether shadow rays at
+// secondary hits are scaled (RenderSettings::scale_secondary_shadows).
+inline constexpr NameEntry<bool> kSecondaryShadowEntries[] = {
+    {"full", false, "all shadow_samples at every hit"},
+    {"scaled", true, "shadow rays at reflected, refracted and glossy hits scaled by their weight in the pixel"}};
+inline constexpr NameTable<bool> kSecondaryShadows{kSecondaryShadowEntries};
 
 // Shadow samples of an area light at a hit of weight `weight` in its pixel (1 for a camera ray's
 // hit; a mirror's reflectivity, times 1/n under a glossy split into n rays, for the hits below):

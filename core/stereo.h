@@ -7,13 +7,19 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "core/name_table.h"
 
 namespace rt {
 
 enum class StereoMode : uint8_t { kNone, kAnaglyph, kSideBySide, kTopBottom, kPair };
-// Their names in scene files, --stereo and --stats, in StereoMode order.
-inline constexpr std::array<const char*, 5> kStereoModeNames = {"none", "anaglyph", "side_by_side", "top_bottom",
-                                                                "pair"};
+// Their names in scene files, --stereo and --stats.
+inline constexpr NameEntry<StereoMode> kStereoModeEntries[] = {
+    {"none", StereoMode::kNone, "one view (the left eye's, or the camera's)"},
+    {"anaglyph", StereoMode::kAnaglyph, "red-cyan"},
+    {"side_by_side", StereoMode::kSideBySide, "left eye on the left"},
+    {"top_bottom", StereoMode::kTopBottom, "left eye on top"},
+    {"pair", StereoMode::kPair, "NAME-left and NAME-right"}};
+inline constexpr NameTable<StereoMode> kStereoModes{kStereoModeEntries};
 enum class AnaglyphKind : uint8_t { kDubois, kColor };
 
 struct StereoSettings {

@@ -16,13 +16,17 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/name_table.h"
 
 namespace rt {
 
 enum class ToneMap { kClamp, kFilmic };
 
-// The names render.tone_map and --tone-map take, in enum order.
-inline std::vector<std::string> tone_map_names() { return {"clamp", "filmic"}; }
+// The names render.tone_map and --tone-map take.
+inline constexpr NameEntry<ToneMap> kToneMapEntries[] = {
+    {"clamp", ToneMap::kClamp, "values above 1 cut to white"},
+    {"filmic", ToneMap::kFilmic, "highlights rolled off (ACES fit)"}};
+inline constexpr NameTable<ToneMap> kToneMaps{kToneMapEntries};
 
 // render.exposure is limited to +-kMaxExposure stops (2^20: beyond any scene's need).
 inline constexpr double kMaxExposure = 20.0;

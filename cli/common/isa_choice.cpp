@@ -12,7 +12,7 @@ std::optional<Isa> choose_isa(const std::optional<std::string>& flag, const char
   if (name.empty() || name == "auto") return best_isa();
   const std::optional<Isa> isa = parse_isa(name);
   if (!isa) {
-    std::fprintf(stderr, "%s: error: %s: expected sse, avx2, avx512 or auto\n", program, source.c_str());
+    std::fprintf(stderr, "%s: error: %s: expected %s or auto\n", program, source.c_str(), kIsas.list().c_str());
     return std::nullopt;
   }
   if (!isa_supported(*isa)) {

@@ -13,8 +13,8 @@ inline LoadOptions cli_load_options(unsigned threads = 0, std::optional<std::str
   LoadOptions options;
   options.threads = threads;
   options.isa = isa;
-  options.integrators = integrator_names();
-  options.pixel_samplers = pixel_sampler_names();
+  options.integrators = integrators().names();
+  options.pixel_samplers = pixel_samplers().names();
   options.camera = std::move(camera);
   options.limits.outside_files = outside_files;
   options.limits.decode_threads = threads;

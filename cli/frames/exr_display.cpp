@@ -23,9 +23,7 @@ std::optional<Rgb8Image> displayed(const ExrImage& image, const std::string& nam
   if (const auto it = image.attributes.find(exr_key::kExposure); it != image.attributes.end())
     display.exposure = std::strtof(it->second.c_str(), nullptr);
   if (const auto it = image.attributes.find(exr_key::kToneMap); it != image.attributes.end()) {
-    const auto names = tone_map_names();
-    const auto found = std::find(names.begin(), names.end(), it->second);
-    if (found != names.end()) display.curve = static_cast<ToneMap>(found - names.begin());
+    if (const auto curve = kToneMaps.parse(it->second)) display.curve = *curve;
   }
   Image linear(image.width, image.height);
   const size_t n = color->channels.size();

@@ -54,7 +54,7 @@ std::map<std::string, std::string> render_attributes(const RenderIdentity& id, i
                          "," + std::to_string(window.y1)},
       {exr_key::kSeed, std::to_string(id.seed)},
       {exr_key::kExposure, float_text(id.display.exposure)},
-      {exr_key::kToneMap, tone_map_names()[static_cast<size_t>(id.display.curve)]},
+      {exr_key::kToneMap, std::string(kToneMaps.name(id.display.curve))},
       {exr_key::kFps, float_text(id.fps)},
   };
   if (!id.tile.empty()) out[exr_key::kTile] = id.tile;

@@ -45,16 +45,14 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.no_glossy) s.glossy = false;
   if (cmd.no_textures) s.detail.textures = false;
   if (cmd.no_bumps) s.detail.bumps = false;
-  if (cmd.texture_filter) {
-    const std::vector<std::string> names = texture_filter_names();
+  if (cmd.texture_filter) {  // the job checked the name
     s.detail.override_filter = true;
-    s.detail.filter =
-        static_cast<TextureFilter>(std::find(names.begin(), names.end(), *cmd.texture_filter) - names.begin());
+    s.detail.filter = *kTextureFilters.parse(*cmd.texture_filter);
   }
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
-  if (cmd.secondary_shadows) s.scale_secondary_shadows = *cmd.secondary_shadows == "scaled";
+  if (cmd.secondary_shadows) s.scale_secondary_shadows = *kSecondaryShadows.parse(*cmd.secondary_shadows);
   if (cmd.exposure) s.display.exposure = *cmd.exposure;
-  if (cmd.tone_map) s.display.curve = *cmd.tone_map == "filmic" ? ToneMap::kFilmic : ToneMap::kClamp;
+  if (cmd.tone_map) s.display.curve = *kToneMaps.parse(*cmd.tone_map);
   if (cmd.spp) s.path.samples_per_pixel = *cmd.spp;
   if (cmd.noise_threshold) s.path.noise_threshold = *cmd.noise_threshold;
   if (cmd.clamp) s.path.clamp = *cmd.clamp;
@@ -62,8 +60,7 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.aa_samples) s.antialias.samples = *cmd.aa_samples;
   if (cmd.aa_threshold) s.antialias.threshold = *cmd.aa_threshold;
   if (cmd.aa_depth) s.antialias.max_depth = *cmd.aa_depth;
-  if (cmd.aa_positions)
-    s.antialias.positions = *cmd.aa_positions == "centres" ? SamplePositions::kCentres : SamplePositions::kCorners;
+  if (cmd.aa_positions) s.antialias.positions = *kSamplePositions.parse(*cmd.aa_positions);
   // A debug view's values are data (a normal, a depth): shown as they are, never tone mapped.
   if (!integrator_shows_radiance(s.integrator)) s.display = DisplayTransform{};
   return s;

@@ -23,25 +23,23 @@ std::string default_output(const std::string& scene, bool animation) {
   return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");
 }
 
-// A name the render pipeline must know (an integrator, an anti-aliasing mode), or an error
-// listing the names it knows.
-bool check_name(const char* option, const char* what, const std::string& name, const std::vector<std::string>& names) {
-  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
-  std::string list;
-  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name.c_str(),
-               did_you_mean(name, names).c_str(), list.c_str());
+// A name one of the name tables must hold, or an error listing the names it holds.
+template <class T>
+bool check_name(const char* option, const char* what, const std::optional<std::string>& name, const NameTable<T>& table) {
+  if (!name || table.find(*name)) return true;
+  std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name->c_str(),
+               did_you_mean(*name, table.names()).c_str(), table.list().c_str());
   return false;
 }
 
 bool check_names(const RenderCommand& cmd) {
-  return (!cmd.integrator || check_name("--integrator", "integrator", *cmd.integrator, integrator_names())) &&
-         (!cmd.aa_mode || check_name("--aa", "anti-aliasing mode", *cmd.aa_mode, pixel_sampler_names())) &&
-         (!cmd.texture_filter ||
-          check_name("--texture-filter", "texture filter", *cmd.texture_filter, texture_filter_names())) &&
-         (!cmd.secondary_shadows || check_name("--secondary-shadows", "secondary shadow rule", *cmd.secondary_shadows,
-                                               secondary_shadow_names())) &&
-         (!cmd.tone_map || check_name("--tone-map", "tone curve", *cmd.tone_map, tone_map_names()));
+  return check_name("--integrator", "integrator", cmd.integrator, integrators()) &&
+         check_name("--aa", "anti-aliasing mode", cmd.aa_mode, pixel_samplers()) &&
+         check_name("--texture-filter", "texture filter", cmd.texture_filter, kTextureFilters) &&
+         check_name("--secondary-shadows", "secondary shadow rule", cmd.secondary_shadows, kSecondaryShadows) &&
+         check_name("--tone-map", "tone curve", cmd.tone_map, kToneMaps) &&
+         check_name("--aa-positions", "sample position", cmd.aa_positions, kSamplePositions) &&
+         check_name("--stereo", "stereo mode", cmd.stereo, kStereoModes);
 }
 
 // "albedo,normal,depth" in any order, each once.
@@ -149,10 +147,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   c.ambient = cmd.ambient.value_or("");
   c.animation = cmd.animation.value_or("");
   c.fps = cmd.fps;
-  if (cmd.stereo) {  // CLI11 checked the name against kStereoModeNames
-    const auto& names = kStereoModeNames;
-    c.stereo = static_cast<StereoMode>(std::find(names.begin(), names.end(), *cmd.stereo) - names.begin());
-  }
+  if (cmd.stereo) c.stereo = kStereoModes.parse(*cmd.stereo);  // checked by check_names
   if (cmd.aov && !parse_aovs(*cmd.aov, job.aovs)) return std::nullopt;
   if (!read_share(cmd, env, job) || !read_output(cmd, job)) return std::nullopt;
   return job;

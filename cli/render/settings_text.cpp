@@ -14,16 +14,16 @@ std::string settings_text(const RenderSettings& s, const PixelChoices& c, Stereo
   add("max_depth", std::to_string(s.max_depth));
   add("antialias", aa.mode + "," + std::to_string(aa.samples) + "," + (aa.jitter ? "jitter" : "grid") + "," +
                        float_text(aa.threshold) + "," + std::to_string(aa.max_depth) + "," +
-                       (aa.positions == SamplePositions::kCorners ? "corners" : "centres"));
+                       std::string(kSamplePositions.name(aa.positions)));
   add("glossy", s.glossy ? std::to_string(s.glossy_samples) : "off");
   add("shadow_samples", std::to_string(s.shadow_samples) + (s.scale_secondary_shadows ? ",scaled" : ",full"));
   add("detail", std::string(s.detail.textures ? "textures" : "no-textures") + "," +
                     (s.detail.bumps ? "bumps" : "no-bumps") + "," +
                     (s.detail.override_filter ? std::to_string(static_cast<int>(s.detail.filter)) : "own"));
-  add("display", float_text(s.display.exposure) + "," + tone_map_names()[static_cast<size_t>(s.display.curve)]);
+  add("display", float_text(s.display.exposure) + "," + std::string(kToneMaps.name(s.display.curve)));
   add("path", std::to_string(s.path.samples_per_pixel) + "," + float_text(s.path.noise_threshold) + "," +
                   float_text(s.path.clamp) + "," + std::to_string(static_cast<int>(s.path.strategy)));
-  add("stereo", std::string(kStereoModeNames[static_cast<size_t>(stereo)]));
+  add("stereo", std::string(kStereoModes.name(stereo)));
   add("camera", c.camera);
   add("background", c.background);
   add("ambient", c.ambient);

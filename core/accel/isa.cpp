@@ -2,21 +2,6 @@
 
 namespace rt {
 
-const char* isa_name(Isa isa) {
-  switch (isa) {
-    case Isa::kSse: return "sse";
-    case Isa::kAvx2: return "avx2";
-    case Isa::kAvx512: return "avx512";
-  }
-  return "sse";
-}
-
-std::optional<Isa> parse_isa(std::string_view name) {
-  for (Isa isa : kAllIsas)
-    if (name == isa_name(isa)) return isa;
-  return std::nullopt;
-}
-
 bool isa_supported(Isa isa) {
 #if defined(__x86_64__)
   // libgcc's CPU model checks the CPUID bits and, for AVX and AVX-512, that the operating system

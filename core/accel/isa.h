@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/name_table.h"
+
 namespace rt {
 
 enum class Isa {
@@ -16,12 +18,17 @@ enum class Isa {
   kAvx512,  // AVX-512 F and VL, kept to 256-bit vectors: more registers, mask compares
 };
 
+// "sse", "avx2", "avx512": the names --isa and RTCLI_ISA take and the render summary prints,
+// narrowest first ("auto", the widest the CPU runs, is the caller's to handle).
+inline constexpr NameEntry<Isa> kIsaEntries[] = {{"sse", Isa::kSse, "x86-64's baseline, runs everywhere"},
+                                                 {"avx2", Isa::kAvx2, "8-lane AVX2"},
+                                                 {"avx512", Isa::kAvx512, "AVX-512 F and VL, 256-bit vectors"}};
+inline constexpr NameTable<Isa> kIsas{kIsaEntries};
 inline constexpr Isa kAllIsas[] = {Isa::kSse, Isa::kAvx2, Isa::kAvx512};
+static_assert(std::size(kAllIsas) == std::size(kIsaEntries));
 
-// "sse", "avx2", "avx512": the names --isa and RTCLI_ISA take and the render summary prints.
-const char* isa_name(Isa isa);
-// The set a name means; nothing for an unknown name ("auto" is the caller's to handle).
-std::optional<Isa> parse_isa(std::string_view name);
+inline const char* isa_name(Isa isa) { return kIsas.name(isa).data(); }  // the table's names are literals
+inline std::optional<Isa> parse_isa(std::string_view name) { return kIsas.parse(name); }
 // Whether this CPU (and its operating system, for the wider registers) runs the set.
 bool isa_supported(Isa isa);
 // The widest set this CPU runs.

@@ -7,52 +7,39 @@
 namespace rt {
 namespace {
 
-struct Entry {
-  const char* name;
-  std::unique_ptr<Integrator> (*make)();
-  bool radiance;  // false: a debug view (integrator_shows_radiance)
-  bool samples_pixels = false;  // integrator_samples_pixels
-};
-
 template <class T>
 std::unique_ptr<Integrator> make() {
   return std::make_unique<T>();
 }
 
 // The name table. Adding an integrator = one file and one line here.
-constexpr Entry kIntegrators[] = {
-    {"whitted", &make<WhittedIntegrator>, true},
-    {"path", &make<PathIntegrator>, true, true},
-    {"normals", &make<NormalsIntegrator>, false},
-    {"uv", &make<UvIntegrator>, false},
-    {"depth", &make<DepthIntegrator>, false},
-    {"albedo", &make<AlbedoIntegrator>, false},
+constexpr NameEntry<IntegratorKind> kIntegratorEntries[] = {
+    {"whitted", {&make<WhittedIntegrator>, true, false}, "Whitted ray tracing with the proposal's extras (default)"},
+    {"path", {&make<PathIntegrator>, true, true}, "path tracing"},
+    {"normals", {&make<NormalsIntegrator>, false, false}, "debug view: shading normals"},
+    {"uv", {&make<UvIntegrator>, false, false}, "debug view: texture coordinates"},
+    {"depth", {&make<DepthIntegrator>, false, false}, "debug view: distance, white near"},
+    {"albedo", {&make<AlbedoIntegrator>, false, false}, "debug view: the diffuse colour"},
 };
+constexpr NameTable<IntegratorKind> kIntegrators{kIntegratorEntries};
 
 }  // namespace
 
+const NameTable<IntegratorKind>& integrators() { return kIntegrators; }
+
 std::unique_ptr<Integrator> make_integrator(std::string_view name) {
-  for (const Entry& e : kIntegrators)
-    if (name == e.name) return e.make();
-  return nullptr;
+  const NameEntry<IntegratorKind>* e = kIntegrators.find(name);
+  return e ? e->value.make() : nullptr;
 }
 
 bool integrator_shows_radiance(std::string_view name) {
-  for (const Entry& e : kIntegrators)
-    if (name == e.name) return e.radiance;
-  return true;
+  const NameEntry<IntegratorKind>* e = kIntegrators.find(name);
+  return !e || e->value.shows_radiance;
 }
 
 bool integrator_samples_pixels(std::string_view name) {
-  for (const Entry& e : kIntegrators)
-    if (name == e.name) return e.samples_pixels;
-  return false;
-}
-
-std::vector<std::string> integrator_names() {
-  std::vector<std::string> names;
-  for (const Entry& e : kIntegrators) names.emplace_back(e.name);
-  return names;
+  const NameEntry<IntegratorKind>* e = kIntegrators.find(name);
+  return e && e->value.samples_pixels;
 }
 
 }  // namespace rt

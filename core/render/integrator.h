@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/name_table.h"
 #include "core/render/aovs.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
@@ -57,6 +58,15 @@ class Integrator {
   virtual Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const = 0;
 };
 
+// What an integrator's name stands for in the name table.
+struct IntegratorKind {
+  std::unique_ptr<Integrator> (*make)();
+  bool shows_radiance;  // false: a debug view (integrator_shows_radiance)
+  bool samples_pixels;  // integrator_samples_pixels
+};
+// The name table: render.integrator and --integrator.
+const NameTable<IntegratorKind>& integrators();
+
 // The integrator registered under `name`, or nullptr if there is none.
 std::unique_ptr<Integrator> make_integrator(std::string_view name);
 // Whether the integrator registered under `name` makes radiance, which goes to the display
@@ -66,6 +76,5 @@ bool integrator_shows_radiance(std::string_view name);
 // Whether the integrator registered under `name` takes its own samples per pixel (the path
 // tracer: render.samples_per_pixel, core/render/path_sampler.h) rather than render.antialias's.
 bool integrator_samples_pixels(std::string_view name);
-std::vector<std::string> integrator_names();
 
 }  // namespace rt

@@ -124,27 +124,21 @@ std::unique_ptr<PixelSampler> make_adaptive(const AntialiasSettings& aa, const T
   return std::make_unique<AdaptiveSampler>(aa, grid);
 }
 
-struct Entry {
-  const char* name;
-  std::unique_ptr<PixelSampler> (*make)(const AntialiasSettings&, const TileGrid&);
-};
-
 // The name table (render.antialias.mode). Adding a sampler = one file and one line here.
-constexpr Entry kSamplers[] = {{"none", &make_centre}, {"uniform", &make_uniform}, {"adaptive", &make_adaptive}};
+constexpr NameEntry<PixelSamplerKind> kSamplerEntries[] = {
+    {"none", {&make_centre}, "one ray through each pixel's centre"},
+    {"uniform", {&make_uniform}, "N x N rays per pixel"},
+    {"adaptive", {&make_adaptive}, "cells split where their samples differ (default)"}};
+constexpr NameTable<PixelSamplerKind> kSamplers{kSamplerEntries};
 
 }  // namespace
 
+const NameTable<PixelSamplerKind>& pixel_samplers() { return kSamplers; }
+
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid) {
   if (integrator_samples_pixels(settings.integrator)) return std::make_unique<PathSampler>(settings.path);
-  for (const Entry& e : kSamplers)
-    if (settings.antialias.mode == e.name) return e.make(settings.antialias, grid);
-  return nullptr;
-}
-
-std::vector<std::string> pixel_sampler_names() {
-  std::vector<std::string> names;
-  for (const Entry& e : kSamplers) names.emplace_back(e.name);
-  return names;
+  const NameEntry<PixelSamplerKind>* e = kSamplers.find(settings.antialias.mode);
+  return e ? e->value.make(settings.antialias, grid) : nullptr;
 }
 
 }  // namespace rt

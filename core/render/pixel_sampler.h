@@ -58,7 +58,12 @@ class PixelSampler {
 // sampler, whatever the mode, for an integrator that samples pixels itself);
 // nullptr if no sampler has that name.
 std::unique_ptr<PixelSampler> make_pixel_sampler(const RenderSettings& settings, const TileGrid& grid);
-std::vector<std::string> pixel_sampler_names();
+
+// What a sampler's name stands for in the name table: render.antialias.mode and --aa.
+struct PixelSamplerKind {
+  std::unique_ptr<PixelSampler> (*make)(const AntialiasSettings&, const TileGrid&);
+};
+const NameTable<PixelSamplerKind>& pixel_samplers();
 
 // Fills a tile pixel by pixel with pixel(x, y) -> FilmPixel, for samplers whose pixels are
 // independent; stops (returning false) once the render is cancelled.

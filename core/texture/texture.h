@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/name_table.h"
 
 namespace rt {
 
@@ -41,7 +42,11 @@ struct UvFootprint {
 };
 
 // The names scene files and --texture-filter use, in enum order.
-inline std::vector<std::string> texture_filter_names() { return {"nearest", "bilinear", "trilinear"}; }
+inline constexpr NameEntry<TextureFilter> kTextureFilterEntries[] = {
+    {"nearest", TextureFilter::kNearest, "the nearest texel"},
+    {"bilinear", TextureFilter::kBilinear, "the four nearest texels blended"},
+    {"trilinear", TextureFilter::kTrilinear, "bilinear in the two mip levels the ray cone's footprint falls between"}};
+inline constexpr NameTable<TextureFilter> kTextureFilters{kTextureFilterEntries};
 
 class Texture {
  public:

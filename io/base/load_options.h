@@ -1,6 +1,6 @@
 // What the caller tells the loaders: threads for the BVH build, the names the render pipeline
-// offers (io does not link the renderer; cli passes integrator_names() and
-// pixel_sampler_names()), and the limits on what
+// offers (io does not link the renderer; cli passes integrators().names()
+// and pixel_samplers().names()), and the limits on what
 // a file may ask for. The limits keep a hostile or broken file from exhausting memory or time:
 // everything is checked against them before it is allocated. README.md ("Limits") documents
 // the defaults; the fuzzers run with smaller ones.

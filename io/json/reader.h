@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/name_table.h"
 #include "io/base/diagnostics.h"
 #include "io/base/reporter.h"
 #include "io/json/document.h"
@@ -78,6 +79,12 @@ std::string join_quoted(const std::vector<std::string>& items);
 // Index of v in `choices`; otherwise an error listing them all.
 std::optional<size_t> read_choice(const JsonReader& r, const Json& v, const std::string& ptr,
                                   const std::vector<std::string>& choices);
+// The same for a name table's names: the value chosen.
+template <class T>
+std::optional<T> read_choice(const JsonReader& r, const Json& v, const std::string& ptr, const NameTable<T>& table) {
+  const std::optional<size_t> k = read_choice(r, v, ptr, table.names());
+  return k ? std::optional<T>(table.entries()[*k].value) : std::nullopt;
+}
 
 inline constexpr std::string_view kVec3Expected = "an array of 3 numbers [x, y, z]";
 inline constexpr std::string_view kColorExpected = "a colour: [r, g, b] with components >= 0, or one number for grey";

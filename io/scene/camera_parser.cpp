@@ -9,14 +9,20 @@ constexpr NumberRule kShift{-10, 10, false, false, false};
 constexpr NumberRule kLatitude{0, 90, false, false, false};
 const std::vector<std::string> kProjections = {"perspective", "orthographic", "fisheye", "equirectangular"};
 // A scene names a mode to turn stereo on: every name but "none".
-const std::vector<std::string> kStereoModes(kStereoModeNames.begin() + 1, kStereoModeNames.end());
+// A camera's stereo block names a layout: every mode but "none" (leave the block out for that).
+const std::vector<std::string> kStereoLayouts = [] {
+  std::vector<std::string> names = kStereoModes.names();
+  names.erase(names.begin());
+  return names;
+}();
 const std::vector<std::string> kAnaglyphs = {"dubois", "color"};
 
 void parse_stereo(const JsonReader& r, const Json& v, const std::string& ptr, CameraDescription& c) {
   ObjectReader o(r, v, ptr);
   StereoSettings& s = c.stereo;
-  if (const Json* m = o.get("mode", true, join_quoted(kStereoModes))) {
-    if (const auto k = read_choice(r, *m, o.child("mode"), kStereoModes)) s.mode = static_cast<StereoMode>(*k + 1);
+  if (const Json* m = o.get("mode", true, join_quoted(kStereoLayouts))) {
+    if (const auto k = read_choice(r, *m, o.child("mode"), kStereoLayouts))
+      s.mode = *kStereoModes.parse(kStereoLayouts[*k]);
   }
   if (const auto e = o.number("eye_separation", kPositive)) s.eye_separation = static_cast<float>(*e);
   if (const auto d = o.number("convergence", kPositive)) c.convergence = static_cast<float>(*d);

@@ -40,8 +40,8 @@ void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr,
   if (const auto t = a.number("threshold", kThreshold)) aa.threshold = static_cast<float>(*t);
   if (const auto d = a.number("max_depth", kAdaptiveDepth)) aa.max_depth = static_cast<int>(*d);
   if (const Json* p = a.get("positions")) {
-    if (const auto k = read_choice(r, *p, a.child("positions"), {"corners", "centres"}))
-      aa.positions = *k == 0 ? SamplePositions::kCorners : SamplePositions::kCentres;
+    if (const auto k = read_choice(r, *p, a.child("positions"), kSamplePositions))
+      aa.positions = *k;
   }
   a.finish();
 }
@@ -80,15 +80,15 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
   if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
   if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
   if (const Json* m = o.get("secondary_shadows")) {
-    if (const auto k = read_choice(r, *m, o.child("secondary_shadows"), secondary_shadow_names()))
-      s.scale_secondary_shadows = *k == 1;
+    if (const auto k = read_choice(r, *m, o.child("secondary_shadows"), kSecondaryShadows))
+      s.scale_secondary_shadows = *k;
   }
   if (const auto e = o.number("exposure", kExposure)) s.display.exposure = static_cast<float>(*e);
   if (const auto n = o.number("samples_per_pixel", kSamplesPerPixel)) s.path.samples_per_pixel = static_cast<int>(*n);
   if (const auto t = o.number("noise_threshold", kNoiseThreshold)) s.path.noise_threshold = static_cast<float>(*t);
   if (const auto c = o.number("clamp", kNonNegative)) s.path.clamp = static_cast<float>(*c);
   if (const Json* t = o.get("tone_map")) {
-    if (const auto k = read_choice(r, *t, o.child("tone_map"), tone_map_names())) s.display.curve = static_cast<ToneMap>(*k);
+    if (const auto k = read_choice(r, *t, o.child("tone_map"), kToneMaps)) s.display.curve = *k;
   }
   if (const Json* i = o.get("integrator")) {
     if (const auto k = read_choice(r, *i, o.child("integrator"), options.integrators))

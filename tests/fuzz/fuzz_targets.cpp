@@ -33,8 +33,8 @@ namespace {
 LoadOptions fuzz_options() {
   LoadOptions options;
   options.threads = 1;
-  options.integrators = integrator_names();
-  options.pixel_samplers = pixel_sampler_names();
+  options.integrators = integrators().names();
+  options.pixel_samplers = pixel_samplers().names();
   options.limits.scene_file_bytes = 1 << 20;
   options.limits.gltf_json_bytes = 1 << 20;
   options.limits.gltf_total_bytes = 4 << 20;

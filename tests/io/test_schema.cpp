@@ -106,20 +106,28 @@ TEST_CASE("schema: the copy compiled into the binary is schemas/scene.schema.jso
   CHECK(scene_schema_text() == rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
 }
 
-TEST_CASE("schema: the integrator and pixel sampler enums are the renderer's name tables", "[schema]") {
-  // The schema is written by hand; the names come from the code (core/render). A new integrator
-  // or sampler must be added to both, or `validate` would refuse a scene that renders.
+TEST_CASE("schema: every enum of names is the code's name table", "[schema]") {
+  // The schema is written by hand; the names come from the code's name tables (core/name_table.h).
+  // A new integrator, sampler, curve or mode must be added to both, or `validate` would refuse a
+  // scene that renders.
   const Json schema = Json::parse(rt::test::read_file(rt::test::source_path("schemas/scene.schema.json")));
-  const auto names_at = [&](const char* pointer) {
-    std::vector<std::string> names = schema.at(Json::json_pointer(pointer)).get<std::vector<std::string>>();
+  const auto sorted = [](std::vector<std::string> names) {
     std::sort(names.begin(), names.end());
     return names;
   };
-  auto integrators = integrator_names();
-  auto samplers = pixel_sampler_names();
-  std::sort(integrators.begin(), integrators.end());
-  std::sort(samplers.begin(), samplers.end());
-  CHECK(integrators.size() == 6);
-  CHECK(names_at("/definitions/render/properties/integrator/enum") == integrators);
-  CHECK(names_at("/definitions/render/properties/antialias/properties/mode/enum") == samplers);
+  const auto names_at = [&](const char* pointer) {
+    return sorted(schema.at(Json::json_pointer(pointer)).get<std::vector<std::string>>());
+  };
+  CHECK(names_at("/definitions/render/properties/integrator/enum") == sorted(integrators().names()));
+  CHECK(names_at("/definitions/render/properties/antialias/properties/mode/enum") == sorted(pixel_samplers().names()));
+  CHECK(names_at("/definitions/render/properties/antialias/properties/positions/enum") ==
+        sorted(kSamplePositions.names()));
+  CHECK(names_at("/definitions/render/properties/tone_map/enum") == sorted(kToneMaps.names()));
+  CHECK(names_at("/definitions/render/properties/secondary_shadows/enum") == sorted(kSecondaryShadows.names()));
+  std::vector<std::string> layouts = kStereoModes.names();
+  layouts.erase(layouts.begin());  // a camera's stereo block names a layout: "none" is leaving it out
+  CHECK(names_at("/definitions/camera/properties/stereo/properties/mode/enum") == sorted(layouts));
+  for (const char* slot : {"texture", "bump", "normal_map"})
+    CHECK(names_at(("/definitions/" + std::string(slot) + "/oneOf/1/properties/filter/enum").c_str()) ==
+          sorted(kTextureFilters.names()));
 }

@@ -17,8 +17,8 @@ namespace rt::test {
 inline LoadOptions load_options(unsigned threads = 1) {
   LoadOptions options;
   options.threads = threads;
-  options.integrators = integrator_names();
-  options.pixel_samplers = pixel_sampler_names();
+  options.integrators = integrators().names();
+  options.pixel_samplers = pixel_samplers().names();
   return options;
 }
 
