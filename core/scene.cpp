@@ -14,13 +14,20 @@ SurfaceInteraction instance_surface(const SceneAssets& assets, const MeshInstanc
 }  // namespace
 
 SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
-  if (bvh.is_instance(hit.prim)) return instance_surface(*assets, bvh.instance(hit.prim), ray, hit);
-  if (!bvh.is_csg(hit.prim)) return shape_surface(bvh.shape(hit.prim), ray, hit);
-  // The operand surface's own record, turned to face out of the solid.
-  const CsgSurface& s = bvh.csg(hit.prim).surface(csg_surface_index(hit));
-  SurfaceInteraction si = s.is_mesh ? instance_surface(*assets, s.mesh, ray, hit) : shape_surface(s.shape, ray, hit);
-  orient_csg_surface(si, ray, hit);
-  return si;
+  switch (bvh.kind(hit.prim)) {
+    case PrimitiveKind::kInstance: return instance_surface(*assets, bvh.instance(hit.prim), ray, hit);
+    case PrimitiveKind::kShape: return shape_surface(bvh.shape(hit.prim), ray, hit);
+    case PrimitiveKind::kCsg: {
+      // The operand surface's own record, turned to face out of the solid.
+      const CsgSurface& s = bvh.csg(hit.prim).surface(csg_surface_index(hit));
+      SurfaceInteraction si =
+          s.is_mesh ? instance_surface(*assets, s.mesh, ray, hit) : shape_surface(s.shape, ray, hit);
+      orient_csg_surface(si, ray, hit);
+      return si;
+    }
+    case PrimitiveKind::kTriangle: break;  // a scene's BVH holds no loose triangles
+  }
+  return SurfaceInteraction{};
 }
 
 namespace {
@@ -58,9 +65,13 @@ void Scene::intersect_packet(Ray* rays, SceneHit* out, int count) const {
 }
 
 uint32_t Scene::material_of(const Hit& hit) const {
-  if (bvh.is_instance(hit.prim)) return bvh.instance(hit.prim).material;
-  if (bvh.is_csg(hit.prim)) return bvh.csg(hit.prim).surface(csg_surface_index(hit)).material();
-  return bvh.shape(hit.prim).material;
+  switch (bvh.kind(hit.prim)) {
+    case PrimitiveKind::kInstance: return bvh.instance(hit.prim).material;
+    case PrimitiveKind::kCsg: return bvh.csg(hit.prim).surface(csg_surface_index(hit)).material();
+    case PrimitiveKind::kShape: return bvh.shape(hit.prim).material;
+    case PrimitiveKind::kTriangle: break;  // a scene's BVH holds no loose triangles
+  }
+  return 0;
 }
 
 std::vector<TriangleMesh> Scene::world_meshes() const {

@@ -10,7 +10,7 @@
 #include "core/parallel_for.h"
 #include "core/rng.h"
 #include "core/thread_count.h"
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 
 namespace rt {
 namespace {
@@ -66,7 +66,7 @@ std::vector<RaySet> make_ray_sets(const PrimitiveSet& prims) {
     // Far from the surface by t's rounding at most (a generous bound); a triangle's point is
     // found from its barycentrics instead, as the renderer does, with pbrt-v4's bound.
     Vec3 error = float_gamma(16) * (glm::abs(ray.origin) + glm::abs(hit.t * ray.direction));
-    if (prims.is_triangle(hit.prim)) {
+    if (prims.kind(hit.prim) == PrimitiveKind::kTriangle) {
       const PackedTriangle& tri = prims.triangles[hit.prim];
       p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
       error = float_gamma(7) * (glm::abs(tri.v0) + glm::abs(hit.b1 * tri.e1) + glm::abs(hit.b2 * tri.e2));

@@ -21,13 +21,16 @@ class BruteForce {
   // As Bvh::for_each_hit: every crossing in the ray's interval, until visit returns true.
   template <class Visitor>
   bool for_each_hit(const Ray& ray, Visitor&& visit) const {
-    const uint32_t triangles = static_cast<uint32_t>(prims_->triangles.size());
-    for (uint32_t id = 0; id < triangles; ++id)
-      if (visit_triangle_crossing(prims_->triangles[id], id, ray, visit)) return true;
-    for (uint32_t id = triangles; id < prims_->shape_end(); ++id)
-      if (visit_shape_crossings(prims_->shape(id), id, ray, visit)) return true;
-    for (uint32_t id = prims_->instance_end(); id < prims_->size(); ++id)
-      if (visit_csg_crossings(prims_->csg(id), id, ray, visit)) return true;
+    for (uint32_t id = 0; id < prims_->size(); ++id) {
+      bool stop = false;
+      switch (prims_->kind(id)) {
+        case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(prims_->triangles[id], id, ray, visit); break;
+        case PrimitiveKind::kShape: stop = visit_shape_crossings(prims_->shape(id), id, ray, visit); break;
+        case PrimitiveKind::kCsg: stop = visit_csg_crossings(prims_->csg(id), id, ray, visit); break;
+        case PrimitiveKind::kInstance: break;  // a reference set holds none
+      }
+      if (stop) return true;
+    }
     return false;
   }
 

@@ -116,13 +116,11 @@ class Bvh {
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
   // BVH holds its own copy in leaf order). A hit on an instance has hit.prim = the instance's
   // id here and hit.part = the triangle's index in its mesh.
-  uint32_t primitive_count() const { return csg_begin() + static_cast<uint32_t>(csgs_.size()); }
-  bool is_triangle(uint32_t id) const { return id < triangle_count_; }
-  bool is_instance(uint32_t id) const { return id >= instance_begin() && id < csg_begin(); }
-  bool is_csg(uint32_t id) const { return id >= csg_begin(); }
-  const AnalyticShape& shape(uint32_t id) const { return shapes_[id - triangle_count_]; }
-  const MeshInstance& instance(uint32_t id) const { return instances_[id - instance_begin()]; }
-  const CsgObject& csg(uint32_t id) const { return csgs_[id - csg_begin()]; }
+  uint32_t primitive_count() const { return ranges_.end; }
+  PrimitiveKind kind(uint32_t id) const { return ranges_.kind(id); }
+  const AnalyticShape& shape(uint32_t id) const { return shapes_[id - ranges_.shape_begin]; }
+  const MeshInstance& instance(uint32_t id) const { return instances_[id - ranges_.instance_begin]; }
+  const CsgObject& csg(uint32_t id) const { return csgs_[id - ranges_.csg_begin]; }
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
   const std::vector<MeshInstance>& instances() const { return instances_; }
   const std::vector<CsgObject>& csgs() const { return csgs_; }
@@ -148,16 +146,24 @@ class Bvh {
     PackedTriangle triangle;  // unused for analytic shapes
     uint32_t id;
   };
+  // The world box of the primitive in a leaf slot (a triangle's from the slot's own copy).
+  Aabb primitive_bounds(uint32_t id, const Slot& slot) const {
+    switch (kind(id)) {
+      case PrimitiveKind::kTriangle: return slot.triangle.bounds();
+      case PrimitiveKind::kShape: return world_bounds(shape(id));
+      case PrimitiveKind::kInstance: return instance(id).bounds;
+      case PrimitiveKind::kCsg: return csg(id).bounds();
+    }
+    return {};
+  }
   // The layout the traversal (core/accel/bvh_traversal.h) reads.
   const std::vector<Slot>& slots() const { return slots_; }
   const std::vector<TriangleQuad>& quads() const { return quads_; }  // quad leaves' (BvhRef)
-  uint32_t triangle_count() const { return triangle_count_; }
-  uint32_t instance_begin() const { return triangle_count_ + static_cast<uint32_t>(shapes_.size()); }
-  uint32_t csg_begin() const { return instance_begin() + static_cast<uint32_t>(instances_.size()); }
+  uint32_t triangle_count() const { return ranges_.shape_begin; }
 
  private:
   const BvhKernels* kernels_ = &bvh_kernels(Isa::kSse);
-  uint32_t triangle_count_ = 0;
+  PrimitiveRanges ranges_;
   std::vector<AnalyticShape> shapes_;
   std::vector<MeshInstance> instances_;
   std::vector<CsgObject> csgs_;

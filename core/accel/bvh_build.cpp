@@ -342,7 +342,7 @@ uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& ou
 
 Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
     : kernels_(&bvh_kernels(options.isa)),
-      triangle_count_(static_cast<uint32_t>(prims.triangles.size())),
+      ranges_(prims.ranges()),
       shapes_(prims.shapes),
       instances_(prims.instances),
       csgs_(prims.csgs) {
@@ -363,7 +363,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
     for (uint32_t id = begin; id < end; ++id) {
       const Aabb box = prims.bounds(id);
       // Callers check their input (io reports a located error); this is the last line of defence.
-      const bool finite_triangle = !prims.is_triangle(id) || prims.triangles[id].is_finite();
+      const bool finite_triangle = prims.kind(id) != PrimitiveKind::kTriangle || prims.triangles[id].is_finite();
       if (!finite_triangle || !is_finite(box.lo) || !is_finite(box.hi) || box.empty()) {
         uint32_t first = bad.load();
         while (id < first && !bad.compare_exchange_weak(first, id)) {
@@ -394,7 +394,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   for (uint32_t slot = 0; slot < n; ++slot) {
     const uint32_t id = records[slot].id();
     slots_[slot].id = id;
-    if (prims.is_triangle(id)) slots_[slot].triangle = prims.triangles[id];
+    if (prims.kind(id) == PrimitiveKind::kTriangle) slots_[slot].triangle = prims.triangles[id];
   }
   build_quads();
 }

@@ -46,7 +46,7 @@ std::string Bvh::check_structure() const {
           continue;
         }
         const uint32_t id = quad.id[lane];
-        if (id >= triangle_count_) return "quad lane " + std::to_string(k) + " holds a non-triangle id";
+        if (kind(id) != PrimitiveKind::kTriangle) return "quad lane " + std::to_string(k) + " holds a non-triangle id";
         if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
         if (!contains(item.box, quad_lane(quad, lane).bounds()))
           return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
@@ -60,10 +60,7 @@ std::string Bvh::check_structure() const {
         const uint32_t id = slots_[slot].id;
         if (id >= n) return "slot " + std::to_string(slot) + " holds an invalid id";
         if (++seen[id] > 1) return "primitive " + std::to_string(id) + " is in two leaves";
-        const Aabb box = is_triangle(id)   ? slots_[slot].triangle.bounds()
-                         : is_instance(id) ? instance(id).bounds
-                         : is_csg(id)      ? csg(id).bounds()
-                                           : world_bounds(shape(id));
+        const Aabb box = primitive_bounds(id, slots_[slot]);
         if (!contains(item.box, box)) return "primitive " + std::to_string(id) + " sticks out of its leaf's box";
       }
       continue;

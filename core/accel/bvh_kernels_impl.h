@@ -68,15 +68,14 @@ bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
     const uint32_t id = s.id;
-    if (id >= bvh.instance_begin() && id < bvh.csg_begin()) {
-      found |= intersect_instance(bvh.instance(id), id, r, hit);
-      continue;
-    }
-    // Shapes before CSG solids: a scene without CSG pays one comparison.
     Hit candidate;
-    const bool got = id < bvh.triangle_count()    ? intersect_triangle(s.triangle, r, candidate)
-                     : id < bvh.instance_begin() ? intersect_shape(bvh.shape(id), r, candidate)
-                                                 : intersect_csg(bvh.csg(id), r, candidate);
+    bool got = false;
+    switch (bvh.kind(id)) {
+      case PrimitiveKind::kTriangle: got = intersect_triangle(s.triangle, r, candidate); break;
+      case PrimitiveKind::kShape: got = intersect_shape(bvh.shape(id), r, candidate); break;
+      case PrimitiveKind::kCsg: got = intersect_csg(bvh.csg(id), r, candidate); break;
+      case PrimitiveKind::kInstance: found |= intersect_instance(bvh.instance(id), id, r, hit); continue;
+    }
     candidate.prim = id;
     if (got) found |= take_if_first(candidate, r, hit);
   }
@@ -106,7 +105,7 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       Hit candidate;
-      if (s.id < bvh.triangle_count() && intersect_triangle(s.triangle, r, candidate)) {
+      if (bvh.kind(s.id) == PrimitiveKind::kTriangle && intersect_triangle(s.triangle, r, candidate)) {
         candidate.prim = s.id;
         if (precedes(candidate, hit) && cutout.front_facing(s.id, r.direction) &&
             cutout.covers(s.id, candidate.b1, candidate.b2, r))
@@ -151,22 +150,28 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
     const Bvh::Slot& s = bvh.slots()[slot];
     Hit hit;
     Ray probe = r;
-    if (s.id < bvh.triangle_count()) {
-      if (intersect_triangle(s.triangle, probe, hit)) return true;
-    } else if (s.id < bvh.instance_begin()) {
-      if (intersect_shape(bvh.shape(s.id), probe, hit)) return true;
-    } else if (bvh.is_csg(s.id)) {
-      if (intersect_csg(bvh.csg(s.id), probe, hit)) return true;
-    } else {
-      const MeshInstance& inst = bvh.instance(s.id);
-      const Ray local = object_ray(inst.transform, r);
-      if (!inst.cutout) {
-        if (occluded(*inst.bvh, local)) return true;
-        continue;
+    switch (bvh.kind(s.id)) {
+      case PrimitiveKind::kTriangle:
+        if (intersect_triangle(s.triangle, probe, hit)) return true;
+        break;
+      case PrimitiveKind::kShape:
+        if (intersect_shape(bvh.shape(s.id), probe, hit)) return true;
+        break;
+      case PrimitiveKind::kCsg:
+        if (intersect_csg(bvh.csg(s.id), probe, hit)) return true;
+        break;
+      case PrimitiveKind::kInstance: {
+        const MeshInstance& inst = bvh.instance(s.id);
+        const Ray local = object_ray(inst.transform, r);
+        if (!inst.cutout) {
+          if (occluded(*inst.bvh, local)) return true;
+          break;
+        }
+        // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
+        auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2, local); };
+        if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
+        break;
       }
-      // Behind an alpha mask: the first crossing the mask keeps (both faces block light).
-      auto kept = [&](const Hit& h) { return inst.cutout->covers(h.prim, h.b1, h.b2, local); };
-      if (for_each_primitive_hit(*inst.bvh, local, kept)) return true;
     }
   }
   return false;
@@ -219,7 +224,7 @@ namespace {
   const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
   for (uint32_t slot = first; slot < end; ++slot) {
     const uint32_t id = bvh.slots()[slot].id;
-    if (!bvh.is_instance(id) || bvh.instance(id).cutout) {
+    if (bvh.kind(id) != PrimitiveKind::kInstance || bvh.instance(id).cutout) {
       const uint32_t one = BvhRef::leaf(slot, 1);  // this slot alone, as a leaf of one
       for (unsigned m = lanes; m; m &= m - 1) {
         const int i = __builtin_ctz(m);

@@ -19,7 +19,7 @@ void Bvh::build_quads() {
     const uint32_t first = BvhRef::first(ref), count = BvhRef::count(ref);
     if (count < kMinQuadLeaf) return ref;
     for (uint32_t s = first; s < first + count; ++s)
-      if (slots_[s].id >= triangle_count_) return ref;  // shapes, instances and CSG keep their own tests
+      if (kind(slots_[s].id) != PrimitiveKind::kTriangle) return ref;  // shapes, instances and CSG keep their own tests
     const auto first_quad = static_cast<uint32_t>(quads_.size());
     for (uint32_t s = first; s < first + count; s += 4) {
       TriangleQuad quad{};  // zero edges in the lanes left over: never hit

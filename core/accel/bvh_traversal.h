@@ -185,8 +185,10 @@ bool for_each_primitive_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
     const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
-      const bool stop = s.id < bvh.triangle_count() ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
-                                                    : visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit);
+      // A BVH without instances or CSG solids (for_each_hit's shortcut, a mesh's own).
+      const bool stop = bvh.kind(s.id) == PrimitiveKind::kTriangle
+                            ? visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit)
+                            : visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit);
       if (stop) return true;
     }
     return false;
@@ -206,24 +208,24 @@ bool for_each_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
     for (uint32_t slot = first; slot < end; ++slot) {
       const Bvh::Slot& s = bvh.slots()[slot];
       bool stop = false;
-      if (s.id < bvh.triangle_count()) {
-        stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit);
-      } else if (s.id < bvh.instance_begin()) {
-        stop = visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit);
-      } else if (bvh.is_csg(s.id)) {
-        stop = visit_csg_crossings(bvh.csg(s.id), s.id, leaf_ray, visit);
-      } else {
-        const MeshInstance& inst = bvh.instance(s.id);
-        const uint32_t id = s.id;
-        const Ray local = object_ray(inst.transform, leaf_ray);
-        auto relabel = [&](const Hit& h) {
-          if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2, local)) return false;  // cut out: go on
-          Hit g = h;
-          g.part = h.prim;
-          g.prim = id;
-          return visit(static_cast<const Hit&>(g));
-        };
-        stop = for_each_primitive_hit(*inst.bvh, local, relabel);
+      switch (bvh.kind(s.id)) {
+        case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit); break;
+        case PrimitiveKind::kShape: stop = visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit); break;
+        case PrimitiveKind::kCsg: stop = visit_csg_crossings(bvh.csg(s.id), s.id, leaf_ray, visit); break;
+        case PrimitiveKind::kInstance: {
+          const MeshInstance& inst = bvh.instance(s.id);
+          const uint32_t id = s.id;
+          const Ray local = object_ray(inst.transform, leaf_ray);
+          auto relabel = [&](const Hit& h) {
+            if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2, local)) return false;  // cut out: go on
+            Hit g = h;
+            g.part = h.prim;
+            g.prim = id;
+            return visit(static_cast<const Hit&>(g));
+          };
+          stop = for_each_primitive_hit(*inst.bvh, local, relabel);
+          break;
+        }
       }
       if (stop) return true;
     }

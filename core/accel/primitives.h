@@ -1,6 +1,7 @@
 // Everything a ray can hit, addressed by one 32-bit id: triangles first, then analytic shapes,
-// then mesh instances, then CSG solids. Dispatch is a comparison on the id, not a virtual call. A mesh's own BVH
-// holds only triangles; a scene's top-level BVH holds shapes and instances.
+// then mesh instances, then CSG solids. Dispatch is a switch on the id's kind (PrimitiveRanges,
+// a few comparisons), not a virtual call. A mesh's own BVH holds only triangles; a scene's
+// top-level BVH holds shapes, instances and CSG solids.
 #pragma once
 
 #include <cmath>
@@ -15,26 +16,44 @@
 
 namespace rt {
 
+// The kinds of primitive, declared once; every leaf test switches on them.
+enum class PrimitiveKind : uint8_t { kTriangle, kShape, kInstance, kCsg };
+
+// Where each kind's ids begin: the one rule from an id to its kind, for PrimitiveSet and Bvh.
+struct PrimitiveRanges {
+  uint32_t shape_begin = 0, instance_begin = 0, csg_begin = 0, end = 0;
+
+  PrimitiveKind kind(uint32_t id) const {
+    if (id < shape_begin) return PrimitiveKind::kTriangle;
+    if (id < instance_begin) return PrimitiveKind::kShape;
+    return id < csg_begin ? PrimitiveKind::kInstance : PrimitiveKind::kCsg;
+  }
+};
+
 struct PrimitiveSet {
   std::vector<PackedTriangle> triangles;  // ids [0, triangles.size())
-  std::vector<AnalyticShape> shapes;      // ids [triangles.size(), shape_end())
-  std::vector<MeshInstance> instances;    // ids [shape_end(), instance_end())
-  std::vector<CsgObject> csgs;            // ids [instance_end(), size())
+  std::vector<AnalyticShape> shapes;      // then the shapes,
+  std::vector<MeshInstance> instances;    // the instances,
+  std::vector<CsgObject> csgs;            // and the CSG solids
 
-  uint32_t shape_end() const { return static_cast<uint32_t>(triangles.size() + shapes.size()); }
-  uint32_t instance_end() const { return shape_end() + static_cast<uint32_t>(instances.size()); }
-  uint32_t size() const { return instance_end() + static_cast<uint32_t>(csgs.size()); }
-  bool is_triangle(uint32_t id) const { return id < triangles.size(); }
-  bool is_instance(uint32_t id) const { return id >= shape_end() && id < instance_end(); }
-  bool is_csg(uint32_t id) const { return id >= instance_end(); }
-  const AnalyticShape& shape(uint32_t id) const { return shapes[id - triangles.size()]; }
-  const MeshInstance& instance(uint32_t id) const { return instances[id - shape_end()]; }
-  const CsgObject& csg(uint32_t id) const { return csgs[id - instance_end()]; }
+  PrimitiveRanges ranges() const {
+    const auto t = static_cast<uint32_t>(triangles.size()), s = static_cast<uint32_t>(shapes.size());
+    const auto i = static_cast<uint32_t>(instances.size()), c = static_cast<uint32_t>(csgs.size());
+    return PrimitiveRanges{t, t + s, t + s + i, t + s + i + c};
+  }
+  uint32_t size() const { return ranges().end; }
+  PrimitiveKind kind(uint32_t id) const { return ranges().kind(id); }
+  const AnalyticShape& shape(uint32_t id) const { return shapes[id - ranges().shape_begin]; }
+  const MeshInstance& instance(uint32_t id) const { return instances[id - ranges().instance_begin]; }
+  const CsgObject& csg(uint32_t id) const { return csgs[id - ranges().csg_begin]; }
   Aabb bounds(uint32_t id) const {
-    return is_triangle(id)   ? triangles[id].bounds()
-           : is_instance(id) ? instance(id).bounds
-           : is_csg(id)      ? csg(id).bounds()
-                             : world_bounds(shape(id));
+    switch (kind(id)) {
+      case PrimitiveKind::kTriangle: return triangles[id].bounds();
+      case PrimitiveKind::kShape: return world_bounds(shape(id));
+      case PrimitiveKind::kInstance: return instance(id).bounds;
+      case PrimitiveKind::kCsg: return csg(id).bounds();
+    }
+    return {};
   }
 };
 
@@ -46,9 +65,13 @@ PrimitiveSet make_primitive_set(const std::vector<TriangleMesh>& meshes, std::ve
 // Intersects triangle, shape or CSG solid `id` (not an instance: see Bvh); on a hit inside the
 // ray's interval, fills `hit` and narrows ray.tmax.
 inline bool intersect_primitive(const PrimitiveSet& prims, uint32_t id, Ray& ray, Hit& hit) {
-  const bool found = prims.is_triangle(id) ? intersect_triangle(prims.triangles[id], ray, hit)
-                     : prims.is_csg(id)    ? intersect_csg(prims.csg(id), ray, hit)
-                                           : intersect_shape(prims.shape(id), ray, hit);
+  bool found = false;
+  switch (prims.kind(id)) {
+    case PrimitiveKind::kTriangle: found = intersect_triangle(prims.triangles[id], ray, hit); break;
+    case PrimitiveKind::kShape: found = intersect_shape(prims.shape(id), ray, hit); break;
+    case PrimitiveKind::kCsg: found = intersect_csg(prims.csg(id), ray, hit); break;
+    case PrimitiveKind::kInstance: break;  // the Bvh's to walk
+  }
   if (found) {
     hit.prim = id;
     ray.tmax = hit.t;

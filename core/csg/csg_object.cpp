@@ -238,12 +238,8 @@ bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
     medium = s.medium;
   }
   if (!found) return false;
-  hit.t = found->t;
-  hit.part = found->part;
-  hit.b1 = found->b1;
-  hit.b2 = found->b2;
-  hit.operand = csg_operand(found->surface, leaving);
-  hit.medium = medium;
+  const uint32_t prim = hit.prim;  // intersect_csg leaves prim to its caller
+  hit = csg_hit(*found, leaving, medium, prim);
   return true;
 }
 

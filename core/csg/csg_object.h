@@ -82,6 +82,20 @@ inline uint32_t csg_operand(uint32_t surface, bool leaving) { return surface * 2
 inline uint32_t csg_surface_index(const Hit& hit) { return hit.operand / 2u; }
 inline bool csg_leaving(const Hit& hit) { return (hit.operand & 1u) != 0; }
 
+// The hit record of boundary `b` of solid `id` (the one place a CSG hit is built): entering or
+// leaving the solid there, `medium` the material inside the span.
+inline Hit csg_hit(const CsgBoundary& b, bool leaving, uint32_t medium, uint32_t id) {
+  Hit hit;
+  hit.t = b.t;
+  hit.prim = id;
+  hit.part = b.part;
+  hit.b1 = b.b1;
+  hit.b2 = b.b2;
+  hit.operand = csg_operand(b.surface, leaving);
+  hit.medium = medium;
+  return hit;
+}
+
 // The nearest boundary of the solid in (ray.tmin, ray.tmax); on a hit fills `hit` (not its prim)
 // and leaves ray.tmax alone.
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit);
@@ -104,15 +118,8 @@ bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visi
     for (int leaving = 0; leaving < 2; ++leaving) {
       const CsgBoundary& b = leaving ? s.out : s.in;
       if (!(b.t < ray.tmax) || !csg_boundary_in_reach(csg, b, ray)) continue;
-      Hit hit;
-      hit.t = b.t;
-      hit.prim = id;
-      hit.part = b.part;
-      hit.b1 = b.b1;
-      hit.b2 = b.b2;
-      hit.operand = csg_operand(b.surface, leaving != 0);
-      hit.medium = s.medium;
-      if (visit(static_cast<const Hit&>(hit))) return true;
+      const Hit hit = csg_hit(b, leaving != 0, s.medium, id);
+      if (visit(hit)) return true;
     }
   }
   return false;

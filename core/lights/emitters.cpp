@@ -57,16 +57,16 @@ Emitters::Emitters(const Bvh& bvh, const SceneAssets& assets) {
     add(e);
   };
   for (uint32_t id = 0; id < bvh.primitive_count(); ++id) {
-    if (bvh.is_triangle(id)) continue;  // a one-level BVH's loose triangles carry no material
-    if (bvh.is_csg(id)) {
-      const CsgObject& csg = bvh.csg(id);
-      for (uint32_t k = 0; k < csg.surfaces().size(); ++k)
-        if (!csg.surface(k).is_mesh) add_shape(Kind::kCsgOperand, id, k, csg.surface(k).shape);
-      continue;
-    }
-    if (!bvh.is_instance(id)) {
-      add_shape(Kind::kShape, id, 0, bvh.shape(id));
-      continue;
+    switch (bvh.kind(id)) {
+      case PrimitiveKind::kTriangle: continue;  // a one-level BVH's loose triangles carry no material
+      case PrimitiveKind::kShape: add_shape(Kind::kShape, id, 0, bvh.shape(id)); continue;
+      case PrimitiveKind::kCsg: {
+        const CsgObject& csg = bvh.csg(id);
+        for (uint32_t k = 0; k < csg.surfaces().size(); ++k)
+          if (!csg.surface(k).is_mesh) add_shape(Kind::kCsgOperand, id, k, csg.surface(k).shape);
+        continue;
+      }
+      case PrimitiveKind::kInstance: break;
     }
     const MeshInstance& inst = bvh.instance(id);
     if (inst.material >= assets.materials.size() || inst.mesh >= assets.meshes.size()) continue;

@@ -204,11 +204,11 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own closest hit, on eve
         }
         ++hits;
         // A twin's hit: the same triangle under the next id, which must lose.
-        const bool twin = bvh.is_triangle(h.prim) && h.prim + 1 < bvh.triangle_count() &&
+        const bool twin = bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim + 1 < bvh.triangle_count() &&
                           std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim + 1],
                                       sizeof(PackedTriangle)) == 0;
         twins += twin ? 1 : 0;
-        const bool lost = bvh.is_triangle(h.prim) && h.prim > 0 &&
+        const bool lost = bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim > 0 &&
                           std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim - 1],
                                       sizeof(PackedTriangle)) == 0;
         if (lost) ++differences;  // the twin with the higher id won

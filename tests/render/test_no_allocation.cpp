@@ -182,8 +182,8 @@ TEST_CASE(
     Hit h;
     const bool hit = scene.intersect(r, h);
     hits += hit;
-    masked += hit && scene.bvh.is_instance(h.prim) && scene.bvh.instance(h.prim).cutout != nullptr;
-    solid += hit && scene.bvh.is_csg(h.prim);
+    masked += hit && scene.bvh.kind(h.prim) == PrimitiveKind::kInstance && scene.bvh.instance(h.prim).cutout != nullptr;
+    solid += hit && scene.bvh.kind(h.prim) == PrimitiveKind::kCsg;
     hits += scene.occluded(r);
   }
   t.render();
