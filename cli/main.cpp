@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("-o,--output", render.output,
                          "Output .png, .exr, .jpg, NAME_####.png, NAME_####.exr or .gif (default: <scene name>.png, or "
                          ".gif for --frames A-B)");
-  render_cmd->add_option("--threads", render.threads, "Worker threads (default: all hardware threads)")
+  render_cmd->add_option("--threads", render.threads, "Worker threads (default: one per CPU this process may use)")
       ->check(whole_number(1, 1024));
   render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
       ->check(whole_number(1, kMaxImageSide));
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--aa-positions", render.aa_positions,
                          "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
   render_cmd->add_flag("--aa-debug", render.aa_debug,
-                       "Also write NAME.aa-refined.png (refined pixels red) and NAME.aa-depth.png (refinement depth)");
+                       "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
   CLI::Option* frames = render_cmd->add_option(
       "--frames", render.frames,
       "Render frames A-B, every S-th frame A-BxS, or a list 1,5,9-12 of the scene's animation: -o NAME.gif (looping "

@@ -31,7 +31,8 @@ struct AntialiasSettings {
   SamplePositions positions = SamplePositions::kCorners;
 };
 
-// Switches for comparisons (README shows the bump scene both ways; --no-textures measures their cost).
+// Switches for comparisons (docs/rendering.md, "Textures, bump and normal maps", shows the bump
+// scene both ways and measures what textures and bumps cost).
 struct SurfaceDetailSwitches {
   bool textures = true;          // false (--no-textures): colour and specular textures are not read
   bool bumps = true;             // false (--no-bumps): bump and normal maps leave the normal as it is
@@ -59,7 +60,7 @@ struct RenderSettings {
   int height = 480;
   int max_depth = 5;     // bounces after the camera ray (reflection/refraction), >= 0
   uint64_t seed = 0;     // keys every random stream, with frame, pixel and sample index
-  unsigned threads = 0;  // 0 = one per hardware thread
+  unsigned threads = 0;  // 0 = one per CPU the process may use (core/thread_count.h)
   std::string integrator = "whitted";
   AntialiasSettings antialias;
   int tile_size = 32;       // pixels per tile side; the image never depends on it

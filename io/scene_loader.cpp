@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <new>
 
-#include "io/build/scene_builder.h"
+#include "io/assemble/scene_builder.h"
 #include "io/json/document.h"
 #include "io/json/locate.h"
 #include "io/json/reader.h"

@@ -33,7 +33,7 @@ std::set<std::string> with(std::set<std::string> own, const std::set<std::string
 
 // Every layer below cli/, and `own`.
 std::set<std::string> with_below(std::set<std::string> own) {
-  own.insert({"materials/", "core/render/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/build/",
+  own.insert({"materials/", "core/render/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/assemble/",
               "io/"});
   return with(own, kCore);
 }
@@ -64,8 +64,8 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"io/image/", with({"io/base/", "io/image/"}, kCore)},
       {"io/gltf/", with({"io/base/", "io/json/", "io/image/", "io/gltf/"}, kCore)},
       {"io/scene/", with({"io/base/", "io/json/", "io/image/", "io/scene/"}, kCore)},
-      {"io/build/", with({"io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/build/"}, kCore)},
-      {"io/", with({"io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/build/", "io/"}, kCore)},
+      {"io/assemble/", with({"io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/assemble/"}, kCore)},
+      {"io/", with({"io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/assemble/", "io/"}, kCore)},
       // cli/: a folder and a library per job, over everything below (cli/CMakeLists.txt).
       {"cli/common/", with_below({"cli/common/"})},
       {"cli/frames/", with_below({"cli/common/", "cli/frames/"})},

@@ -124,7 +124,7 @@ int run_bench(const BenchCommand& cmd) {
     std::fprintf(stderr, "rtcli bench: error: %s\n", error.c_str());
     return kExitFailure;
   }
-  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u hardware threads; BVH kernels: %s (of %s)\n",
+  std::printf("model: %s, %zu triangles, %zu analytic shapes; %u usable CPUs; BVH kernels: %s (of %s)\n",
               model->name.c_str(), prims.triangles.size(), prims.shapes.size(), all, isa_name(*isa),
               supported_isa_names().c_str());
   std::printf("rays: %s:", cmd.rays.empty() ? "generated" : cmd.rays.c_str());

@@ -21,7 +21,7 @@
 #include "cli/common/report.h"
 #include "cli/common/scene_loading.h"
 #include "io/base/input_file.h"
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "cli/frames/frame_list.h"
 #include "io/scene_loader.h"
 

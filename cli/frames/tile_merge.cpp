@@ -109,9 +109,9 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
       problems.push_back(error);
       continue;
     }
-    const ExrLayer* colour = tile->layer("");
-    if (!colour || colour->channels.size() < 3 || colour->channels[0] != "R" || colour->channels[1] != "G" ||
-        colour->channels[2] != "B") {
+    const ExrLayer* color = tile->layer("");
+    if (!color || color->channels.size() < 3 || color->channels[0] != "R" || color->channels[1] != "G" ||
+        color->channels[2] != "B") {
       problems.push_back(path + ": expected the colour channels R, G, B");
       continue;
     }

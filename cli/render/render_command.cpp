@@ -179,7 +179,7 @@ bool finish_outputs(const RenderOutputs& outputs, std::vector<FrameSink>& sinks,
   if (!outputs.samples_map.empty() && !write(outputs.samples_map, sample_count_heat_map(film, most_samples)))
     return false;
   return outputs.aa_refined.empty() ||
-         (write(outputs.aa_refined, refined_pixels_in_red(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
+         (write(outputs.aa_refined, refined_pixels_marked(film)) && write(outputs.aa_depth, refinement_heat_map(film)));
 }
 
 // The camera's stereo settings, --stereo's mode replacing the scene's; nothing (after saying why)
@@ -275,7 +275,7 @@ int run_render(const RenderCommand& cmd) {
       std::printf("wrote %s (samples per pixel: black 0, blue, green, orange, white %d)\n",
                   outputs->samples_map.c_str(), most_samples);
     if (job->aa_debug) {
-      std::printf("wrote %s (the image, refined pixels in red)\n", outputs->aa_refined.c_str());
+      std::printf("wrote %s (the image, refined pixels in green)\n", outputs->aa_refined.c_str());
       std::printf("wrote %s (refinement depth: black 0, blue 1, green 2, orange 3, white 4)\n",
                   outputs->aa_depth.c_str());
     }

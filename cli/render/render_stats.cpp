@@ -1,7 +1,7 @@
 #include "cli/render/render_stats.h"
 
 #include "core/render/integrator.h"
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/json/document.h"
 
 namespace rt {

@@ -100,7 +100,7 @@ Vec3 Environment::from_uv(Vec2 uv) const {
 }
 
 Vec3 Environment::radiance(Vec3 direction) const {
-  if (!image_) return colour_;
+  if (!image_) return color_;
   return intensity_ * image_->lookup(to_uv(direction));
 }
 

@@ -46,11 +46,11 @@ class EnvironmentImage {
 class Environment {
  public:
   Environment() = default;  // black
-  explicit Environment(Vec3 colour) : colour_(colour) {}
+  explicit Environment(Vec3 color) : color_(color) {}
   Environment(std::shared_ptr<const EnvironmentImage> image, float intensity, float rotate_degrees);
 
   bool is_image() const { return image_ != nullptr; }
-  Vec3 colour() const { return colour_; }  // a uniform environment's radiance
+  Vec3 color() const { return color_; }  // a uniform environment's radiance
   // Radiance arriving from `direction` (any length).
   Vec3 radiance(Vec3 direction) const;
   // For an image: a direction drawn by luminance, its radiance and density per unit solid angle.
@@ -64,7 +64,7 @@ class Environment {
   Vec3 from_uv(Vec2 uv) const;
 
  private:
-  Vec3 colour_{0.0f};
+  Vec3 color_{0.0f};
   std::shared_ptr<const EnvironmentImage> image_;
   float intensity_ = 1.0f;
   float rotate_ = 0.0f;  // radians

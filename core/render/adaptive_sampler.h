@@ -1,7 +1,7 @@
 // Adaptive anti-aliasing, the proposal's Whitted/Mitchell scheme. A pixel is first sampled at
 // its four corners; a cell whose samples differ by more than the threshold is split into four
 // and each quarter is treated the same way, down to max_depth; the pixel is the area-weighted
-// average of its cells. README ("Anti-aliasing") describes the contrast measure and the keying.
+// average of its cells. docs/rendering.md ("Anti-aliasing") describes the contrast measure and the keying.
 //
 // positions = corners: samples lie on a lattice of 2^max_depth x 2^max_depth cells per pixel,
 // and a lattice point is traced once however many cells, pixels and tiles it touches. Within a

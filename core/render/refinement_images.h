@@ -9,16 +9,21 @@
 namespace rt {
 
 // Heat-map colour of each refinement depth 0..kMaxAdaptiveDepth (linear RGB): black, blue,
-// green, orange, white. Fixed, so that maps of different renders compare (README legend).
+// green, orange, white. Fixed, so that maps of different renders compare (the legend:
+// docs/command-line.md, --aa-debug).
 inline constexpr std::array<Vec3, 5> kRefinementColors = {
     Vec3(0.0f), Vec3(0.01f, 0.06f, 0.8f), Vec3(0.02f, 0.5f, 0.03f), Vec3(1.0f, 0.35f, 0.0f), Vec3(1.0f)};
 
-// The rendered colours, with every refined pixel (depth > 0) pure red.
-inline Image refined_pixels_in_red(const Film& film) {
+// What marks a refined pixel: pure green, which red objects (the anti-aliasing scene's poles), blue
+// skies and grey floors do not hide.
+inline constexpr Vec3 kRefinedMark{0.0f, 1.0f, 0.0f};
+
+// The rendered colours, with every refined pixel (depth > 0) in kRefinedMark.
+inline Image refined_pixels_marked(const Film& film) {
   Image out = film.color;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x)
-      if (film.depth[film.index(x, y)] > 0) out.at(x, y) = Vec3(1.0f, 0.0f, 0.0f);
+      if (film.depth[film.index(x, y)] > 0) out.at(x, y) = kRefinedMark;
   return out;
 }
 

@@ -1,7 +1,7 @@
 // Whitted ray tracing: direct light at the closest hit, plus mirror reflection, refraction with
 // the Fresnel split (Schlick) and the proposal's glossy reflection, traced recursively up to
-// render.max_depth bounces. The rules (weights, nesting, glossy sampling) are in README,
-// "Reflection, refraction and glossy reflection".
+// render.max_depth bounces. The rules (weights, nesting, glossy sampling) are in
+// docs/rendering.md, "Reflection, refraction and glossy reflection".
 #pragma once
 
 #include "core/render/integrator.h"

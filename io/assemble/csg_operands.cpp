@@ -1,4 +1,4 @@
-#include "io/build/csg_operands.h"
+#include "io/assemble/csg_operands.h"
 
 namespace rt {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/build/model_library.h"
+#include "io/assemble/model_library.h"
 
 #include <cstdio>
 #include <limits>

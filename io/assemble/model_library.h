@@ -12,7 +12,7 @@
 #include "core/scene_assets.h"
 #include "io/base/load_options.h"
 #include "io/base/reporter.h"
-#include "io/build/texture_library.h"
+#include "io/assemble/texture_library.h"
 #include "io/gltf/loader.h"
 #include "io/scene/description.h"
 

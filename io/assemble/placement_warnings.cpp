@@ -1,4 +1,4 @@
-#include "io/build/placement_warnings.h"
+#include "io/assemble/placement_warnings.h"
 
 #include <algorithm>
 #include <array>

@@ -1,14 +1,14 @@
-#include "io/build/scene_builder.h"
+#include "io/assemble/scene_builder.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/thread_count.h"
-#include "io/build/csg_operands.h"
-#include "io/build/model_library.h"
-#include "io/build/placement_warnings.h"
-#include "io/build/scene_warnings.h"
-#include "io/build/texture_library.h"
+#include "io/assemble/csg_operands.h"
+#include "io/assemble/model_library.h"
+#include "io/assemble/placement_warnings.h"
+#include "io/assemble/scene_warnings.h"
+#include "io/assemble/texture_library.h"
 #include "io/image/environment_file.h"
 #include "io/gltf/loader.h"
 #include "io/json/locate.h"

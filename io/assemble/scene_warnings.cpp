@@ -1,4 +1,4 @@
-#include "io/build/scene_warnings.h"
+#include "io/assemble/scene_warnings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,7 +81,7 @@ void warn_unlit_or_empty(const Scene& scene, bool path_traced, const std::vector
   }
   const bool emissive = std::any_of(scene.materials().begin(), scene.materials().end(),
                                     [](const Material& m) { return glm::dot(m.emission, Vec3(1.0f)) > 0.0f; });
-  const bool sky = scene.background.is_image() || glm::dot(scene.background.colour(), Vec3(1.0f)) > 0.0f;
+  const bool sky = scene.background.is_image() || glm::dot(scene.background.color(), Vec3(1.0f)) > 0.0f;
   if (scene.lights.empty() && glm::dot(scene.ambient, Vec3(1.0f)) <= 0.0f && !emissive && !(sky && path_traced)) {
     if (!sky)
       report.warning("",

@@ -1,4 +1,4 @@
-#include "io/build/texture_library.h"
+#include "io/assemble/texture_library.h"
 
 namespace rt {
 

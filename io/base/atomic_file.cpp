@@ -1,4 +1,4 @@
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 // offers (io does not link the renderer; cli passes integrators().names()
 // and pixel_samplers().names()), and the limits on what
 // a file may ask for. The limits keep a hostile or broken file from exhausting memory or time:
-// everything is checked against them before it is allocated. README.md ("Limits") documents
+// everything is checked against them before it is allocated. docs/errors-and-limits.md ("Limits") documents
 // the defaults; the fuzzers run with smaller ones.
 #pragma once
 
@@ -31,7 +31,7 @@ struct LoadLimits {
   // file's own paths are never restricted: the user wrote them.
   bool outside_files = false;
   // Not a limit but a share of the machine: how many threads decode a glTF file's images
-  // (0: all hardware threads; rtcli passes --threads).
+  // (0: one per CPU the process may use; rtcli passes --threads).
   unsigned decode_threads = 0;
 };
 
@@ -45,7 +45,7 @@ struct LimitUsage {
 };
 
 struct LoadOptions {
-  unsigned threads = 0;                             // for the BVH build; 0 = all hardware threads
+  unsigned threads = 0;                             // for the BVH build; 0 = one per usable CPU
   Isa isa = best_isa();                             // the BVH kernels the scene's BVHs use
   std::vector<std::string> integrators{"whitted"};  // valid values of /render/integrator
   std::vector<std::string> pixel_samplers{"none"};  // valid values of /render/antialias/mode

@@ -1,5 +1,5 @@
 // What a glTF import gives the rest of io/: plain description records, shared by the loader and
-// the files it calls (animation, images, node parts) and by io/build/. Its own header, at the
+// the files it calls (animation, images, node parts) and by io/assemble/. Its own header, at the
 // bottom of io/gltf/, so that none of those includes the loader above it.
 #pragma once
 

@@ -20,7 +20,7 @@
 #include <stdexcept>
 
 #include "io/base/input_file.h"
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/image/exr_structure.h"
 
 namespace rt {
@@ -254,12 +254,12 @@ std::optional<ExrImage> read_exr_rgb(const std::vector<unsigned char>& bytes, co
     image.width = static_cast<int>(width);
     image.height = static_cast<int>(height);
     image.window = PixelWindow{0, 0, image.width, image.height};
-    ExrLayer& colour = image.layers.emplace_back(ExrLayer{"", {"R", "G", "B"}, {}});
-    colour.values.reserve(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    ExrLayer& color = image.layers.emplace_back(ExrLayer{"", {"R", "G", "B"}, {}});
+    color.values.reserve(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
     for (long y = 0; y < height; ++y)
       for (long x = 0; x < width; ++x) {
         const Imf::Rgba& p = pixels[y][x];
-        for (const Imath::half h : {p.r, p.g, p.b}) colour.values.push_back(static_cast<float>(h));
+        for (const Imath::half h : {p.r, p.g, p.b}) color.values.push_back(static_cast<float>(h));
       }
     return image;
   } catch (const std::exception& e) {

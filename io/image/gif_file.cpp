@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/image/color_quantiser.h"
 
 namespace rt {

@@ -1,6 +1,6 @@
 // Animated GIF output with giflib: each frame gets its own palette (io/image/color_quantiser.h),
 // frames loop for ever (the NETSCAPE2.0 extension every browser honours), and the file is
-// written like PNGs: to a temporary name, then renamed into place (io/image/atomic_file.h).
+// written like PNGs: to a temporary name, then renamed into place (io/base/atomic_file.h).
 #pragma once
 
 #include <cstdint>

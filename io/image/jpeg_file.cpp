@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/image/jpeg_errors.h"
 
 namespace rt {

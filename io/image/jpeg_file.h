@@ -14,7 +14,7 @@ namespace rt {
 // (`error` says why).
 std::vector<uint8_t> encode_jpeg(const Rgb8Image& image, int quality, std::string& error);
 
-// Writes it through a temporary file and an atomic rename (io/image/atomic_file.h).
+// Writes it through a temporary file and an atomic rename (io/base/atomic_file.h).
 bool write_jpeg(const std::string& path, const Rgb8Image& image, std::string& error, int quality = 92);
 
 }  // namespace rt

@@ -12,7 +12,7 @@ namespace rt {
 // (io/base/input_file.h) and at most kMaxPixels pixels (the largest image rtcli renders).
 std::optional<Rgb8Image> read_png(const std::string& path, std::string& error);
 
-// Writes a PNG through a temporary file and an atomic rename (io/image/atomic_file.h), encoding on up
+// Writes a PNG through a temporary file and an atomic rename (io/base/atomic_file.h), encoding on up
 // to `threads` threads (the file's bytes do not depend on it).
 bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads = 1);
 

@@ -1,6 +1,6 @@
 // Scene file (JSON) -> SceneDescription. Checks types, ranges, names and local transforms;
 // collects every problem in `diags` and returns nothing if there was any error.
-// The format is described by schemas/scene.schema.json and README.md.
+// The format is described by schemas/scene.schema.json and docs/scene-format.md.
 #pragma once
 
 #include <optional>

@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/json/document.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/run_rtcli.h"

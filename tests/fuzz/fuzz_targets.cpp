@@ -20,7 +20,7 @@
 #include "core/render/pixel_sampler.h"
 #include "core/render/renderer.h"
 #include "core/render/stereo_images.h"
-#include "io/build/scene_builder.h"
+#include "io/assemble/scene_builder.h"
 #include "io/gltf/loader.h"
 #include "io/image/texture_file.h"
 #include "io/json/document.h"

@@ -1,7 +1,7 @@
 // The bad-scene corpus (tests/data/bad/): one file per class of error. Each is rejected by the
 // loader (what `rtcli render` runs) and by the validator (`rtcli validate`) with its expected
 // JSON pointer and message, and, where a JSON Schema can express the rule, by the schema alone.
-// Every shipped scene passes all three (tests/io/test_schema.cpp and below).
+// Every shipped scene passes all three (tests/io/scene/test_schema.cpp and below).
 #include <filesystem>
 
 #include <catch2/catch.hpp>

@@ -114,7 +114,9 @@ def figure(name, image, full, alt, caption, stats, width):
     height = round(width * stats["height"] / stats["width"])
     if stats.get("stereo") in ("side_by_side", "top_bottom"):
         height *= 2 if stats["stereo"] == "top_bottom" else 1
-    return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d"></a>'
+    # Lazy: a visitor on a phone loads the images (and the GIFs' megabytes) as they scroll to them.
+    return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d" loading="lazy" '
+            'decoding="async"></a>'
             '<figcaption><strong>%s</strong><br><span class="stats">%s · <a href="gallery/%s.json">stats</a>'
             '</span></figcaption></figure>') % (
         name, full, image, html.escape(alt, quote=True), width, height, html.escape(caption),
@@ -148,9 +150,9 @@ def section_html(section, figures, widths):
     if scenes:
         out.append('<p class="scene">%s: %s</p>' % ("Scenes" if len(scenes) > 1 else "Scene",
                                                     ", ".join("<code>%s</code>" % html.escape(s) for s in scenes)))
-    for path, heading in section.get("tables", []):
+    for path, heading, count in section.get("tables", []):
         out.append('<p class="scene">From <code>%s</code>, "%s":</p>' % (html.escape(path), html.escape(heading.lstrip("#").strip())))
-        out.append(tables_html(ROOT, path, heading))
+        out.append(tables_html(ROOT, path, heading, count))
     compare = section.get("compare")
     rest = [f for name, f in figures.items() if not compare or name not in compare]
     grid = ['<div class="grid">%s</div>' % "".join(rest)] if rest else []

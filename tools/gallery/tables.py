@@ -1,6 +1,6 @@
 """Markdown tables lifted from the project's docs into the gallery, so that a figure is written in
 one place (docs/benchmark.md, say) and the page shows the same. Only what the docs' tables use:
-header, separator, rows; `code` in cells."""
+header, separator, rows; `code` and [links](target) in cells and paragraphs."""
 import html
 import os
 import re
@@ -10,9 +10,21 @@ def _cells(line):
     return [c.strip() for c in line.strip().strip("|").split("|")]
 
 
+def _links(text):
+    """Escaped text with its Markdown links [words](target) as HTML links (the targets are relative
+    to docs/, where the page is too)."""
+    parts = re.split(r"\[([^\]]*)\]\(([^)\s]*)\)", text)
+    out = []
+    for i in range(0, len(parts), 3):
+        out.append(html.escape(parts[i]))
+        if i + 2 < len(parts):
+            out.append('<a href="%s">%s</a>' % (html.escape(parts[i + 2], quote=True), html.escape(parts[i + 1])))
+    return "".join(out)
+
+
 def _inline(text):
     parts = re.split(r"`([^`]*)`", text)
-    return "".join(html.escape(p) if i % 2 == 0 else "<code>%s</code>" % html.escape(p) for i, p in enumerate(parts))
+    return "".join(_links(p) if i % 2 == 0 else "<code>%s</code>" % html.escape(p) for i, p in enumerate(parts))
 
 
 def tables_under(root, path, heading):
@@ -51,9 +63,10 @@ def tables_under(root, path, heading):
     return out
 
 
-def tables_html(root, path, heading):
+def tables_html(root, path, heading, count=None):
+    """The first `count` tables under the heading (all of them: None), each with its paragraph."""
     out = []
-    for lead, header, rows in tables_under(root, path, heading):
+    for lead, header, rows in tables_under(root, path, heading)[:count]:
         out.append('<p class="table-lead">%s</p>' % _inline(lead.rstrip(":")))
         out.append('<div class="table"><table><thead><tr>%s</tr></thead><tbody>%s</tbody></table></div>' % (
             "".join("<th>%s</th>" % _inline(h) for h in header),

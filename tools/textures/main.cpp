@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/image/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/image/hdr_file.h"
 #include "io/image/png_file.h"
 #include "tools/textures/patterns.h"

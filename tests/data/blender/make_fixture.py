@@ -1,6 +1,6 @@
 # Builds the Blender test fixture from Blender's factory scene and exports it with
 # tools/blender_export.py, exactly as a user would export their own scene. CI does not run it;
-# the files it writes are checked in (tests/io/test_blender_fixture.cpp loads them):
+# the files it writes are checked in (tests/io/gltf/test_blender_fixture.cpp loads them):
 #
 #   apt-get install blender python3-numpy
 #   blender --background --factory-startup --python tests/data/blender/make_fixture.py -- tests/data/blender/fixture.glb

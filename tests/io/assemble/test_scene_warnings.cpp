@@ -2,7 +2,7 @@
 // reaches nothing, a camera inside a shape. Warnings, the same from render's loader and validate.
 #include <catch2/catch.hpp>
 
-#include "io/build/scene_warnings.h"
+#include "io/assemble/scene_warnings.h"
 #include "io/scene_loader.h"
 #include "io/scene_validator.h"
 #include "tests/support/loading.h"

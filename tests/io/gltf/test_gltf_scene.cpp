@@ -326,7 +326,7 @@ TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's wor
   REQUIRE(model);
   CHECK(model->settings.antialias.mode == "adaptive");  // as a scene file without "antialias"
   CHECK(model->scene.ambient == Vec3(0.0f));
-  CHECK(model->scene.background.colour() == Vec3(kModelBackground));
+  CHECK(model->scene.background.color() == Vec3(kModelBackground));
   CHECK(rt::test::load_scene_text("no_aa_block.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
       "materials": {"m": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "m"}]})")
             .settings.antialias.mode == "adaptive");
@@ -337,7 +337,7 @@ TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's wor
   const auto lifted = load_scene(path, options, diags);
   REQUIRE(lifted);
   CHECK(lifted->scene.ambient == Vec3(0.1f, 0.2f, 0.3f));
-  CHECK(lifted->scene.background.colour() == Vec3(0.5f));
+  CHECK(lifted->scene.background.color() == Vec3(0.5f));
   const auto scene = load_scene(rt::test::source_path("scenes/default.json"), options, diags);
   REQUIRE(scene);
   CHECK(scene->scene.ambient == Vec3(0.1f, 0.2f, 0.3f));
