@@ -6,20 +6,20 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench/bench_command.h"
-#include "cli/frames/encode_command.h"
-#include "cli/farm/farm_command.h"
-#include "io/image/gif_file.h"
-#include "cli/frames/merge_command.h"
 #include "cli/common/exit_codes.h"
 #include "cli/common/number_checks.h"
-#include "cli/render/render_command.h"
 #include "cli/common/suggestions.h"
 #include "cli/common/validate_command.h"
+#include "cli/farm/farm_command.h"
+#include "cli/frames/encode_command.h"
+#include "cli/frames/merge_command.h"
+#include "cli/render/render_command.h"
 #include "core/accel/isa.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render_settings.h"
 #include "core/stereo.h"
+#include "io/image/gif_file.h"
 
 int main(int argc, char** argv) {
   using namespace rt;
@@ -81,7 +81,8 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--samples-debug", render.samples_debug,
                        "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
   render_cmd->add_option("--tone-map", render.tone_map, kToneMaps.help() + " (overrides the scene)");
-  render_cmd->add_option("--aa", render.aa_mode, "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
+  render_cmd->add_option("--aa", render.aa_mode,
+                         "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
   render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
       ->check(whole_number(1, kMaxSamplesPerAxis));
   render_cmd
@@ -92,8 +93,9 @@ int main(int argc, char** argv) {
       ->check(whole_number(0, kMaxAdaptiveDepth));
   render_cmd->add_option("--aa-positions", render.aa_positions,
                          "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
-  render_cmd->add_flag("--aa-debug", render.aa_debug,
-                       "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
+  render_cmd->add_flag(
+      "--aa-debug", render.aa_debug,
+      "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
   CLI::Option* frames = render_cmd->add_option(
       "--frames", render.frames,
       "Render frames A-B, every S-th frame A-BxS, or a list 1,5,9-12 of the scene's animation: -o NAME.gif (looping "
@@ -114,16 +116,17 @@ int main(int argc, char** argv) {
       ->add_option("--ambient", render.ambient,
                    "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
-  render_cmd->add_option("--stereo", render.stereo,
-                         "Stereo from the camera's two eyes: " + kStereoModes.help() +
-                             " (replaces the scene's camera.stereo mode)");
+  render_cmd->add_option(
+      "--stereo", render.stereo,
+      "Stereo from the camera's two eyes: " + kStereoModes.help() + " (replaces the scene's camera.stereo mode)");
   render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   const char* outside_help =
       "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
       "it, so that a downloaded model cannot show other files)";
   render_cmd->add_flag("--allow-outside-files", render.allow_outside_files, outside_help);
   CLI::Option* crop = render_cmd->add_option(
-      "--crop", render.crop, "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
+      "--crop", render.crop,
+      "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
   render_cmd
       ->add_option("--tile", render.tile,
                    "Render band I of N equal bands of rows (0-based), or auto: this Slurm array task's band")
@@ -166,7 +169,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--repeats", bench.repeats, "Timed runs of each figure, after a warm-up; the median is shown")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
-  bench_cmd->add_option("--rays", bench.rays, "Replay the ray sets in FILE (from --save-rays) instead of generating them");
+  bench_cmd->add_option("--rays", bench.rays,
+                        "Replay the ray sets in FILE (from --save-rays) instead of generating them");
   bench_cmd->add_option("--save-rays", bench.save_rays,
                         "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
   bench_cmd->add_option("--isa", bench.isa, isa_help);
@@ -196,12 +200,16 @@ int main(int argc, char** argv) {
   farm_cmd->require_subcommand(1);
   FarmSlurmCommand farm_slurm;
   CLI::App* slurm_cmd = farm_cmd->add_subcommand(
-      "slurm", "Write, print and submit (sbatch) a Slurm job array rendering SCENE in N tasks, then the merge or "
-               "encode; options not listed here are passed to every task's rtcli render");
+      "slurm",
+      "Write, print and submit (sbatch) a Slurm job array rendering SCENE in N tasks, then the merge or "
+      "encode; options not listed here are passed to every task's rtcli render");
   slurm_cmd->add_option("scene", farm_slurm.scene, "Scene file (.json) or glTF model")->required();
-  slurm_cmd->add_option("-o,--output", farm_slurm.output, "The result: .png/.exr (tiles), .gif or NAME_####.png/.exr (frames)")
+  slurm_cmd
+      ->add_option("-o,--output", farm_slurm.output,
+                   "The result: .png/.exr (tiles), .gif or NAME_####.png/.exr (frames)")
       ->required();
-  slurm_cmd->add_option("--tasks", farm_slurm.tasks, "Array tasks: bands of rows for a still, frame chunks for an animation")
+  slurm_cmd
+      ->add_option("--tasks", farm_slurm.tasks, "Array tasks: bands of rows for a still, frame chunks for an animation")
       ->required()
       ->check(whole_number(1, 10000));
   slurm_cmd->add_option("--cpus", farm_slurm.cpus, "CPUs per task (--cpus-per-task; rtcli --threads)")
@@ -216,7 +224,8 @@ int main(int argc, char** argv) {
   slurm_cmd->add_flag("-q,--quiet", farm_slurm.quiet, "Do not print the scripts");
   slurm_cmd->allow_extras();
   FarmStatusCommand farm_status;
-  CLI::App* status_cmd = farm_cmd->add_subcommand("status", "Show a submitted farm render's jobs, parts done and task times");
+  CLI::App* status_cmd =
+      farm_cmd->add_subcommand("status", "Show a submitted farm render's jobs, parts done and task times");
   status_cmd->add_option("farm_dir", farm_status.farm_dir, "The farm folder (rtcli farm slurm --farm-dir)")->required();
 
   try {

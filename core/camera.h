@@ -78,8 +78,8 @@ struct Camera {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     // At unit distance the window is 2 tan_half * aspect wide; shift is in units of its larger side.
     const float larger = 2.0f * tan_half_fov * std::max(aspect, 1.0f);
-    const float sx = (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half_fov * aspect + shift.x * larger +
-                     window_offset;
+    const float sx =
+        (2.0f * x / static_cast<float>(width) - 1.0f) * tan_half_fov * aspect + shift.x * larger + window_offset;
     const float sy = (1.0f - 2.0f * y / static_cast<float>(height)) * tan_half_fov + shift.y * larger;
     Ray r;
     r.origin = position;

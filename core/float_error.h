@@ -39,10 +39,10 @@ inline float next_float_down(float v) {
 inline Vec3 transformed_point_error(const Mat4& m, Vec3 p, Vec3 p_error) {
   Vec3 e;
   for (int i = 0; i < 3; ++i) {  // glm is column-major: m[column][row]
-    const float magnitude = std::fabs(m[0][i] * p.x) + std::fabs(m[1][i] * p.y) + std::fabs(m[2][i] * p.z) +
-                            std::fabs(m[3][i]);
-    const float carried = std::fabs(m[0][i]) * p_error.x + std::fabs(m[1][i]) * p_error.y +
-                          std::fabs(m[2][i]) * p_error.z;
+    const float magnitude =
+        std::fabs(m[0][i] * p.x) + std::fabs(m[1][i] * p.y) + std::fabs(m[2][i] * p.z) + std::fabs(m[3][i]);
+    const float carried =
+        std::fabs(m[0][i]) * p_error.x + std::fabs(m[1][i]) * p_error.y + std::fabs(m[2][i]) * p_error.z;
     e[i] = float_gamma(3) * magnitude + (1.0f + float_gamma(3)) * carried;
   }
   return e;

@@ -41,7 +41,7 @@ struct UvFrame {
 // Everything shading needs about the closest hit, in world space.
 struct SurfaceInteraction {
   Vec3 position{0.0f};
-  Vec3 position_error{0.0f};  // absolute bound per component on position's rounding (core/ray.h)
+  Vec3 position_error{0.0f};                // absolute bound per component on position's rounding (core/ray.h)
   Vec3 geometric_normal{0.0f, 0.0f, 1.0f};  // unit, outward (from the winding for triangles)
   Vec3 shading_normal{0.0f, 0.0f, 1.0f};    // unit, interpolated for smooth meshes
   // [0]: the shape's own coordinates, or a mesh's TEXCOORD_0; [1]: a mesh's TEXCOORD_1 (a copy

@@ -24,9 +24,7 @@ struct Ray {
 // that overflow, a degenerate transform) makes the box tests NaN, which the NaN-proof slab test
 // reads as "enter": every child slot, the unused ones too, and the walk leaves the tree. Every
 // traversal (single, packet, any-hit, every instruction set) answers such a ray with a miss.
-inline bool is_traceable(const Ray& r) {
-  return is_finite(r.origin) && is_finite(r.direction) && r.tmin <= r.tmax;
-}
+inline bool is_traceable(const Ray& r) { return is_finite(r.origin) && is_finite(r.direction) && r.tmin <= r.tmax; }
 
 // Where every secondary ray starts (pbrt-v4's rule, section 6.8.6): the hit point moved off the
 // surface along its geometric normal, to the side the ray leaves towards, by just the distance
@@ -48,7 +46,8 @@ inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 geometric_normal, Vec3 
   constexpr float kSmallest = std::numeric_limits<float>::min();
   for (int i = 0; i < 3; ++i) {
     if (n[i] > 0.0f) po[i] = std::max(next_float_up(po[i]), std::fabs(po[i]) < kSmallest ? kSmallest : -kInfinity);
-    else if (n[i] < 0.0f) po[i] = std::min(next_float_down(po[i]), std::fabs(po[i]) < kSmallest ? -kSmallest : kInfinity);
+    else if (n[i] < 0.0f)
+      po[i] = std::min(next_float_down(po[i]), std::fabs(po[i]) < kSmallest ? -kSmallest : kInfinity);
   }
   return po;
 }

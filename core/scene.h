@@ -30,7 +30,7 @@ struct Scene {
   std::shared_ptr<const SceneAssets> assets = std::make_shared<const SceneAssets>();
   Camera camera;
   Environment background;  // radiance of rays that meet nothing: a colour or an HDR image
-  Vec3 ambient{0.0f};     // ambient light, multiplied by each material's kd
+  Vec3 ambient{0.0f};      // ambient light, multiplied by each material's kd
   std::vector<Light> lights;
   Bvh bvh;  // top level: analytic shapes and mesh instances (each pointing into assets->meshes)
   // No material lets light through: a shadow ray needs only bvh.occluded(), the early-out

@@ -44,8 +44,7 @@ inline Transform compose(const Transform& outer, const Transform& inner) {
 inline float origin_rounding(const Transform& t, Vec3 world_origin, Vec3 object_direction) {
   const float length2 = glm::dot(object_direction, object_direction);
   if (!(length2 > 0.0f)) return 0.0f;
-  return glm::dot(abs3(object_direction), transformed_point_error(t.to_object, world_origin, Vec3(0.0f))) /
-         length2;
+  return glm::dot(abs3(object_direction), transformed_point_error(t.to_object, world_origin, Vec3(0.0f))) / length2;
 }
 
 // The ray in the object space of `t`: origin and direction through to_object. The direction is

@@ -175,8 +175,7 @@ float Bsdf::pdf_local(Vec3 wi) const {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return glass;
   float p = probability_[kDiffuse] * wi.z / kPi;
   if (pbr_) {
-    if (probability_[kSpecular] > 0.0f)
-      p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
+    if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
     return p + glass;
   }
   const Vec3 r = mirror_local(wo);

@@ -55,7 +55,7 @@ class Bsdf {
   bool sides_agree(Vec3 wi, Vec3 wi_local) const;
 
   ShadingFrame frame_;
-  Vec3 ng_{0.0f};      // geometric normal, on wo's side
+  Vec3 ng_{0.0f};  // geometric normal, on wo's side
   Vec3 wo_local_{0.0f};
   // Phong lobes
   Vec3 diffuse_{0.0f};
@@ -71,7 +71,7 @@ class Bsdf {
   bool pbr_ = false;
   Vec3 base_diffuse_{0.0f};  // (1 - metallic)(1 - transmission) base
   Vec3 f0_{0.04f};
-  float layer_ = 1.0f;       // 1 - transmission: what the opaque layer keeps
+  float layer_ = 1.0f;  // 1 - transmission: what the opaque layer keeps
   Ggx ggx_;
   float probability_[kLobeCount] = {};
   bool smooth_ = false;

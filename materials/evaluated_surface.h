@@ -29,9 +29,9 @@ struct EvaluatedSurface {
   Vec3 specular{0.0f};
   float shininess = 32.0f;
   Vec3 reflectivity{0.0f};
-  Vec3 transmission{0.0f};       // what passes (glTF: tinted by the base colour, none through metal)
+  Vec3 transmission{0.0f};           // what passes (glTF: tinted by the base colour, none through metal)
   float transmission_factor = 0.0f;  // how much passes, untinted: the share the dielectric takes
-  float refraction_glossy = 0.0f;  // blur-square width of refracted rays (glTF: from roughness, as `glossy`)
+  float refraction_glossy = 0.0f;    // blur-square width of refracted rays (glTF: from roughness, as `glossy`)
   float ior = 1.5f;
   Vec3 absorption{0.0f};
   float glossy = 0.0f;
@@ -56,7 +56,6 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
 // evaluate_surface(...).emission alone: what the surface gives off towards where a ray of
 // `ray_direction` came from, without the rest of the material (light sampling's emitter points).
 Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
-                      const std::vector<Texture>& textures, float cone_width = 0.0f,
-                      SurfaceDetailSwitches detail = {});
+                      const std::vector<Texture>& textures, float cone_width = 0.0f, SurfaceDetailSwitches detail = {});
 
 }  // namespace rt

@@ -20,10 +20,10 @@ namespace {
 // CSG (span lists and the solid the BVH holds); the BVH; the scene's shared assets and settings;
 // lights (emissive surfaces are found through the assets); the scene itself, its graph and frames.
 // The top-level files above the basics are named here one by one.
-const std::set<std::string> kCore{"core/",           "core/texture/",      "core/shapes/",          "core/animation/",
-                                  "core/csg/",       "core/accel/",        "core/scene_assets",     "core/material.h",
-                                  "core/render_settings.h", "core/lights/", "core/scene.",          "core/scene_graph",
-                                  "core/csg_template", "core/frame_scenes"};
+const std::set<std::string> kCore{
+    "core/",       "core/texture/",     "core/shapes/",      "core/animation/",        "core/csg/",
+    "core/accel/", "core/scene_assets", "core/material.h",   "core/render_settings.h", "core/lights/",
+    "core/scene.", "core/scene_graph",  "core/csg_template", "core/frame_scenes"};
 
 // `own` and the given layers.
 std::set<std::string> with(std::set<std::string> own, const std::set<std::string>& below) {
@@ -33,8 +33,8 @@ std::set<std::string> with(std::set<std::string> own, const std::set<std::string
 
 // Every layer below cli/, and `own`.
 std::set<std::string> with_below(std::set<std::string> own) {
-  own.insert({"materials/", "core/render/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/", "io/assemble/",
-              "io/"});
+  own.insert({"materials/", "core/render/", "io/base/", "io/json/", "io/image/", "io/gltf/", "io/scene/",
+              "io/assemble/", "io/"});
   return with(own, kCore);
 }
 
@@ -47,12 +47,13 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"core/animation/", {"core/", "core/animation/"}},
       {"core/csg/", {"core/", "core/shapes/", "core/csg/"}},
       {"core/accel/", {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/"}},
-      {"core/scene_assets", {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h",
-                             "core/scene_assets"}},
+      {"core/scene_assets",
+       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h", "core/scene_assets"}},
       {"core/material.h", {"core/", "core/texture/"}},
       {"core/render_settings.h", {"core/", "core/texture/"}},
-      {"core/lights/", {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h",
-                        "core/scene_assets", "core/lights/"}},
+      {"core/lights/",
+       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h", "core/scene_assets",
+        "core/lights/"}},
       {"core/scene.", kCore},
       {"core/scene_graph", kCore},
       {"core/csg_template", kCore},

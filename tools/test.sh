@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # README command 2 (and CI, through .ci/run): install what is missing, build, run the test suite.
 #
-#   tools/test.sh             the whole suite twice: a Release build (build/), then a build under
-#                             AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
-#   tools/test.sh --plain     only the Release build and its suite
+#   tools/test.sh             the style check (tools/format.sh --check), then the whole suite twice:
+#                             a Release build (build/), then a build under AddressSanitizer +
+#                             UndefinedBehaviorSanitizer (build-asan/)
+#   tools/test.sh --plain     only the style check, the Release build and its suite
 #   tools/test.sh --sanitize  only the sanitizers: the whole suite under ASan + UBSan, then the
 #                             rendering, BVH and threading tests under ThreadSanitizer (build-tsan/)
 #
@@ -15,10 +16,12 @@ case "$mode" in
   "" | --plain | --sanitize) ;;
   *) echo "usage: tools/test.sh [--plain | --sanitize]" >&2; exit 2 ;;
 esac
-"$root/tools/install-deps.sh" --tests
+"$root/tools/install-deps.sh" --tests clang-format
 jobs="$(nproc)"
 
 plain() {
+  echo "== Style: every C++ file as .clang-format says (tools/format.sh --check)" >&2
+  "$root/tools/format.sh" --check
   echo "== Release suite (build/)" >&2
   "$root/tools/build.sh" -DRTCLI_BUILD_TESTS=ON
   ctest --test-dir "$root/build" --output-on-failure --parallel "$jobs"

@@ -12,12 +12,12 @@
 namespace rt {
 
 struct BenchCommand {
-  std::string model;      // .gltf/.glb/.json; empty = a generated mesh of 300k+ triangles
-  std::string scene;      // rendered at the end; empty = none
-  std::string path_scene;  // path traced after it, small; empty = none
-  int repeats = 5;        // timed runs of each figure, after one warm-up
-  std::string rays;       // replay these ray sets instead of generating them
-  std::string save_rays;  // write the ray sets traced here, for another build or Embree to replay
+  std::string model;               // .gltf/.glb/.json; empty = a generated mesh of 300k+ triangles
+  std::string scene;               // rendered at the end; empty = none
+  std::string path_scene;          // path traced after it, small; empty = none
+  int repeats = 5;                 // timed runs of each figure, after one warm-up
+  std::string rays;                // replay these ray sets instead of generating them
+  std::string save_rays;           // write the ray sets traced here, for another build or Embree to replay
   std::optional<std::string> isa;  // --isa: the BVH kernels measured (cli/common/isa_choice.h)
 };
 

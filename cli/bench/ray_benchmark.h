@@ -59,7 +59,8 @@ size_t trace_all(const std::vector<Ray>& rays, unsigned threads, const Trace& tr
     size_t n = 0;
   };
   std::vector<Count> counts(std::max(1u, threads));
-  parallel_for(rays.size(), threads, 4096, [&](unsigned worker, size_t i) { counts[worker].n += trace(rays[i]) ? 1 : 0; });
+  parallel_for(rays.size(), threads, 4096,
+               [&](unsigned worker, size_t i) { counts[worker].n += trace(rays[i]) ? 1 : 0; });
   size_t total = 0;
   for (const Count& c : counts) total += c.n;
   return total;

@@ -19,8 +19,7 @@ constexpr char kMagic[8] = {'R', 'T', 'R', 'A', 'Y', 'S', '0', '1'};
 constexpr uint64_t kMaxRaysPerSet = 1ull << 28;  // 8 GiB of rays: anything larger is not a ray file
 
 bool inside(const Aabb& box, Vec3 p) {
-  return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y && p.z >= box.lo.z &&
-         p.z <= box.hi.z;
+  return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y && p.z >= box.lo.z && p.z <= box.hi.z;
 }
 
 Vec3 point_in(const Aabb& box, Rng& rng) {
@@ -30,7 +29,8 @@ Vec3 point_in(const Aabb& box, Rng& rng) {
 std::vector<Ray> incoherent_rays(const Aabb& bounds) {
   const Vec3 centre = bounds.centre();
   const float side = 3.0f * max_component(bounds.extent());
-  const Aabb cube{centre - Vec3(0.5f * side), centre + Vec3(0.5f * side)};  // braces: clang 14 has no C++20 parenthesized aggregates
+  const Aabb cube{centre - Vec3(0.5f * side),
+                  centre + Vec3(0.5f * side)};  // braces: clang 14 has no C++20 parenthesized aggregates
   std::vector<Ray> rays(kIncoherentRays);
   for (size_t i = 0; i < rays.size(); ++i) {
     Rng rng(mix64(i), 7);
@@ -103,8 +103,8 @@ bool write_ray_sets(const std::string& path, const std::vector<RaySet>& sets, st
     const uint64_t n = set.rays.size();
     put(&n, sizeof n);
     for (const Ray& r : set.rays) {
-      const float f[8] = {r.origin.x, r.origin.y, r.origin.z, r.tmin, r.direction.x, r.direction.y, r.direction.z,
-                          r.tmax};
+      const float f[8] = {r.origin.x,    r.origin.y,    r.origin.z,    r.tmin,
+                          r.direction.x, r.direction.y, r.direction.z, r.tmax};
       put(f, sizeof f);
     }
   }

@@ -8,7 +8,7 @@
 namespace rt {
 
 struct RenderBenchmark {
-  Timing seconds;  // the render loop's own time, as RenderStats reports it
+  Timing seconds;    // the render loop's own time, as RenderStats reports it
   RayCounters rays;  // the same on every run: the image is deterministic
 };
 

@@ -10,7 +10,7 @@ namespace rt {
 
 struct ValidateCommand {
   std::vector<std::string> files;
-  bool json = false;  // print one JSON array of diagnostics instead of text
+  bool json = false;                 // print one JSON array of diagnostics instead of text
   bool allow_outside_files = false;  // glTF files may read images and buffers outside their folder
 };
 

@@ -8,21 +8,21 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <set>
 #include <sstream>
 
 #include "cli/common/exit_codes.h"
-#include "cli/farm/slurm_jobs.h"
-#include "cli/frames/frame_output.h"
 #include "cli/common/report.h"
 #include "cli/common/scene_loading.h"
-#include "io/base/input_file.h"
-#include "io/base/atomic_file.h"
+#include "cli/farm/slurm_jobs.h"
 #include "cli/frames/frame_list.h"
+#include "cli/frames/frame_output.h"
+#include "io/base/atomic_file.h"
+#include "io/base/input_file.h"
 #include "io/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -36,8 +36,9 @@ bool is_job_id(const std::string& id) {
 }
 
 // Options the farm sets on every task itself.
-const std::set<std::string> kFarmOwned = {"-o", "--output", "--tile", "--crop", "--chunk", "--threads", "--skip-existing",
-                                          "--exr-float", "--stats", "--samples-debug", "--aa-debug"};
+const std::set<std::string> kFarmOwned = {"-o",      "--output",        "--tile",          "--crop",
+                                          "--chunk", "--threads",       "--skip-existing", "--exr-float",
+                                          "--stats", "--samples-debug", "--aa-debug"};
 
 bool write_text(const std::string& path, const std::string& text, std::string& error) {
   return write_file_atomically(path, std::vector<uint8_t>(text.begin(), text.end()), error);
@@ -128,7 +129,8 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
   }
   std::string error;
   const std::optional<OutputKind> kind = output_kind(cmd.output, error);
-  if (!kind || *kind == OutputKind::kJpeg) return fail("-o: expected .png, .exr, .gif or NAME_####.png/.exr, found \"" + cmd.output + "\"");
+  if (!kind || *kind == OutputKind::kJpeg)
+    return fail("-o: expected .png, .exr, .gif or NAME_####.png/.exr, found \"" + cmd.output + "\"");
   Diagnostics diags;
   const std::optional<LoadedScene> loaded = load_scene(cmd.scene, cli_load_options(1, std::nullopt, false), diags);
   if (!loaded || diags.has_errors()) {
@@ -165,9 +167,9 @@ int run_farm_slurm(const FarmSlurmCommand& cmd) {
   } else {
     // The frames every task shares, as rtcli render chooses them: --frames or --frame, else the
     // scene's animation; encode takes them in this order (a glob would order -1 before -2).
-    const std::optional<std::string> given =
-        option_value(spec.render_options, "--frames") ? option_value(spec.render_options, "--frames")
-                                                      : option_value(spec.render_options, "--frame");
+    const std::optional<std::string> given = option_value(spec.render_options, "--frames")
+                                                 ? option_value(spec.render_options, "--frames")
+                                                 : option_value(spec.render_options, "--frame");
     const Timeline& t = loaded->graph.timeline;
     const std::optional<FrameList> frames =
         given ? parse_frame_list(*given, error)
@@ -244,8 +246,7 @@ int run_farm_status(const FarmStatusCommand& cmd) {
   std::string out;
   if (run_program({"squeue", "-h", "-j", ids, "-o", "%i %j %T %M %R"}, out))
     std::printf("queued or running (squeue):\n%s", out.empty() ? "  none\n" : out.c_str());
-  else
-    std::printf("squeue failed: %s", out.c_str());
+  else std::printf("squeue failed: %s", out.c_str());
   for (const char* sub : {"tiles", "frames"}) {
     std::error_code ec;
     if (!fs::is_directory(cmd.farm_dir + "/" + sub, ec)) continue;

@@ -65,8 +65,9 @@ std::string job_value_problem(const std::string& what, const std::string& value,
     case JobValue::kShellWord: return "";  // shell_quote takes any other byte
     case JobValue::kSbatchPath:
       if (value.find_first_of(" \t\"'\\%") != std::string::npos)
-        return refuse("expected no spaces, quotes, backslashes or '%' (sbatch reads an #SBATCH path without a shell, and "
-                      "'%' is a Slurm file-name pattern): choose another folder with --farm-dir");
+        return refuse(
+            "expected no spaces, quotes, backslashes or '%' (sbatch reads an #SBATCH path without a shell, and "
+            "'%' is a Slurm file-name pattern): choose another folder with --farm-dir");
       return "";
     case JobValue::kPartition:
       for (const char c : value)
@@ -116,8 +117,8 @@ std::string render_script(const SlurmJobSpec& spec) {
   std::string error;
   const std::optional<OutputKind> kind = output_kind(spec.output, error);
   if (tiles) {
-    s += " --exr-float --tile \"$share\" -o " + shell_quote(spec.farm_dir + "/tiles/tile_") + "\"$SLURM_ARRAY_TASK_ID\"" +
-         shell_quote(".exr");
+    s += " --exr-float --tile \"$share\" -o " + shell_quote(spec.farm_dir + "/tiles/tile_") +
+         "\"$SLURM_ARRAY_TASK_ID\"" + shell_quote(".exr");
   } else if (kind && is_sequence(*kind)) {
     s += " --chunk \"$share\" -o " + shell_quote(spec.output);
   } else {
@@ -140,8 +141,8 @@ std::string finish_script(const SlurmJobSpec& spec) {
          shell_quote(spec.output) + "\n";
   else
     s += "exec " + shell_quote(spec.rtcli) + " encode " + shell_quote(spec.farm_dir + "/frames/frame_######.exr") +
-         " --frames " + shell_quote(spec.frames) + (spec.dither ? " --dither" : "") + " -o " + shell_quote(spec.output) +
-         "\n";
+         " --frames " + shell_quote(spec.frames) + (spec.dither ? " --dither" : "") + " -o " +
+         shell_quote(spec.output) + "\n";
   return s;
 }
 

@@ -18,16 +18,16 @@
 namespace rt {
 
 struct SlurmJobSpec {
-  std::string rtcli;                       // absolute path of the binary the nodes run
-  std::string scene;                       // absolute
-  std::vector<std::string> render_options; // passed to every task's rtcli render as they are
-  std::string output;                      // absolute: .png/.exr (a still), .gif or NAME_####.png/.exr
-  std::string farm_dir;                    // absolute: scripts, tiles or frames, logs
+  std::string rtcli;                        // absolute path of the binary the nodes run
+  std::string scene;                        // absolute
+  std::vector<std::string> render_options;  // passed to every task's rtcli render as they are
+  std::string output;                       // absolute: .png/.exr (a still), .gif or NAME_####.png/.exr
+  std::string farm_dir;                     // absolute: scripts, tiles or frames, logs
   int tasks = 1;
-  int cpus = 1;                            // per task: --cpus-per-task and rtcli's --threads
+  int cpus = 1;  // per task: --cpus-per-task and rtcli's --threads
   std::optional<std::string> partition, time;
-  bool dither = false;                     // the GIF's (moved from the render options to encode)
-  std::string frames;                      // an animation's frames (FrameList::text), for encode
+  bool dither = false;  // the GIF's (moved from the render options to encode)
+  std::string frames;   // an animation's frames (FrameList::text), for encode
 };
 
 enum class FarmWork { kTiles, kFrames };

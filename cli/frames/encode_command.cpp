@@ -34,8 +34,9 @@ int run_encode(const EncodeCommand& cmd) {
     const std::optional<FrameList> list = parse_frame_list(*cmd.frame_list, error);
     if (!list) return bad("--frames: " + error);
     if (cmd.frames.size() != 1 || cmd.frames[0].find('#') == std::string::npos)
-      return bad("--frames fills one NAME_####.png or NAME_####.exr pattern, found " + std::to_string(cmd.frames.size()) +
-                 " frame arguments" + (cmd.frames.size() == 1 ? " without '#'" : ""));
+      return bad("--frames fills one NAME_####.png or NAME_####.exr pattern, found " +
+                 std::to_string(cmd.frames.size()) + " frame arguments" +
+                 (cmd.frames.size() == 1 ? " without '#'" : ""));
     paths.clear();
     for (const int f : list->frames) paths.push_back(sequence_path(cmd.frames[0], f));
     if (!check_new_output(cmd.output, paths, error)) return bad(error);

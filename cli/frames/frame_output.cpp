@@ -17,9 +17,10 @@ std::optional<OutputKind> output_kind(const std::string& path, std::string& erro
   if (ext == ".jpg" || ext == ".jpeg") return OutputKind::kJpeg;
   if (ext == ".png") return name.find('#') != std::string::npos ? OutputKind::kPngSequence : OutputKind::kPng;
   if (ext == ".exr") return name.find('#') != std::string::npos ? OutputKind::kExrSequence : OutputKind::kExr;
-  error = "expected an output file name ending in .png, .exr or .jpg (or frame_####.png or frame_####.exr, or .gif "
-          "for animations), found \"" +
-          path + "\"";
+  error =
+      "expected an output file name ending in .png, .exr or .jpg (or frame_####.png or frame_####.exr, or .gif "
+      "for animations), found \"" +
+      path + "\"";
   return std::nullopt;
 }
 

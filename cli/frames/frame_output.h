@@ -3,8 +3,8 @@
 // length), or an animated GIF. The frames' syntax is cli/frames/frame_list.h.
 #pragma once
 
-#include <memory>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +20,9 @@ enum class OutputKind { kPng, kPngSequence, kGif, kJpeg, kExr, kExrSequence };
 inline bool is_exr(OutputKind k) { return k == OutputKind::kExr || k == OutputKind::kExrSequence; }
 inline bool is_sequence(OutputKind k) { return k == OutputKind::kPngSequence || k == OutputKind::kExrSequence; }
 // One image, not several frames.
-inline bool is_single_image(OutputKind k) { return k == OutputKind::kPng || k == OutputKind::kJpeg || k == OutputKind::kExr; }
+inline bool is_single_image(OutputKind k) {
+  return k == OutputKind::kPng || k == OutputKind::kJpeg || k == OutputKind::kExr;
+}
 
 // What the file name asks for (.gif, .jpg or .jpeg, or .png or .exr with or without a run of '#'), or an error.
 std::optional<OutputKind> output_kind(const std::string& path, std::string& error);

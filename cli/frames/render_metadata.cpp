@@ -51,7 +51,7 @@ std::map<std::string, std::string> render_attributes(const RenderIdentity& id, i
       {exr_key::kSettingsHash, hex64(fnv1a(id.settings.data(), id.settings.size()))},
       {exr_key::kFrame, std::to_string(frame)},
       {exr_key::kCrop, std::to_string(window.x0) + "," + std::to_string(window.y0) + "," + std::to_string(window.x1) +
-                         "," + std::to_string(window.y1)},
+                           "," + std::to_string(window.y1)},
       {exr_key::kSeed, std::to_string(id.seed)},
       {exr_key::kExposure, float_text(id.display.exposure)},
       {exr_key::kToneMap, std::string(kToneMaps.name(id.display.curve))},
@@ -62,7 +62,8 @@ std::map<std::string, std::string> render_attributes(const RenderIdentity& id, i
 }
 
 bool same_render(const std::map<std::string, std::string>& file, const std::map<std::string, std::string>& expected) {
-  for (const char* key : {exr_key::kSceneHash, exr_key::kSettingsHash, exr_key::kFrame, exr_key::kCrop, exr_key::kTile}) {
+  for (const char* key :
+       {exr_key::kSceneHash, exr_key::kSettingsHash, exr_key::kFrame, exr_key::kCrop, exr_key::kTile}) {
     const auto a = file.find(key), b = expected.find(key);
     if ((a == file.end()) != (b == expected.end())) return false;
     if (a != file.end() && a->second != b->second) return false;

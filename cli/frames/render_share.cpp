@@ -25,7 +25,8 @@ std::optional<Share> parse_share(const std::string& text, const char* option, co
               "I/N outside an array)";
       return std::nullopt;
     }
-    const auto i = parse_decimal(*id), n = parse_decimal(*count), m = min ? parse_decimal(*min) : std::optional<long>(0);
+    const auto i = parse_decimal(*id), n = parse_decimal(*count),
+               m = min ? parse_decimal(*min) : std::optional<long>(0);
     if (!i || !n || !m || *n < 1 || *i - *m < 0 || *i - *m >= *n) {
       error = std::string(option) + " auto: SLURM_ARRAY_TASK_ID " + *id + " less SLURM_ARRAY_TASK_MIN " +
               (min ? *min : std::string("0")) + " is not a task of SLURM_ARRAY_TASK_COUNT " + *count +
@@ -60,8 +61,10 @@ std::optional<PixelWindow> parse_crop_text(const std::string& text, std::string&
   }
   constexpr long kMost = 1L << 30;  // past any image rtcli renders (docs/errors-and-limits.md)
   if (v.size() != 4 || v[0] < 0 || v[1] < 0 || v[2] <= v[0] || v[3] <= v[1] || v[2] > kMost || v[3] > kMost) {
-    error = "--crop: expected x0,y0,x1,y1 (four whole numbers, pixels, 0 <= x0 < x1 and 0 <= y0 < y1, x1 and y1 "
-            "excluded), found \"" + text + "\"";
+    error =
+        "--crop: expected x0,y0,x1,y1 (four whole numbers, pixels, 0 <= x0 < x1 and 0 <= y0 < y1, x1 and y1 "
+        "excluded), found \"" +
+        text + "\"";
     return std::nullopt;
   }
   return PixelWindow{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
@@ -69,10 +72,10 @@ std::optional<PixelWindow> parse_crop_text(const std::string& text, std::string&
 
 bool crop_fits(const PixelWindow& w, int width, int height, std::string& error) {
   if (w.x1 <= width && w.y1 <= height) return true;
-  error = "--crop: expected 0 <= x0 < x1 <= " + std::to_string(width) + " and 0 <= y0 < y1 <= " +
-          std::to_string(height) + " (the image is " + std::to_string(width) + "x" + std::to_string(height) +
-          "), found \"" + std::to_string(w.x0) + "," + std::to_string(w.y0) + "," + std::to_string(w.x1) + "," +
-          std::to_string(w.y1) + "\"";
+  error = "--crop: expected 0 <= x0 < x1 <= " + std::to_string(width) +
+          " and 0 <= y0 < y1 <= " + std::to_string(height) + " (the image is " + std::to_string(width) + "x" +
+          std::to_string(height) + "), found \"" + std::to_string(w.x0) + "," + std::to_string(w.y0) + "," +
+          std::to_string(w.x1) + "," + std::to_string(w.y1) + "\"";
   return false;
 }
 

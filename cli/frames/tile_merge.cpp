@@ -66,8 +66,8 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
     if (tile == t.attributes.end()) return;
     // Read as --tile reads it (0 <= I < N <= kMaxShares), never from the environment.
     std::string error;
-    const auto share =
-        parse_share(tile->second, exr_key::kTile, [](const std::string&) { return std::optional<std::string>(); }, error);
+    const auto share = parse_share(
+        tile->second, exr_key::kTile, [](const std::string&) { return std::optional<std::string>(); }, error);
     if (!share) return;
     const int i = share->index, n = share->count;
     if (count >= 0 && n != count) return;
@@ -87,7 +87,8 @@ void name_missing_bands(const std::vector<ExrImage>& tiles, std::vector<std::str
     int y0 = i == 0 ? 0 : -1, y1 = i == count - 1 ? height : -1;
     if (i > 0 && present[static_cast<size_t>(i) - 1]) y0 = windows[static_cast<size_t>(i) - 1].y1;
     if (i + 1 < count && present[static_cast<size_t>(i) + 1]) y1 = windows[static_cast<size_t>(i) + 1].y0;
-    const std::string rows = y0 >= 0 && y1 > y0 ? " (rows " + std::to_string(y0) + "-" + std::to_string(y1 - 1) + ")" : "";
+    const std::string rows =
+        y0 >= 0 && y1 > y0 ? " (rows " + std::to_string(y0) + "-" + std::to_string(y1 - 1) + ")" : "";
     problems.push_back("tile " + std::to_string(i) + "/" + std::to_string(count) + rows +
                        " is missing: render it with --tile " + std::to_string(i) + "/" + std::to_string(count));
   }
@@ -131,8 +132,7 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
     if (t.width != first.width || t.height != first.height)
       problems.push_back(against + "an image of " + std::to_string(t.width) + "x" + std::to_string(t.height) +
                          " against " + std::to_string(first.width) + "x" + std::to_string(first.height));
-    if (layout(t) != layout(first))
-      problems.push_back(against + "channels " + layout(t) + " against " + layout(first));
+    if (layout(t) != layout(first)) problems.push_back(against + "channels " + layout(t) + " against " + layout(first));
     if (t.full_float != first.full_float)
       problems.push_back(against + (t.full_float ? "float" : "half") + " channels against " +
                          (first.full_float ? "float" : "half"));
@@ -180,8 +180,9 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
           x = std::max(x, x1);
         }
         if (x < first.width)
-          problems.push_back("no tile holds pixel (" + std::to_string(x) + ", " + std::to_string(y) + "); the tiles cover " +
-                             std::to_string(covered) + " of the image's " + std::to_string(all) + " pixels");
+          problems.push_back("no tile holds pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                             "); the tiles cover " + std::to_string(covered) + " of the image's " +
+                             std::to_string(all) + " pixels");
       }
     }
     return std::nullopt;
@@ -196,14 +197,17 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
   out.attributes = first.attributes;
   out.attributes[exr_key::kCrop] = "0,0," + std::to_string(first.width) + "," + std::to_string(first.height);
   out.attributes.erase(exr_key::kTile);
-  for (const ExrLayer& l : first.layers) out.layers.push_back(ExrLayer{l.name, l.channels, std::vector<float>(all * l.channels.size())});
+  for (const ExrLayer& l : first.layers)
+    out.layers.push_back(ExrLayer{l.name, l.channels, std::vector<float>(all * l.channels.size())});
   for (const ExrImage& t : tiles) {
     const PixelWindow& w = t.window;
     for (size_t k = 0; k < out.layers.size(); ++k) {
       const size_t n = out.layers[k].channels.size();
       for (int y = w.y0; y < w.y1; ++y) {
-        const float* from = t.layers[k].values.data() + static_cast<size_t>(y - w.y0) * static_cast<size_t>(w.width()) * n;
-        float* to = out.layers[k].values.data() + (static_cast<size_t>(y) * static_cast<size_t>(out.width) + static_cast<size_t>(w.x0)) * n;
+        const float* from =
+            t.layers[k].values.data() + static_cast<size_t>(y - w.y0) * static_cast<size_t>(w.width()) * n;
+        float* to = out.layers[k].values.data() +
+                    (static_cast<size_t>(y) * static_cast<size_t>(out.width) + static_cast<size_t>(w.x0)) * n;
         std::copy(from, from + static_cast<size_t>(w.width()) * n, to);
       }
     }

@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cli/render/aov_layers.h"
 #include "cli/common/exit_codes.h"
 #include "cli/common/interrupt.h"
 #include "cli/common/progress_bar.h"
+#include "cli/render/aov_layers.h"
 #include "core/frame_scenes.h"
 #include "core/render/stereo_images.h"
 #include "core/thread_count.h"
@@ -33,7 +33,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
                                  std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
   ProgressBar bar(stderr);
   const bool show_progress = !job.quiet && ::isatty(::fileno(stderr));
-  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene, BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
+  FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene,
+                     BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
   totals.passes = stereo.enabled() ? 2 : 1;
   const int all_passes = frames.count() * totals.passes;
   std::string error;
@@ -92,7 +93,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       exr.height = settings.height;
       exr.window = film.window();
       exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
-      for (const std::string& aov : content.aovs) exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
+      for (const std::string& aov : content.aovs)
+        exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
       exr.attributes = render_attributes(content.identity, frame, exr.window);
       const SignalBlock block;
       if (!sinks[0].add_exr(exr, frame, content.exr_float, error)) {

@@ -8,8 +8,8 @@
 
 #include "cli/frames/frame_list.h"
 #include "cli/frames/frame_output.h"
-#include "cli/render/render_job.h"
 #include "cli/frames/render_metadata.h"
+#include "cli/render/render_job.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
 #include "io/scene_loader.h"
@@ -19,11 +19,11 @@ namespace rt {
 struct RenderTotals {
   RenderStats last;  // the last render's (the last eye's of a stereo frame)
   RayCounters rays;
-  double seconds = 0.0;        // rendering, all frames
-  double place_seconds = 0.0;  // placing animated frames (top-level BVHs)
-  size_t refined = 0;          // pixels refined by adaptive anti-aliasing, all frames and eyes
-  uint64_t samples = 0;        // camera samples the pixels average, all frames and eyes
-  int passes = 1;              // renders per frame: 2 in stereo
+  double seconds = 0.0;          // rendering, all frames
+  double place_seconds = 0.0;    // placing animated frames (top-level BVHs)
+  size_t refined = 0;            // pixels refined by adaptive anti-aliasing, all frames and eyes
+  uint64_t samples = 0;          // camera samples the pixels average, all frames and eyes
+  int passes = 1;                // renders per frame: 2 in stereo
   uint64_t pixels_per_pass = 0;  // what each render computed: the image, or the window of it
 };
 

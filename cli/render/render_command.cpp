@@ -6,20 +6,20 @@
 #include <filesystem>
 
 #include "cli/common/exit_codes.h"
-#include "cli/frames/frame_output.h"
-#include "cli/render/frame_renderer.h"
 #include "cli/common/interrupt.h"
 #include "cli/common/isa_choice.h"
 #include "cli/common/number_checks.h"
-#include "cli/frames/output_checks.h"
 #include "cli/common/progress_bar.h"
+#include "cli/common/report.h"
+#include "cli/common/scene_loading.h"
+#include "cli/common/suggestions.h"
+#include "cli/frames/frame_output.h"
+#include "cli/frames/output_checks.h"
+#include "cli/render/frame_renderer.h"
 #include "cli/render/render_job.h"
 #include "cli/render/render_plan.h"
 #include "cli/render/render_stats.h"
 #include "cli/render/render_summary.h"
-#include "cli/common/report.h"
-#include "cli/common/scene_loading.h"
-#include "cli/common/suggestions.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/refinement_images.h"
@@ -242,8 +242,8 @@ int run_render(const RenderCommand& cmd) {
   std::vector<FrameSink> sinks;
   for (const std::string& pattern : output_patterns(*job, *stereo))
     sinks.emplace_back(job->kind, pattern, stereo_image_width(stereo->mode, settings.width),
-                       stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps, plan->frames.count(),
-                       job->dither, resolve_thread_count(settings.threads));
+                       stereo_image_height(stereo->mode, settings.height), loaded->graph.timeline.fps,
+                       plan->frames.count(), job->dither, resolve_thread_count(settings.threads));
   RenderTotals totals;
   Film film;
   if (const std::optional<int> stop =
@@ -251,19 +251,21 @@ int run_render(const RenderCommand& cmd) {
     return *stop;
 
   // Write and summarise.
-  const int most_samples = integrator_samples_pixels(settings.integrator)
-                               ? settings.path.samples_per_pixel
-                               : static_cast<int>(std::min<uint64_t>(max_camera_rays_per_frame(settings) /
-                                                                         std::max<uint64_t>(1, pixel_count(settings)),
-                                                                     65535));
+  const int most_samples =
+      integrator_samples_pixels(settings.integrator)
+          ? settings.path.samples_per_pixel
+          : static_cast<int>(std::min<uint64_t>(
+                max_camera_rays_per_frame(settings) / std::max<uint64_t>(1, pixel_count(settings)), 65535));
   if (!finish_outputs(*outputs, sinks, film, totals.last.threads, most_samples)) return kExitFailure;
   std::vector<std::string> written;
   for (const FrameSink& sink : sinks) written.insert(written.end(), sink.written().begin(), sink.written().end());
   if (!job->stats.empty()) {
     std::string error;
     const SignalBlock block;
-    if (!write_render_stats(
-            job->stats, RenderStatsInput{job->scene, written, settings, *stereo, plan->frames, totals, load_seconds, loaded->scene.bvh.isa()}, error)) {
+    if (!write_render_stats(job->stats,
+                            RenderStatsInput{job->scene, written, settings, *stereo, plan->frames, totals, load_seconds,
+                                             loaded->scene.bvh.isa()},
+                            error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;
     }

@@ -51,9 +51,9 @@ struct RenderCommand {
   std::optional<std::string> animation;            // a model on its own: one of its animations, by name or index
   std::optional<float> fps;                        // a model on its own: its timeline's frame rate (default 24)
   std::optional<std::string> background, ambient;  // "R,G,B" or one number: replace the scene's
-  std::optional<std::string> stereo;               // none, anaglyph, side_by_side, top_bottom, pair: replaces the camera's
-  bool dither = false;                             // GIF frames: Floyd-Steinberg error diffusion
-  bool allow_outside_files = false;                // glTF files may read images and buffers outside their folder
+  std::optional<std::string> stereo;  // none, anaglyph, side_by_side, top_bottom, pair: replaces the camera's
+  bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
+  bool allow_outside_files = false;   // glTF files may read images and buffers outside their folder
   std::string stats;  // --stats FILE: the render's figures as JSON (cli/render/render_stats.h); empty: none
   // Part of the render (cli/frames/render_share.h): a window of the image, a band of rows, a share of the frames.
   std::optional<std::string> crop, tile, chunk;

@@ -25,7 +25,8 @@ std::string default_output(const std::string& scene, bool animation) {
 
 // A name one of the name tables must hold, or an error listing the names it holds.
 template <class T>
-bool check_name(const char* option, const char* what, const std::optional<std::string>& name, const NameTable<T>& table) {
+bool check_name(const char* option, const char* what, const std::optional<std::string>& name,
+                const NameTable<T>& table) {
   if (!name || table.find(*name)) return true;
   std::fprintf(stderr, "rtcli: error: %s: unknown %s \"%s\"%s; expected one of: %s\n", option, what, name->c_str(),
                did_you_mean(*name, table.names()).c_str(), table.list().c_str());
@@ -81,7 +82,8 @@ bool read_output(const RenderCommand& cmd, RenderJob& job) {
   if (job.frames.count() > 1 && is_single_image(job.kind))
     return fail(std::to_string(job.frames.count()) +
                 " frames need an animated GIF (-o NAME.gif) or numbered files (-o NAME_####.png or NAME_####.exr), "
-                "found \"" + job.output + "\"");
+                "found \"" +
+                job.output + "\"");
   const bool stereo = job.choices.stereo && *job.choices.stereo != StereoMode::kNone;
   if (job.aa_debug && stereo) return fail("--aa-debug shows one image's refinement; it does not go with --stereo");
   if (job.samples_debug && (stereo || job.kind != OutputKind::kPng))
@@ -92,8 +94,9 @@ bool read_output(const RenderCommand& cmd, RenderJob& job) {
     return fail(std::string(job.aovs.empty() ? "--exr-float" : "--aov") +
                 " applies to EXR output (-o NAME.exr or NAME_####.exr)");
   if (job.chunk && !is_sequence(job.kind))
-    return fail("--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
-                "NAME_####.exr), then join them with rtcli encode");
+    return fail(
+        "--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
+        "NAME_####.exr), then join them with rtcli encode");
   if ((job.crop || job.tile) && (job.aa_debug || job.samples_debug))
     return fail(std::string(job.aa_debug ? "--aa-debug" : "--samples-debug") +
                 " shows the whole image; it does not go with " + (job.crop ? "--crop" : "--tile"));

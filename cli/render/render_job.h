@@ -22,11 +22,11 @@ namespace rt {
 // The choices that shape the pixels without being render settings (rtcli:settings records them:
 // cli/render/settings_text.h). Empty: the scene's own.
 struct PixelChoices {
-  std::string camera;       // a glTF camera by name
-  std::string background;   // "R,G,B" or one number, as given
+  std::string camera;      // a glTF camera by name
+  std::string background;  // "R,G,B" or one number, as given
   std::string ambient;
-  std::string animation;    // a model on its own: one of its animations
-  std::optional<float> fps;  // a model on its own: its timeline's rate
+  std::string animation;             // a model on its own: one of its animations
+  std::optional<float> fps;          // a model on its own: its timeline's rate
   std::optional<StereoMode> stereo;  // replacing the camera's mode
 };
 
@@ -36,7 +36,7 @@ struct RenderJob {
   bool frames_given = false;  // false: the scene's timeline decides (the first frame, or all for an animation)
   std::string output;         // the file, or the pattern of numbered files (default <scene name>.png or .gif)
   OutputKind kind = OutputKind::kPng;
-  std::string stats;          // --stats: the render's figures as JSON to this file; empty: none
+  std::string stats;  // --stats: the render's figures as JSON to this file; empty: none
   // The part of the render this process does (cli/frames/render_share.h); the crop is checked
   // against the image's size by the plan.
   std::optional<PixelWindow> crop;

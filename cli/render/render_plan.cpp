@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "cli/frames/render_metadata.h"
-#include "cli/render/settings_text.h"
 #include "cli/frames/render_share.h"
+#include "cli/render/settings_text.h"
 #include "core/render/band_split.h"
 
 namespace rt {
@@ -18,7 +18,9 @@ bool fail(const std::string& message) {
 // A stereo camera renders two views: one file of one view cannot hold them.
 bool check_stereo(const RenderJob& job, const StereoSettings& stereo) {
   if (stereo.enabled() && (is_exr(job.kind) || job.crop || job.tile))
-    return fail(std::string(is_exr(job.kind) ? "EXR output" : job.crop ? "--crop" : "--tile") +
+    return fail(std::string(is_exr(job.kind) ? "EXR output"
+                            : job.crop       ? "--crop"
+                                             : "--tile") +
                 " renders one view; it does not go with a stereo camera (--stereo none renders the left eye's view)");
   return true;
 }
@@ -51,7 +53,8 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
     const Share& share = *job.chunk;
     plan.frames = frames.chunk(share.index, share.count);
     if (plan.frames.frames.empty())
-      plan.skipped = "chunk " + share_text(share) + " of " + std::to_string(frames.count()) + " frames has none to render";
+      plan.skipped =
+          "chunk " + share_text(share) + " of " + std::to_string(frames.count()) + " frames has none to render";
   }
   plan.content.aovs = job.aovs;
   plan.content.exr_float = job.exr_float;

@@ -7,8 +7,8 @@
 
 namespace rt {
 
-void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames,
-                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used) {
+void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames, const RenderTotals& t,
+                   double load_seconds, const std::vector<std::string>& written, Isa isa_used) {
   const char* isa = isa_name(isa_used);  // whose BVH kernels traced the rays
   const double rate = t.seconds > 0 ? static_cast<double>(t.rays.total()) / t.seconds : 0.0;
   const unsigned threads = t.last.threads;

@@ -13,7 +13,7 @@
 
 namespace rt {
 
-void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames,
-                   const RenderTotals& t, double load_seconds, const std::vector<std::string>& written, Isa isa_used);
+void print_summary(const RenderJob& job, const RenderSettings& settings, const FrameList& frames, const RenderTotals& t,
+                   double load_seconds, const std::vector<std::string>& written, Isa isa_used);
 
 }  // namespace rt

@@ -1,5 +1,5 @@
-// What a placed mesh instance is, and the mesh walk CSG solids ask for (core/csg/csg_mesh_hits.h). The queries themselves are the kernels of
-// core/accel/bvh_kernels_impl.h, one build per instruction set.
+// What a placed mesh instance is, and the mesh walk CSG solids ask for (core/csg/csg_mesh_hits.h). The queries
+// themselves are the kernels of core/accel/bvh_kernels_impl.h, one build per instruction set.
 #include "core/accel/bvh.h"
 
 #include "core/csg/csg_mesh_hits.h"

@@ -68,7 +68,7 @@ struct BvhBuildOptions {
 struct BvhStats {
   size_t nodes = 0;  // kBvhWidth-wide nodes
   size_t leaves = 0;
-  int max_depth = 0;      // of the wide tree
+  int max_depth = 0;  // of the wide tree
   // Of the binary tree it was collapsed from, relative to one primitive test; triangles tested
   // four at a time count one test a quad, as the builder counts them.
   double sah_cost = 0.0;
@@ -107,7 +107,8 @@ class Bvh {
   // more than the call. Same crossings in the same order as for_each_hit.
   template <class Visitor>
   bool visit_hits(const Ray& ray, Visitor& visit) const {
-    return visit_hits_through(ray, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); }, &visit);
+    return visit_hits_through(
+        ray, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); }, &visit);
   }
   bool visit_hits_through(const Ray& ray, HitVisitorFn visit, void* visitor) const {
     return kernels_->visit_hits(*this, ray, visit, visitor);

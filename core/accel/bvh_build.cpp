@@ -375,7 +375,8 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
       share.centroids.extend(p.centroid(), p.centroid());
     }
   });
-  if (bad.load() < n) throw std::invalid_argument("primitive " + std::to_string(bad.load()) + " has bounds that are not finite");
+  if (bad.load() < n)
+    throw std::invalid_argument("primitive " + std::to_string(bad.load()) + " has bounds that are not finite");
   Range root{0, n, {}, {}};
   for (const Range& share : shares) {
     root.bounds.extend(share.bounds);

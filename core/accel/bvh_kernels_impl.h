@@ -5,7 +5,8 @@
 // The entry points are flattened: every inline function they call (the traversal, the triangle
 // and quad tests, glm's maths) is compiled into them, so none is emitted out of line with this
 // file's flags, where the linker could pick it for a baseline caller.
-// tests/tools/check_kernel_symbols.cmake checks that with nm. What stays a call (the analytic shapes, CSG, libm) is baseline code.
+// tests/tools/check_kernel_symbols.cmake checks that with nm. What stays a call (the analytic shapes, CSG, libm) is
+// baseline code.
 #pragma once
 
 #ifndef RTCLI_ISA_KERNEL
@@ -48,7 +49,8 @@ bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ra
     for (unsigned mask = intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2); mask; mask &= mask - 1) {
       const Hit candidate = quad_lane_hit(quads[q], __builtin_ctz(mask), t, b1, b2);
       // The order first: keep() may read a texture.
-      if (precedes(candidate, hit) && keep(candidate.prim, candidate.b1, candidate.b2)) found |= take_if_first(candidate, r, hit);
+      if (precedes(candidate, hit) && keep(candidate.prim, candidate.b1, candidate.b2))
+        found |= take_if_first(candidate, r, hit);
     }
   }
   return found;
@@ -193,9 +195,10 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 // after another.
 [[gnu::flatten]] unsigned occluded_packet(const Bvh& bvh, const Ray* rays, int count) {
 #if defined(__AVX__)
-  if (count > 1) return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, int i, const QuadRay& q) {
-    return occluded_in_leaf(bvh, leaf, rays[i], q);
-  });
+  if (count > 1)
+    return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, int i, const QuadRay& q) {
+      return occluded_in_leaf(bvh, leaf, rays[i], q);
+    });
 #endif
   unsigned blocked = 0;
   for (int i = 0; i < count; ++i)
@@ -211,8 +214,8 @@ namespace {
 // A leaf's nearest crossings for the packet's rays in `lanes`, merged into their hits. A mesh
 // instance takes the rays on into its own BVH as a packet; everything else is the single-ray
 // test, ray by ray. Flattened itself: it calls intersect_packet, so it is not inlined there.
-[[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays, Ray* rays,
-                                Hit* hits) {
+[[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays,
+                                                 Ray* rays, Hit* hits) {
   unsigned found = 0;
   if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) < kMinPacket) {
     for (unsigned m = lanes; m; m &= m - 1) {
@@ -295,9 +298,8 @@ bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit
 
 }  // namespace
 
-extern const BvhKernels kKernels{RTCLI_ISA,        &intersect,       &intersect_cutout,
-                                 &intersect_packet, &occluded,        &occluded_packet,
-                                 &visit_hits};
+extern const BvhKernels kKernels{RTCLI_ISA, &intersect,       &intersect_cutout, &intersect_packet,
+                                 &occluded, &occluded_packet, &visit_hits};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

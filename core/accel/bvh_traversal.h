@@ -17,7 +17,6 @@
 #define RTCLI_ISA_NS isa_generic
 #endif
 
-
 namespace rt {
 namespace RTCLI_ISA_NS {
 

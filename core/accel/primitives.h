@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh_instance.h"
 #include "core/csg/csg_object.h"
 #include "core/mesh.h"
+#include "core/mesh_instance.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/triangle.h"
 

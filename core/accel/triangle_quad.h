@@ -30,7 +30,7 @@ struct QuadRay {
 
 // Bit i set when triangle i is hit inside (tmin, tmax); its t, b1 and b2 are lane i of the outputs.
 RT_SIMD_INLINE unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, float tmin, float tmax, Float4& t,
-                               Float4& b1, Float4& b2) {
+                                       Float4& b1, Float4& b2) {
   const Float4 e1x = load4(q.e1[0]), e1y = load4(q.e1[1]), e1z = load4(q.e1[2]);
   const Float4 e2x = load4(q.e2[0]), e2y = load4(q.e2[1]), e2z = load4(q.e2[2]);
   // p = cross(d, e2); det = dot(e1, p), as glm computes them.
@@ -44,8 +44,8 @@ RT_SIMD_INLINE unsigned intersect_quad(const TriangleQuad& q, const QuadRay& r, 
   b2 = (r.d[0] * qx + r.d[1] * qy + r.d[2] * qz) * inv_det;
   t = (e2x * qx + e2y * qy + e2z * qz) * inv_det;
   const Float4 zero = splat4(0.0f);
-  const Mask4 inside = (det != zero) & (b1 >= zero) & (b2 >= zero) & (b1 + b2 <= splat4(1.0f)) & (t > splat4(tmin)) &
-                       (t < splat4(tmax));
+  const Mask4 inside =
+      (det != zero) & (b1 >= zero) & (b2 >= zero) & (b1 + b2 <= splat4(1.0f)) & (t > splat4(tmin)) & (t < splat4(tmax));
   return movemask4(inside);
 }
 

@@ -28,10 +28,12 @@ void CsgChildIndex::build(uint32_t box, uint32_t begin, uint32_t end, int depth)
   const int axis = centres.largest_axis();
   const uint32_t mid = begin + (end - begin) / 2;
   // Ties broken by the child's index: the same tree on every machine.
-  std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end, [&](const Item& a, const Item& b) {
-    const float ca = a.bounds.empty() ? 0.0f : a.bounds.centre()[axis], cb = b.bounds.empty() ? 0.0f : b.bounds.centre()[axis];
-    return ca < cb || (ca == cb && a.child < b.child);
-  });
+  std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                   [&](const Item& a, const Item& b) {
+                     const float ca = a.bounds.empty() ? 0.0f : a.bounds.centre()[axis],
+                                 cb = b.bounds.empty() ? 0.0f : b.bounds.centre()[axis];
+                     return ca < cb || (ca == cb && a.child < b.child);
+                   });
   const uint32_t left = static_cast<uint32_t>(boxes_.size());
   boxes_.emplace_back();
   boxes_.emplace_back();

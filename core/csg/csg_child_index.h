@@ -52,7 +52,8 @@ class CsgChildIndex {
  private:
   struct Box {
     Aabb bounds;
-    uint32_t first = 0;  // a leaf: its children in items_[first, first + count); else its two boxes, first and first + 1
+    uint32_t first =
+        0;  // a leaf: its children in items_[first, first + count); else its two boxes, first and first + 1
     uint32_t count = 0;
   };
   struct Item {

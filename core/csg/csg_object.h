@@ -9,11 +9,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh_instance.h"
 #include "core/csg/csg_child_index.h"
 #include "core/csg/csg_spans.h"
 #include "core/hit.h"
 #include "core/mesh.h"
+#include "core/mesh_instance.h"
 #include "core/shapes/analytic_shape.h"
 
 namespace rt {
@@ -32,11 +32,11 @@ struct CsgSurface {
 
 struct CsgNode {
   bool leaf = false;
-  CsgOp op = CsgOp::kUnion;    // an operation's
-  uint32_t end = 0;            // one past the last node of this subtree
-  uint32_t first_surface = 0;  // a leaf's surfaces: [first_surface, first_surface + surface_count)
-  uint32_t surface_count = 0;  // a shape has one; a mesh operand one per primitive
-  Aabb bounds;                 // a little wider than exact, so rounding never drops a span
+  CsgOp op = CsgOp::kUnion;              // an operation's
+  uint32_t end = 0;                      // one past the last node of this subtree
+  uint32_t first_surface = 0;            // a leaf's surfaces: [first_surface, first_surface + surface_count)
+  uint32_t surface_count = 0;            // a shape has one; a mesh operand one per primitive
+  Aabb bounds;                           // a little wider than exact, so rounding never drops a span
   uint32_t child_index = kNoChildIndex;  // an operation of many children: its CsgChildIndex
 
   static constexpr uint32_t kNoChildIndex = ~0u;

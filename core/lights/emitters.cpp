@@ -114,8 +114,8 @@ EmitterSample Emitters::sample(const Bvh& bvh, float u_pick, Vec2 u) const {
   EmitterSample s;
   if (entries_.empty()) return s;
   const float target = u_pick * total_;
-  const size_t i = std::min<size_t>(static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), target) - cdf_.begin()),
-                                    entries_.size() - 1);
+  const size_t i = std::min<size_t>(
+      static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), target) - cdf_.begin()), entries_.size() - 1);
   const Entry& e = entries_[i];
   s.hit.prim = e.prim;
   if (e.kind == Kind::kTriangle) {
@@ -152,7 +152,8 @@ float Emitters::area_pdf(const Bvh& bvh, const Hit& hit, Vec3 normal) const {
     case Kind::kShape: return shape_area_pdf(first, bvh.shape(hit.prim), normal);
     case Kind::kCsgOperand:
       for (uint32_t k = d.first; k < d.first + d.count; ++k)
-        if (entries_[k].index == csg_surface_index(hit)) return shape_area_pdf(entries_[k], shape_of(bvh, entries_[k]), normal);
+        if (entries_[k].index == csg_surface_index(hit))
+          return shape_area_pdf(entries_[k], shape_of(bvh, entries_[k]), normal);
       return 0.0f;
   }
   return 0.0f;

@@ -51,9 +51,9 @@ class Emitters {
   struct Entry {
     Kind kind = Kind::kTriangle;
     uint32_t prim = 0;
-    uint32_t index = 0;      // a triangle's in its mesh; a CSG operand's surface in its solid
-    Vec3 p0, e1, e2;         // a triangle in world space: p0 + b1 e1 + b2 e2
-    float weight = 0.0f;     // area x emission weight
+    uint32_t index = 0;   // a triangle's in its mesh; a CSG operand's surface in its solid
+    Vec3 p0, e1, e2;      // a triangle in world space: p0 + b1 e1 + b2 e2
+    float weight = 0.0f;  // area x emission weight
   };
   // Where a primitive's entries are (a mesh's triangles, a CSG solid's operands: contiguous).
   struct Drawn {

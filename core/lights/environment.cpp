@@ -71,7 +71,8 @@ Vec2 EnvironmentImage::sample(Vec2 u, float& pdf) const {
   const float column_width = cdf[x + 1] - cdf[x];
   const float u_in = column_width > 0.0f ? std::clamp((u.x - cdf[x]) / column_width, 0.0f, 0.99999994f) : 0.5f;
   pdf = weight_[y * w + x] * static_cast<float>(w * h);
-  return Vec2((static_cast<float>(x) + u_in) / static_cast<float>(w), (static_cast<float>(y) + v_in) / static_cast<float>(h));
+  return Vec2((static_cast<float>(x) + u_in) / static_cast<float>(w),
+              (static_cast<float>(y) + v_in) / static_cast<float>(h));
 }
 
 float EnvironmentImage::pdf(Vec2 uv) const {
@@ -85,7 +86,7 @@ Environment::Environment(std::shared_ptr<const EnvironmentImage> image, float in
 
 Vec2 Environment::to_uv(Vec3 d) const {
   d = glm::normalize(d);
-  float longitude = std::atan2(d.x, -d.z) - rotate_;  // 0 towards -Z, pi/2 towards +X
+  float longitude = std::atan2(d.x, -d.z) - rotate_;                      // 0 towards -Z, pi/2 towards +X
   longitude -= 2.0f * kPi * std::floor(longitude / (2.0f * kPi) + 0.5f);  // into [-pi, pi)
   const float u = 0.5f + longitude / (2.0f * kPi);
   const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi;

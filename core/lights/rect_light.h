@@ -23,7 +23,7 @@ struct RectLight {
   Vec3 corner{0.0f};
   Vec3 edge1{1.0f, 0.0f, 0.0f};
   Vec3 edge2{0.0f, 0.0f, 1.0f};
-  Vec3 color{1.0f};  // the radiance of its face: linear RGB, already multiplied by the scene's "intensity"
+  Vec3 color{1.0f};         // the radiance of its face: linear RGB, already multiplied by the scene's "intensity"
   Attenuation attenuation;  // Whitted's
   bool two_sided = false;
 

@@ -16,8 +16,8 @@ struct Aovs {
   // Blender's depth where nothing is met.
   static constexpr float kFarAway = 1e10f;
 
-  Vec3 albedo{0.0f};  // the diffuse colour (kd, less what the material transmits); 0 on a light's face
-  Vec3 normal{0.0f};  // the shading normal, world space, bump and normal maps applied, facing the ray
+  Vec3 albedo{0.0f};          // the diffuse colour (kd, less what the material transmits); 0 on a light's face
+  Vec3 normal{0.0f};          // the shading normal, world space, bump and normal maps applied, facing the ray
   float distance = kFarAway;  // along the camera ray
 
   // Adds a sample's layers with `weight` (its share of the pixel), the distance the nearer.

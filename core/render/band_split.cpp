@@ -15,7 +15,8 @@ std::vector<int> band_edges(const std::vector<double>& row_costs, int height, in
   // The cost to the top of full-resolution row y: the preview rows above it, and a share of the
   // one it lies in.
   std::vector<double> above(static_cast<size_t>(preview_rows) + 1, 0.0);
-  for (int r = 0; r < preview_rows; ++r) above[static_cast<size_t>(r) + 1] = above[static_cast<size_t>(r)] + row_costs[static_cast<size_t>(r)];
+  for (int r = 0; r < preview_rows; ++r)
+    above[static_cast<size_t>(r) + 1] = above[static_cast<size_t>(r)] + row_costs[static_cast<size_t>(r)];
   const auto cost_to = [&](int y) {
     const double at = static_cast<double>(y) * preview_rows / height;
     const int r = std::min(preview_rows - 1, static_cast<int>(at));
@@ -51,7 +52,8 @@ std::vector<PixelWindow> cost_balanced_bands(const Scene& scene, const RenderSet
   if (count > 1) {
     Film film;
     for (int r = 0; r < preview.height; ++r) {
-      const RenderStats s = render(scene, preview, film, {}, frame, RenderView{nullptr, 0, PixelWindow{0, r, preview.width, r + 1}});
+      const RenderStats s =
+          render(scene, preview, film, {}, frame, RenderView{nullptr, 0, PixelWindow{0, r, preview.width, r + 1}});
       costs[static_cast<size_t>(r)] = static_cast<double>(s.rays.total());
     }
   }

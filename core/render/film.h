@@ -1,7 +1,7 @@
 // What a render produces per pixel: the colour, plus the bookkeeping channels a pixel sampler
 // writes beside it: how many camera samples the pixel's value averages, and how deep adaptive
-// anti-aliasing split it (0 = not refined); and when asked, the first hit's layers (aovs.h). Each worker fills a FilmTile; the renderer copies
-// the finished tile into the Film, so no two threads ever write the same memory.
+// anti-aliasing split it (0 = not refined); and when asked, the first hit's layers (aovs.h). Each worker fills a
+// FilmTile; the renderer copies the finished tile into the Film, so no two threads ever write the same memory.
 #pragma once
 
 #include <algorithm>
@@ -50,7 +50,7 @@ struct Film {
   // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
   Image albedo, normal;
   std::vector<float> distance;
-  int x0 = 0, y0 = 0;             // where the film's first pixel is in the image
+  int x0 = 0, y0 = 0;  // where the film's first pixel is in the image
 
   Film() = default;
   Film(int width, int height) { allocate(width, height, nullptr); }

@@ -51,10 +51,8 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
     const Vec3 f = bsdf.eval(ls.direction);
     if (max_component(f) <= 0.0f) continue;
     if (!visible(s, ls.direction, ls.distance, ctx)) continue;
-    if (ls.delta)
-      sum += f * ls.radiance * kDeltaLightScale;
-    else
-      sum += f * ls.radiance * (light_weight(strategy, ls.pdf, bsdf.pdf(ls.direction)) / ls.pdf);
+    if (ls.delta) sum += f * ls.radiance * kDeltaLightScale;
+    else sum += f * ls.radiance * (light_weight(strategy, ls.pdf, bsdf.pdf(ls.direction)) / ls.pdf);
   }
   return sum;
 }

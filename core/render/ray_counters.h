@@ -12,8 +12,8 @@ namespace rt {
 enum class RayKind : uint8_t { kCamera, kShadow, kReflection, kRefraction, kGlossy, kBounce };
 inline constexpr size_t kRayKindCount = 6;
 // Names as printed in summaries and `rtcli bench`, in RayKind order.
-inline constexpr std::array<const char*, kRayKindCount> kRayKindNames = {"camera", "shadow", "reflection", "refraction",
-                                                                         "glossy", "bounce"};
+inline constexpr std::array<const char*, kRayKindCount> kRayKindNames = {"camera",     "shadow", "reflection",
+                                                                         "refraction", "glossy", "bounce"};
 
 struct RayCounters {
   std::array<uint64_t, kRayKindCount> count{};

@@ -45,7 +45,10 @@ inline Image sample_count_heat_map(const Film& film, int most) {
   const float top = static_cast<float>(kRefinementColors.size() - 1);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
-      const float t = std::clamp(static_cast<float>(film.samples[film.index(x, y)]) / static_cast<float>(std::max(1, most)), 0.0f, 1.0f) * top;
+      const float t =
+          std::clamp(static_cast<float>(film.samples[film.index(x, y)]) / static_cast<float>(std::max(1, most)), 0.0f,
+                     1.0f) *
+          top;
       const size_t i = std::min(static_cast<size_t>(t), kRefinementColors.size() - 2);
       out.at(x, y) = glm::mix(kRefinementColors[i], kRefinementColors[i + 1], t - static_cast<float>(i));
     }

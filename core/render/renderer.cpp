@@ -17,8 +17,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::unique_ptr<Integrator> integrator = make_integrator(settings.integrator);
   if (!integrator) throw std::invalid_argument("unknown integrator \"" + settings.integrator + "\"");
-  const PixelWindow window =
-      view.window.empty() ? PixelWindow::whole(settings.width, settings.height) : view.window;
+  const PixelWindow window = view.window.empty() ? PixelWindow::whole(settings.width, settings.height) : view.window;
   if (!window.inside(settings.width, settings.height)) throw std::invalid_argument("render window outside the image");
   const TileGrid grid(window, settings.tile_size);
   const std::unique_ptr<PixelSampler> sampler = make_pixel_sampler(settings, grid);
@@ -51,8 +50,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
     // `counters` share a cache line, and incrementing them per ray would bounce it between cores.
     RayCounters mine;
-    PixelContext ctx{scene, settings, *integrator, mine,     frame,   control.cancel,
-                     &pixels_done, view.camera, view.eye, view.aovs};
+    PixelContext ctx{scene,          settings,     *integrator, mine,     frame,
+                     control.cancel, &pixels_done, view.camera, view.eye, view.aovs};
     FilmTile tile_film;
     // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
     for (int k = next++; k < grid.count(); k = next++) {

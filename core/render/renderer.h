@@ -9,8 +9,8 @@
 #include <functional>
 
 #include "core/image.h"
-#include "core/render/film.h"
 #include "core/pixel_window.h"
+#include "core/render/film.h"
 #include "core/render/ray_counters.h"
 #include "core/render_settings.h"
 #include "core/scene.h"

@@ -24,7 +24,9 @@ namespace rt {
 inline size_t light_count(const Scene& scene) { return scene.lights.size() + 2; }
 
 // Whether light l is a delta light (no ray meets it by chance: light sampling alone finds it).
-inline bool light_is_delta(const Scene& scene, size_t l) { return l < scene.lights.size() && is_delta(scene.lights[l]); }
+inline bool light_is_delta(const Scene& scene, size_t l) {
+  return l < scene.lights.size() && is_delta(scene.lights[l]);
+}
 
 // A sample of light l for the shading point `point`, from the numbers of `samples` at bounce
 // `path`. pdf 0: none (nothing to draw, or a point the light does not emit from).

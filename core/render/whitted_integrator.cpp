@@ -7,8 +7,8 @@
 namespace rt {
 
 // Inlined into trace(), the recursion's hot call: as a call of its own it cost glossy.json 2% (measured).
-[[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met,
-                                                            const PathState& state, TraceContext& ctx) const {
+[[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met, const PathState& state,
+                                                            TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
   Vec3 radiance = scene.background.radiance(ray.direction);
   // An area light's face seen before any surface shows its emitted radiance, so mirrors show

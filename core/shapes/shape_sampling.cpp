@@ -30,7 +30,7 @@ float object_area(ShapeKind kind) {
     case ShapeKind::kSphere: return 4.0f * kPi;
     case ShapeKind::kCube: return 24.0f;
     case ShapeKind::kPlane: return 4.0f;
-    case ShapeKind::kCylinder: return 4.0f * kPi;        // side 2 pi, two caps of pi
+    case ShapeKind::kCylinder: return 4.0f * kPi;         // side 2 pi, two caps of pi
     case ShapeKind::kCone: return kPi * (1.0f + kSqrt2);  // side pi sqrt(2), base pi
   }
   return 0.0f;
@@ -39,9 +39,7 @@ float object_area(ShapeKind kind) {
 ShapePoint sample_object_surface(ShapeKind kind, Vec2 u) {
   ShapePoint s;
   switch (kind) {
-    case ShapeKind::kSphere:
-      s.position = s.normal = uniform_sphere(u);
-      return s;
+    case ShapeKind::kSphere: s.position = s.normal = uniform_sphere(u); return s;
     case ShapeKind::kPlane:
       s.position = Vec3(2.0f * u.x - 1.0f, 0.0f, 2.0f * u.y - 1.0f);
       s.normal = Vec3(0.0f, 1.0f, 0.0f);

@@ -11,9 +11,9 @@
 namespace rt {
 
 struct ShapePoint {
-  Vec3 position{0.0f};  // object space, on the surface
+  Vec3 position{0.0f};            // object space, on the surface
   Vec3 normal{0.0f, 0.0f, 1.0f};  // object space, unit, outward
-  uint32_t part = 0;    // as the shape's intersection reports it
+  uint32_t part = 0;              // as the shape's intersection reports it
 };
 
 // The area of the shape's canonical surface: the unit sphere's 4 pi, the cube's 24, ...

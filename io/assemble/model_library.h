@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/scene_assets.h"
+#include "io/assemble/texture_library.h"
 #include "io/base/load_options.h"
 #include "io/base/reporter.h"
-#include "io/assemble/texture_library.h"
 #include "io/gltf/loader.h"
 #include "io/scene/description.h"
 

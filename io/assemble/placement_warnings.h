@@ -24,7 +24,6 @@ void warn_stacked_copies(const SceneGraph& g, const Pose& pose, const std::vecto
                          Reporter& report);
 
 // A CSG solid that encloses nothing (an intersection of operands that do not meet).
-void warn_empty_csgs(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers,
-                     Reporter& report);
+void warn_empty_csgs(const SceneGraph& g, const Pose& pose, const std::vector<std::string>& pointers, Reporter& report);
 
 }  // namespace rt

@@ -1,5 +1,6 @@
 #include "io/image/exr_file.h"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfArray.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -11,16 +12,15 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
-#include <Imath/half.h>
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <exception>
+#include <fstream>
 #include <stdexcept>
 
-#include "io/base/input_file.h"
 #include "io/base/atomic_file.h"
+#include "io/base/input_file.h"
 #include "io/image/exr_structure.h"
 
 namespace rt {
@@ -123,12 +123,13 @@ bool write_exr(const std::string& path, const ExrImage& image, bool full_float, 
       for (size_t c = 0; c < n; ++c) {
         header.channels().insert(channel_name(layer, layer.channels[c]), Imf::Channel(type));
         // OpenEXR addresses a slice by the data window's absolute coordinates (Slice::Make).
-        frame.insert(channel_name(layer, layer.channels[c]),
-                     full_float ? Imf::Slice::Make(Imf::FLOAT, layer.values.data() + c, header.dataWindow(),
-                                                   sizeof(float) * n, sizeof(float) * n * static_cast<size_t>(w.width()))
-                                : Imf::Slice::Make(Imf::HALF, halves.back().data() + c, header.dataWindow(),
-                                                   sizeof(Imath::half) * n,
-                                                   sizeof(Imath::half) * n * static_cast<size_t>(w.width())));
+        frame.insert(
+            channel_name(layer, layer.channels[c]),
+            full_float
+                ? Imf::Slice::Make(Imf::FLOAT, layer.values.data() + c, header.dataWindow(), sizeof(float) * n,
+                                   sizeof(float) * n * static_cast<size_t>(w.width()))
+                : Imf::Slice::Make(Imf::HALF, halves.back().data() + c, header.dataWindow(), sizeof(Imath::half) * n,
+                                   sizeof(Imath::half) * n * static_cast<size_t>(w.width())));
       }
     }
     MemoryStream stream;
@@ -161,8 +162,8 @@ std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, s
     image.height = display.max.y - display.min.y + 1;
     image.window = PixelWindow{data.min.x, data.min.y, data.max.x + 1, data.max.y + 1};
     if (display.min.x != 0 || display.min.y != 0 || image.width <= 0 || image.height <= 0 ||
-        static_cast<uint64_t>(image.width) * static_cast<uint64_t>(image.height) > max_pixels ||
-        image.window.empty() || !image.window.inside(image.width, image.height)) {
+        static_cast<uint64_t>(image.width) * static_cast<uint64_t>(image.height) > max_pixels || image.window.empty() ||
+        !image.window.inside(image.width, image.height)) {
       error = path + ": expected an image of at most " + std::to_string(max_pixels) +
               " pixels whose data window lies in its display window from (0, 0)";
       return std::nullopt;

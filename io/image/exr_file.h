@@ -30,7 +30,7 @@ struct ExrImage {
   PixelWindow window;         // the pixels held (data window)
   std::vector<ExrLayer> layers;
   std::map<std::string, std::string> attributes;  // string attributes, e.g. "rtcli:scene_hash"
-  bool full_float = false;  // read: every channel was 32-bit float (not half)
+  bool full_float = false;                        // read: every channel was 32-bit float (not half)
 
   const ExrLayer* layer(const std::string& name) const;
 };

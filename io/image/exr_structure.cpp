@@ -12,7 +12,8 @@ constexpr uint64_t kMaxHeaderBytes = uint64_t{1} << 22;
 
 // Scanlines per chunk of each compression, in OpenEXR's numbering (ImfCompression.h).
 constexpr int kLinesPerChunk[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
-constexpr const char* kCompressionNames[] = {"none", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44", "B44A", "DWAA", "DWAB"};
+constexpr const char* kCompressionNames[] = {"none",  "RLE", "ZIPS", "ZIP",  "PIZ",
+                                             "PXR24", "B44", "B44A", "DWAA", "DWAB"};
 
 // The most a chunk's bytes can decode to, per compressed byte, where the method bounds it: stored
 // (1), RLE (a run of up to 128 bytes in 2: 64) and zlib (deflate's 1032:1, with room for the
@@ -74,13 +75,15 @@ std::optional<std::pair<uint64_t, int>> channel_list(const Reader& r, size_t at,
 // preview image. Types OpenEXR does not know it keeps as opaque bytes of the declared size.
 std::string attribute_size_problem(const Reader& r, const std::string& type, uint32_t size) {
   static const std::pair<const char*, uint32_t> kFixed[] = {
-      {"box2i", 16},  {"box2f", 16},    {"float", 4},     {"double", 8},       {"int", 4},        {"v2i", 8},
-      {"v2f", 8},     {"v2d", 16},      {"v3i", 12},      {"v3f", 12},         {"v3d", 24},       {"m33f", 36},
-      {"m33d", 72},   {"m44f", 64},     {"m44d", 128},    {"compression", 1},  {"lineOrder", 1},  {"envmap", 1},
-      {"deepImageState", 1}, {"chromaticities", 32}, {"rational", 8}, {"keycode", 28}, {"timecode", 8}, {"tiledesc", 9}};
+      {"box2i", 16},      {"box2f", 16},    {"float", 4},    {"double", 8},         {"int", 4},
+      {"v2i", 8},         {"v2f", 8},       {"v2d", 16},     {"v3i", 12},           {"v3f", 12},
+      {"v3d", 24},        {"m33f", 36},     {"m33d", 72},    {"m44f", 64},          {"m44d", 128},
+      {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},   {"deepImageState", 1}, {"chromaticities", 32},
+      {"rational", 8},    {"keycode", 28},  {"timecode", 8}, {"tiledesc", 9}};
   for (const auto& [name, bytes] : kFixed)
     if (type == name)
-      return size == bytes ? "" : "declared " + std::to_string(size) + " bytes, where it takes " + std::to_string(bytes);
+      return size == bytes ? ""
+                           : "declared " + std::to_string(size) + " bytes, where it takes " + std::to_string(bytes);
   if (type == "chlist") {
     // Entries, then a NUL that must be the value's last byte.
     Reader c{r.bytes, r.at};
@@ -104,8 +107,9 @@ std::string attribute_size_problem(const Reader& r, const std::string& type, uin
   if (type == "preview") {
     if (size < 8) return "declared " + std::to_string(size) + " bytes, fewer than its size takes";
     const uint64_t w = r.u32(r.at), h = r.u32(r.at + 4);
-    return (size - 8) % 4 == 0 && w * h == (size - 8) / 4 ? "" : "a " + std::to_string(w) + " x " + std::to_string(h) + " preview in " +
-                                            std::to_string(size) + " bytes";
+    return (size - 8) % 4 == 0 && w * h == (size - 8) / 4 ? ""
+                                                          : "a " + std::to_string(w) + " x " + std::to_string(h) +
+                                                                " preview in " + std::to_string(size) + " bytes";
   }
   return "";  // string (its size is its length) and unknown types (opaque bytes)
 }
@@ -164,14 +168,15 @@ bool check_exr_structure(const std::vector<unsigned char>& bytes, const ExrLimit
   out.channels = channels->second;
   out.window_pixels = data->width() * data->height();
   if (static_cast<uint64_t>(out.channels) * out.window_pixels > limits.max_values)
-    return bad(std::to_string(out.channels) + " channels of " + std::to_string(out.window_pixels) + " pixels: " +
-               std::to_string(static_cast<uint64_t>(out.channels) * out.window_pixels) + " values, more than the " +
-               std::to_string(limits.max_values) + " read at most");
+    return bad(std::to_string(out.channels) + " channels of " + std::to_string(out.window_pixels) +
+               " pixels: " + std::to_string(static_cast<uint64_t>(out.channels) * out.window_pixels) +
+               " values, more than the " + std::to_string(limits.max_values) + " read at most");
 
   // The offset table, then each chunk: its line, its size, inside the file and apart from the others.
   const uint64_t lines = data->height(), per_chunk = static_cast<uint64_t>(kLinesPerChunk[compression]);
   const uint64_t chunks = (lines + per_chunk - 1) / per_chunk;
-  if (!r.has(chunks * 8)) return bad("incomplete: its offset table of " + std::to_string(chunks) + " chunks ends early");
+  if (!r.has(chunks * 8))
+    return bad("incomplete: its offset table of " + std::to_string(chunks) + " chunks ends early");
   const size_t table = r.at, first_byte = r.at + chunks * 8;
   struct Span {
     uint64_t begin, end;

@@ -1,5 +1,5 @@
-#include <algorithm>
 #include "io/image/gif_file.h"
+#include <algorithm>
 
 #include <gif_lib.h>
 

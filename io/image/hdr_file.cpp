@@ -42,7 +42,9 @@ bool read_scanline(Cursor& c, int width, std::vector<unsigned char>& row, std::s
   const bool rle = width >= 8 && width < 32768 && p[0] == 2 && p[1] == 2 && (p[2] & 0x80) == 0;
   if (!rle) {
     if (p[0] == 1 && p[1] == 1 && p[2] == 1) {
-      error = "it uses the old run-length encoding, which rtcli does not read; save it again (any current tool writes the new one)";
+      error =
+          "it uses the old run-length encoding, which rtcli does not read; save it again (any current tool writes the "
+          "new one)";
       return false;
     }
     if (c.left() < 4 * w) {
@@ -130,12 +132,12 @@ std::optional<HdrImage> decode_hdr(std::span<const unsigned char> bytes, uint64_
   // a run of at most 127 bytes in 2, for each of 4 channels; else 4 bytes a pixel), checked before
   // the texels are allocated: a header promising 8192 x 4096 with no pixels took 400 MB.
   const bool rle_width = width >= 8 && width < 32768;
-  const uint64_t min_line = rle_width ? 4 + 4 * 2 * ((static_cast<uint64_t>(width) + 126) / 127)
-                                      : 4 * static_cast<uint64_t>(width);
+  const uint64_t min_line =
+      rle_width ? 4 + 4 * 2 * ((static_cast<uint64_t>(width) + 126) / 127) : 4 * static_cast<uint64_t>(width);
   if (c.left() / min_line < static_cast<uint64_t>(height)) {
-    error = "the header promises " + std::to_string(width) + " x " + std::to_string(height) + " texels, which take at least " +
-            std::to_string(min_line * static_cast<uint64_t>(height)) + " bytes, and " + std::to_string(c.left()) +
-            " follow it (cut short?)";
+    error = "the header promises " + std::to_string(width) + " x " + std::to_string(height) +
+            " texels, which take at least " + std::to_string(min_line * static_cast<uint64_t>(height)) +
+            " bytes, and " + std::to_string(c.left()) + " follow it (cut short?)";
     return std::nullopt;
   }
   HdrImage image;

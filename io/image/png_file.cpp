@@ -1,8 +1,8 @@
 #include "io/image/png_file.h"
 
 #include "core/render_settings.h"
-#include "io/base/input_file.h"
 #include "io/base/atomic_file.h"
+#include "io/base/input_file.h"
 #include "io/image/image_header.h"
 #include "io/image/png_encoder.h"
 #include "io/image/png_jpeg_decoder.h"

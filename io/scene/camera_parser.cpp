@@ -58,7 +58,8 @@ void check_eyes(const JsonReader& r, const std::string& ptr, const CameraDescrip
     r.error(ptr + (has_convergence ? "/convergence" : "/eye_separation"),
             "expected eye_separation / convergence at most " + format_number(2.0 * kMaxEyeTurn) +
                 " (each eye turns its view by half of it), found " + format_number(c.stereo.eye_separation) + " / " +
-                format_number(convergence) + (has_convergence ? "" : " (the convergence defaults to the focus distance)"));
+                format_number(convergence) +
+                (has_convergence ? "" : " (the convergence defaults to the focus distance)"));
   } else if (!std::isfinite(max_abs_component(c.position) + half)) {
     r.error(ptr + "/eye_separation", "expected the eyes to fit in single precision (|x| < 3.4e38), found an eye at " +
                                          format_number(max_abs_component(c.position)) + " + " + format_number(half));
@@ -128,8 +129,7 @@ void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
     return;
   }
   if (c.stereo.enabled()) check_eyes(r, o.child("stereo"), c);
-  if (!(glm::length(c.up) > 0.0f) ||
-             glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
+  if (!(glm::length(c.up) > 0.0f) || glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f) {
     r.error(up ? o.child("up") : o.child("look_at"),
             "expected an up direction not parallel to the viewing direction, found one parallel to it");
   }

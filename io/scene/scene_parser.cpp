@@ -40,8 +40,7 @@ void parse_antialias(const JsonReader& r, const Json& v, const std::string& ptr,
   if (const auto t = a.number("threshold", kThreshold)) aa.threshold = static_cast<float>(*t);
   if (const auto d = a.number("max_depth", kAdaptiveDepth)) aa.max_depth = static_cast<int>(*d);
   if (const Json* p = a.get("positions")) {
-    if (const auto k = read_choice(r, *p, a.child("positions"), kSamplePositions))
-      aa.positions = *k;
+    if (const auto k = read_choice(r, *p, a.child("positions"), kSamplePositions)) aa.positions = *k;
   }
   a.finish();
 }

@@ -60,8 +60,7 @@ void parse_mapping(const JsonReader& r, ObjectReader& o, TextureMapping& m) {
       m.axis = static_cast<ProjectionAxis>(*k + 1);
   }
   if (const Json* f = o.get("filter")) {
-    if (const auto k = read_choice(r, *f, o.child("filter"), kTextureFilters))
-      m.filter = *k;
+    if (const auto k = read_choice(r, *f, o.child("filter"), kTextureFilters)) m.filter = *k;
   }
 }
 

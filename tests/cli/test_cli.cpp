@@ -178,8 +178,10 @@ TEST_CASE("cli: an output that cannot be written is refused before rendering", "
 TEST_CASE("cli: bench runs on a small model, and replays the rays it saved", "[cli][bench]") {
   const std::string rays = output_path("gem.rays");
   fs::remove(rays);
-  Run r = rtcli("bench scenes/models/gem.gltf --scene scenes/default.json --path-scene scenes/default.json --repeats 1 "
-                "--save-rays '" + rays + "'");
+  Run r = rtcli(
+      "bench scenes/models/gem.gltf --scene scenes/default.json --path-scene scenes/default.json --repeats 1 "
+      "--save-rays '" +
+      rays + "'");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("BVH build, cold") && Catch::Contains("BVH build, warm") &&
                            Catch::Contains("incoherent (Mray/s)") && Catch::Contains("occlusion (Mray/s)") &&
@@ -294,8 +296,8 @@ TEST_CASE("cli: --preview renders a draft: one ray a pixel, a quarter of the sha
   CHECK_THAT(s, Catch::Contains("\"antialias\": \"none\"") && Catch::Contains("\"shadow_samples\": 4") &&
                     Catch::Contains("\"camera_rays_per_pixel\": 1.0"));
   // An option beside it still wins.
-  r = rtcli("render scenes/csg.json --width 64 --height 36 --preview --shadow-samples 9 -o '" + image +
-            "' --stats '" + stats + "'");
+  r = rtcli("render scenes/csg.json --width 64 --height 36 --preview --shadow-samples 9 -o '" + image + "' --stats '" +
+            stats + "'");
   REQUIRE(r.code == 0);
   s = read_file(stats);
   CHECK_THAT(s, Catch::Contains("\"shadow_samples\": 9") && Catch::Contains("\"antialias\": \"none\""));
@@ -312,7 +314,8 @@ TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_m
   const std::string plain = output_path("tone_plain.png"), clamp = output_path("tone_clamp.png");
   const std::string filmic = output_path("tone_filmic.png"), stats = output_path("tone.json");
   REQUIRE(rtcli("render scenes/soft_shadows.json " + small("-o '" + plain + "'")).code == 0);
-  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--tone-map clamp --exposure 0 -o '" + clamp + "'")).code == 0);
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--tone-map clamp --exposure 0 -o '" + clamp + "'")).code ==
+          0);
   CHECK(read_file(plain) == read_file(clamp));
   r = rtcli("render scenes/soft_shadows.json " +
             small("--tone-map filmic --exposure 1.5 -o '" + filmic + "' --stats '" + stats + "'"));
@@ -322,21 +325,24 @@ TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_m
   CHECK_THAT(s, Catch::Contains("\"tone_map\": \"filmic\"") && Catch::Contains("\"exposure\": 1.5"));
   // A debug view is data, never tone mapped.
   const std::string normals_plain = output_path("tone_normals_plain.png"), normals = output_path("tone_normals.png");
-  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--integrator normals -o '" + normals_plain + "'")).code == 0);
-  REQUIRE(rtcli("render scenes/soft_shadows.json " +
-                small("--integrator normals --tone-map filmic --exposure 2 -o '" + normals + "' --stats '" + stats + "'"))
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--integrator normals -o '" + normals_plain + "'")).code ==
+          0);
+  REQUIRE(rtcli("render scenes/soft_shadows.json " + small("--integrator normals --tone-map filmic --exposure 2 -o '" +
+                                                           normals + "' --stats '" + stats + "'"))
               .code == 0);
   CHECK(read_file(normals) == read_file(normals_plain));
   CHECK_THAT(read_file(stats), Catch::Contains("\"tone_map\": \"clamp\"") && Catch::Contains("\"exposure\": 0.0"));
   // The scene keys, and a bad one reported with its place.
-  std::string scene = write_file("tone_scene.json", R"({"render": {"width": 16, "height": 9, "tone_map": "filmic", "exposure": -1},
+  std::string scene =
+      write_file("tone_scene.json", R"({"render": {"width": 16, "height": 9, "tone_map": "filmic", "exposure": -1},
     "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
     "lights": [{"type": "point", "position": [1, 2, 3]}],
     "materials": {"m": {"kd": 0.8}}, "nodes": [{"shape": "sphere", "material": "m"}]})");
   r = rtcli("render '" + scene + "' -q -o '" + output_path("tone_scene.png") + "' --stats '" + stats + "'");
   REQUIRE(r.code == 0);
   CHECK_THAT(read_file(stats), Catch::Contains("\"tone_map\": \"filmic\"") && Catch::Contains("\"exposure\": -1.0"));
-  scene = write_file("tone_bad.json", R"({"render": {"tone_map": "aces"}, "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+  scene = write_file("tone_bad.json",
+                     R"({"render": {"tone_map": "aces"}, "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
     "nodes": []})");
   r = rtcli("validate '" + scene + "'");
   CHECK(r.code == 2);

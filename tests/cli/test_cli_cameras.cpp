@@ -124,18 +124,21 @@ TEST_CASE("cli cameras: stereo numbers whose eyes overflow single precision are 
   for (const char* projection : {"perspective", "equirectangular", "fisheye"}) {
     for (const auto& c : cases) {
       INFO(projection << " " << c[0] << " " << c[1]);
-      const std::string file = scene("stereo-overflow.json", std::string(R"("projection": ")") + projection +
-                                                                 R"(", "stereo": {"mode": ")" + c[0] + "\", " + c[1] + "}");
+      const std::string file =
+          scene("stereo-overflow.json", std::string(R"("projection": ")") + projection + R"(", "stereo": {"mode": ")" +
+                                            c[0] + "\", " + c[1] + "}");
       Run r = rtcli("validate '" + file + "'");
       CHECK(r.code == 2);
-      CHECK_THAT(r.output, Catch::Contains(c[2]) && Catch::Contains("expected eye_separation / convergence at most 20000"));
+      CHECK_THAT(r.output,
+                 Catch::Contains(c[2]) && Catch::Contains("expected eye_separation / convergence at most 20000"));
       r = rtcli("render '" + file + "' -o '" + output_path("stereo-overflow.png") + "'");
       CHECK(r.code == 2);
       CHECK_FALSE(fs::exists(output_path("stereo-overflow.png")));
     }
   }
   // Far inside the limit: renders.
-  const std::string fine = scene("stereo-near.json", R"("stereo": {"mode": "anaglyph", "eye_separation": 1, "convergence": 0.001})");
+  const std::string fine =
+      scene("stereo-near.json", R"("stereo": {"mode": "anaglyph", "eye_separation": 1, "convergence": 0.001})");
   CHECK(rtcli("render '" + fine + "' -o '" + output_path("stereo-near.png") + "'").code == 0);
   // --stereo on a camera whose focus distance (the convergence's default) is a denormal: the eyes'
   // rays are not finite, and the traversal answers them with misses rather than a fault.

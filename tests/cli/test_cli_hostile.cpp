@@ -100,7 +100,8 @@ TEST_CASE("cli: a sphere 2e38 away beside two cubes renders", "[cli][hostile]") 
     "materials": {"m": {}}, "lights": [{"type": "point", "position": [0, 5, 5]}],
     "nodes": [{"shape": "sphere", "material": "m", "transform": {"translate": [2e38, 0, 0]}},
               {"shape": "cube", "material": "m"}, {"shape": "cube", "material": "m", "transform": {"translate": [3, 0, 0]}}]})");
-  const Run r = rt::test::rtcli_bounded("render '" + scene + "' --width 40 --height 30 -o '" + output_path("far.png") + "'");
+  const Run r =
+      rt::test::rtcli_bounded("render '" + scene + "' --width 40 --height 30 -o '" + output_path("far.png") + "'");
   CHECK(r.code == 0);
   const std::string beyond =
       write_file("beyond-float.json", R"({"camera": {"position": [0, 0, 8], "look_at": [0, 0, 0]},

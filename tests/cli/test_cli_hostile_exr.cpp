@@ -32,7 +32,8 @@ rt::ExrImage image_of(int width, int height, int layers, rt::PixelWindow window 
   const size_t pixels = static_cast<size_t>(image.window.pixels());
   image.layers.push_back(rt::ExrLayer{"", {"R", "G", "B"}, std::vector<float>(pixels * 3, 0.25f)});
   for (int k = 0; k < layers; ++k)
-    image.layers.push_back(rt::ExrLayer{"extra" + std::to_string(k), {"R", "G", "B"}, std::vector<float>(pixels * 3, 0.5f)});
+    image.layers.push_back(
+        rt::ExrLayer{"extra" + std::to_string(k), {"R", "G", "B"}, std::vector<float>(pixels * 3, 0.5f)});
   return image;
 }
 
@@ -133,10 +134,11 @@ TEST_CASE("EXR: a named pipe as a tile or a frame is refused, not read forever",
   REQUIRE(::mkfifo((dir + "/frame.png").c_str(), 0600) == 0);
   r = rt::test::rtcli_bounded("encode '" + dir + "/frame.png' -o '" + dir + "/m.gif'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("frame 1 of 1, ") && Catch::Contains("frame.png") && Catch::Contains("named pipe"));
+  CHECK_THAT(r.output,
+             Catch::Contains("frame 1 of 1, ") && Catch::Contains("frame.png") && Catch::Contains("named pipe"));
   // A missing frame among others is named by its place.
-  r = rt::test::rtcli_bounded("encode '" + write(dir + "/a.exr", image_of(8, 8, 0)) + "' '" + dir + "/gone.exr' -o '" + dir +
-                    "/m.gif'");
+  r = rt::test::rtcli_bounded("encode '" + write(dir + "/a.exr", image_of(8, 8, 0)) + "' '" + dir + "/gone.exr' -o '" +
+                              dir + "/m.gif'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("frame 2 of 2, ") && Catch::Contains("gone.exr"));
 }
@@ -155,8 +157,7 @@ TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are
     if (std::string(band) == "0/16")
       CHECK_THAT(r.output, Catch::Contains("tile 1/16 is missing") && Catch::Contains("tile 10/16 is missing") &&
                                Catch::Contains("... and 5 more tiles of 16 are missing (15 in all)"));
-    else
-      CHECK_THAT(r.output, Catch::Contains("no tile holds pixel (0, 1)"));
+    else CHECK_THAT(r.output, Catch::Contains("no tile holds pixel (0, 1)"));
   }
   // 300 copies of row 0 of a 300-row image: every pair overlaps (44,850 pairs, each a line before);
   // the first few are named and the rest counted.
@@ -194,7 +195,8 @@ TEST_CASE("merge: a tile's band count is bounded, and long lists of problems are
   CHECK_THAT(g.output, Catch::Contains("grey.exr: expected the colour channels R, G, B"));
 }
 
-TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's delays never wrap", "[exr][hostile][cli]") {
+TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's delays never wrap",
+          "[exr][hostile][cli]") {
   const std::string dir = rt::test::fresh_folder("encode-fps");
   for (const char* fps : {"1e-30", "inf", "nan", "0.001", "fast"}) {
     INFO(fps);
@@ -203,7 +205,8 @@ TEST_CASE("encode: a frame rate from an EXR's metadata is checked, and a GIF's d
     write(dir + "/f.exr", frame);
     const Run r = rt::test::rtcli_bounded("encode '" + dir + "/f.exr' -o '" + dir + "/m.gif'");
     CHECK(r.code == 2);
-    CHECK_THAT(r.output, Catch::Contains("f.exr: rtcli:fps \"" + std::string(fps) + "\": expected a frame rate from 0.002"));
+    CHECK_THAT(r.output,
+               Catch::Contains("f.exr: rtcli:fps \"" + std::string(fps) + "\": expected a frame rate from 0.002"));
     CHECK_FALSE(fs::exists(dir + "/m.gif"));
   }
   Run r = rt::test::rtcli_bounded("encode '" + dir + "/f.exr' --fps 0.001 -o '" + dir + "/m.gif'");
@@ -244,7 +247,8 @@ TEST_CASE("cli: --skip-existing renders again an EXR of other settings or with d
   CHECK(r.code == 0);
   CHECK_THAT(r.output, !Catch::Contains("already there"));
   // Another precision or other layers: again.
-  r = rtcli("render scenes/turntable.json --frames 0-1 --width 16 --height 12 -o '" + dir + "/f_##.exr' --skip-existing --seed 7");
+  r = rtcli("render scenes/turntable.json --frames 0-1 --width 16 --height 12 -o '" + dir +
+            "/f_##.exr' --skip-existing --seed 7");
   CHECK_THAT(r.output, !Catch::Contains("already there"));
   // Damaged pixel data behind an intact chunk table: that frame again, the other kept.
   r = rtcli(render);
@@ -267,7 +271,8 @@ TEST_CASE("an environment image is one of the scene's inputs: never overwritten,
   write(dir + "/sky.exr", image_of(16, 8, 0));
   for (const char* sky : {"sky.hdr", "sky.exr"}) {
     rt::test::write_file("env-input/scene.json", std::string(R"({"render": {"width": 16, "height": 8},
-      "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]}, "background": {"environment": ")") + sky + R"("},
+      "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]}, "background": {"environment": ")") +
+                                                     sky + R"("},
       "materials": {"m": {"kd": 0.5}}, "lights": [{"type": "point", "position": [0, 3, 0]}],
       "nodes": [{"shape": "sphere", "material": "m"}]})");
     INFO(sky);

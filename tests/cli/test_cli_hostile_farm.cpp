@@ -37,7 +37,8 @@ TEST_CASE("cli farm: a value that would break out of a job script is refused by 
   };
   for (const auto& c : cases) {
     INFO(c.args);
-    const Run r = rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run " + c.args + " -o '" + dir + "/still.png'");
+    const Run r =
+        rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run " + c.args + " -o '" + dir + "/still.png'");
     INFO(r.output);
     CHECK(r.code == 2);
     CHECK_THAT(r.output, Catch::Contains(c.expected) && Catch::Contains("nothing written or submitted"));
@@ -49,13 +50,14 @@ TEST_CASE("cli farm: a value that would break out of a job script is refused by 
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("-o: expected no control characters"));
   // A job name made of the output's stem keeps Slurm's safe characters only.
-  r = rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run -q -o '" + dir + "/it'\"'\"'s.png' --farm-dir '" + dir +
-            "/f'");
+  r = rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run -q -o '" + dir + "/it'\"'\"'s.png' --farm-dir '" +
+            dir + "/f'");
   REQUIRE(r.code == 0);
   CHECK_THAT(read_file(dir + "/f/render.sbatch"), Catch::Contains("#SBATCH --job-name=rtcli-it_s\n"));
 }
 
-TEST_CASE("cli farm: counts are named when out of range, and a still gets no more tasks than rows", "[cli][farm][errors]") {
+TEST_CASE("cli farm: counts are named when out of range, and a still gets no more tasks than rows",
+          "[cli][farm][errors]") {
   const std::string dir = rt::test::fresh_folder("farm-counts");
   for (const char* count : {"--tasks 0", "--tasks 100001", "--tasks abc", "--tasks 2 --cpus 0"}) {
     INFO(count);
@@ -66,7 +68,8 @@ TEST_CASE("cli farm: counts are named when out of range, and a still gets no mor
   }
   Run r = rtcli("farm slurm scenes/antialias.json --tasks 200 --height 100 --dry-run -o '" + dir + "/s.png'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("--tasks 200: a still is split into bands of rows, and the image is 100 rows high"));
+  CHECK_THAT(r.output,
+             Catch::Contains("--tasks 200: a still is split into bands of rows, and the image is 100 rows high"));
   CHECK_FALSE(fs::exists(dir + "/s-farm"));
   r = rtcli("farm slurm scenes/antialias.json --tasks 100 --height=100 --dry-run -q -o '" + dir + "/s.png'");
   CHECK(r.code == 0);
@@ -75,8 +78,9 @@ TEST_CASE("cli farm: counts are named when out of range, and a still gets no mor
 TEST_CASE("cli farm: status reads job ids as digits only, never through a shell", "[cli][farm][hostile]") {
   const std::string dir = rt::test::fresh_folder("farm-status");
   const std::string pwned = dir + "/pwned";
-  for (const std::string& jobs : std::vector<std::string>{"render 1;touch " + pwned + "\n", "render $(touch " + pwned + ")\n",
-                                  "render 1 2\n", "finish 12a\n", "submit 5\n"}) {
+  for (const std::string& jobs :
+       std::vector<std::string>{"render 1;touch " + pwned + "\n", "render $(touch " + pwned + ")\n", "render 1 2\n",
+                                "finish 12a\n", "submit 5\n"}) {
     INFO(jobs);
     rt::test::write_file("farm-status/jobs", jobs);
     const Run r = rtcli("farm status '" + dir + "'");

@@ -18,8 +18,9 @@ TEST_CASE("cli: --isa forces each instruction set this CPU runs, and every one r
           "[cli][isa][determinism]") {
   // Shapes, CSG, a mesh with quads in its leaves, an alpha-masked glTF model, and an area light's
   // shadow rays in packets (walked together with AVX, one by one with SSE).
-  for (const char* scene : {"scenes/primitives.json", "scenes/csg.json", "scenes/models/knot.glb", "scenes/soft_shadows.json",
-                            "../shared/gltf/TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"}) {
+  for (const char* scene :
+       {"scenes/primitives.json", "scenes/csg.json", "scenes/models/knot.glb", "scenes/soft_shadows.json",
+        "../shared/gltf/TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"}) {
     INFO(scene);
     if (std::string(scene).rfind("../shared/", 0) == 0 && !rt::test::have_sample_models()) {
       WARN("../shared/gltf not found: " << scene << " skipped");
@@ -46,8 +47,7 @@ TEST_CASE("cli: --isa forces each instruction set this CPU runs, and every one r
   }
 }
 
-TEST_CASE("cli: RTCLI_ISA picks the kernels unless --isa is given; auto is the best; bad names exit 2",
-          "[cli][isa]") {
+TEST_CASE("cli: RTCLI_ISA picks the kernels unless --isa is given; auto is the best; bad names exit 2", "[cli][isa]") {
   const std::string png = output_path("isa-env.png"), stats = output_path("isa-env.json");
   const std::string render = "render scenes/default.json --width 32 --height 20 -o '" + png + "'";
   const std::string best = rt::isa_name(rt::best_isa());

@@ -26,7 +26,8 @@ TEST_CASE("cli: 8 EXR tiles merge into the PNG and the EXR a whole render writes
   std::string tiles;
   for (int i = 0; i < 8; ++i) {
     const std::string tile = dir + "/tile" + std::to_string(i) + ".exr";
-    const auto r = rtcli(kStill + " --exr-float --aov albedo,normal,depth --tile " + std::to_string(i) + "/8 -o '" + tile + "'");
+    const auto r =
+        rtcli(kStill + " --exr-float --aov albedo,normal,depth --tile " + std::to_string(i) + "/8 -o '" + tile + "'");
     INFO(r.output);
     REQUIRE(r.code == 0);
     tiles += " '" + tile + "'";
@@ -81,15 +82,19 @@ TEST_CASE("cli: 8 EXR tiles merge into the PNG and the EXR a whole render writes
   seven.erase(seven.find(" '" + dir + "/tile5.exr'"), dir.size() + 13);
   r = rtcli("merge" + seven + " -o '" + dir + "/missing.png'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("tile 5/8 (rows ") && Catch::Contains(") is missing: render it with --tile 5/8"));
+  CHECK_THAT(r.output,
+             Catch::Contains("tile 5/8 (rows ") && Catch::Contains(") is missing: render it with --tile 5/8"));
   CHECK_FALSE(std::filesystem::exists(dir + "/missing.png"));
 
   // A tile of another render (another seed), and tiles that overlap.
-  REQUIRE(rtcli(kStill + " --exr-float --aov albedo,normal,depth --seed 9 --tile 5/8 -o '" + dir + "/other.exr'").code == 0);
+  REQUIRE(
+      rtcli(kStill + " --exr-float --aov albedo,normal,depth --seed 9 --tile 5/8 -o '" + dir + "/other.exr'").code ==
+      0);
   r = rtcli("merge" + seven + " '" + dir + "/other.exr' -o '" + dir + "/mixed.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("a different settings_hash") && Catch::Contains("seed=9 against seed="));
-  REQUIRE(rtcli(kStill + " --exr-float --aov albedo,normal,depth --crop 0,30,96,40 -o '" + dir + "/band.exr'").code == 0);
+  REQUIRE(rtcli(kStill + " --exr-float --aov albedo,normal,depth --crop 0,30,96,40 -o '" + dir + "/band.exr'").code ==
+          0);
   r = rtcli("merge" + tiles + " '" + dir + "/band.exr' -o '" + dir + "/twice.png'");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("band.exr (x 0-95, y 30-39) overlap"));
@@ -126,7 +131,8 @@ TEST_CASE("cli: frame chunks encode into the GIF a whole render writes; --skip-e
   std::filesystem::remove(dir + "/f_0005.png");
   const std::string six = rt::test::read_file(dir + "/f_0006.png");
   rt::test::write_file("split-frames/f_0006.png", six.substr(0, six.size() / 2));
-  r = rtcli("render scenes/turntable.json --frames 0-11 --width 48 --height 36 --skip-existing -o '" + dir + "/f_####.png'");
+  r = rtcli("render scenes/turntable.json --frames 0-11 --width 48 --height 36 --skip-existing -o '" + dir +
+            "/f_####.png'");
   CHECK(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("10 of 12 frames' outputs are already there and complete (--skip-existing)"));
   CHECK_THAT(r.output, Catch::Contains("frames 5-6 (2)"));
@@ -181,8 +187,10 @@ TEST_CASE("cli: bad parts and bad tiles are refused with the reason", "[cli][spl
 
 TEST_CASE("cli: farm slurm --dry-run writes the two job scripts; options the farm sets are refused", "[cli][split]") {
   const std::string dir = rt::test::fresh_folder("split-farm");
-  auto r = rtcli("farm slurm scenes/antialias.json --tasks 6 --cpus 2 --partition gpu --time 0:30:00 --width 96 "
-                 "--dry-run -o '" + dir + "/still.png'");
+  auto r = rtcli(
+      "farm slurm scenes/antialias.json --tasks 6 --cpus 2 --partition gpu --time 0:30:00 --width 96 "
+      "--dry-run -o '" +
+      dir + "/still.png'");
   INFO(r.output);
   REQUIRE(r.code == 0);
   const std::string render = rt::test::read_file(dir + "/still-farm/render.sbatch");
@@ -199,10 +207,11 @@ TEST_CASE("cli: farm slurm --dry-run writes the two job scripts; options the far
   // An animation: frame chunks and the encode; --dither goes to the GIF.
   r = rtcli("farm slurm scenes/turntable.json --tasks 3 --frames 0-11 --dither --dry-run -q -o '" + dir + "/turn.gif'");
   REQUIRE(r.code == 0);
-  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/render.sbatch"),
-             Catch::Contains("'--frames' '0-11'") && Catch::Contains("--chunk \"$share\"") &&
-                 Catch::Contains("frame_######.exr"));
-  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/finish.sbatch"), Catch::Contains(" encode ") && Catch::Contains("--dither"));
+  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/render.sbatch"), Catch::Contains("'--frames' '0-11'") &&
+                                                                        Catch::Contains("--chunk \"$share\"") &&
+                                                                        Catch::Contains("frame_######.exr"));
+  CHECK_THAT(rt::test::read_file(dir + "/turn-farm/finish.sbatch"),
+             Catch::Contains(" encode ") && Catch::Contains("--dither"));
 
   for (const char* owned : {"--threads 4", "--tile 0/2", "--stats s.json", "--exr-float"}) {
     r = rtcli("farm slurm scenes/antialias.json --tasks 2 --dry-run " + std::string(owned) + " -o '" + dir + "/x.png'");

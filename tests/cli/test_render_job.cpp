@@ -59,14 +59,14 @@ TEST_CASE("render job: options that do not go together are refused before loadin
     set(cmd);
     return !make_render_job(cmd, no_slurm).has_value();
   };
-  CHECK(refused([](RenderCommand& c) { c.aov = "albedo"; }));                        // PNG output
+  CHECK(refused([](RenderCommand& c) { c.aov = "albedo"; }));  // PNG output
   CHECK(refused([](RenderCommand& c) { c.output = "x.exr", c.aov = "albedo,albedo"; }));
-  CHECK(refused([](RenderCommand& c) { c.chunk = "0/2"; }));                         // one file
-  CHECK(refused([](RenderCommand& c) { c.tile = "auto"; }));                         // no Slurm array
-  CHECK(refused([](RenderCommand& c) { c.crop = "5,0,3,10"; }));                     // x1 <= x0
+  CHECK(refused([](RenderCommand& c) { c.chunk = "0/2"; }));      // one file
+  CHECK(refused([](RenderCommand& c) { c.tile = "auto"; }));      // no Slurm array
+  CHECK(refused([](RenderCommand& c) { c.crop = "5,0,3,10"; }));  // x1 <= x0
   CHECK(refused([](RenderCommand& c) { c.tile = "1/4", c.aa_debug = true; }));
-  CHECK(refused([](RenderCommand& c) { c.frames = "1-3", c.output = "x.png"; }));   // 3 frames, one PNG
+  CHECK(refused([](RenderCommand& c) { c.frames = "1-3", c.output = "x.png"; }));  // 3 frames, one PNG
   CHECK(refused([](RenderCommand& c) { c.integrator = "pathh"; }));
-  CHECK(refused([](RenderCommand& c) { c.fps = 30.0f; }));                           // not a glTF file
+  CHECK(refused([](RenderCommand& c) { c.fps = 30.0f; }));  // not a glTF file
   CHECK_FALSE(refused([](RenderCommand& c) { c.output = "x.exr", c.aov = "normal"; }));
 }

@@ -66,9 +66,10 @@ void build(IsaScene& s, Isa isa) {
     shape.transform = *make_transform(compose_trs(random_in(rng, -10, 10), random_in(rng, -180, 180), scale));
     s.top.shapes.push_back(shape);
   }
-  s.top.instances.push_back(place_mesh(s.mesh_bvh, *make_transform(compose_trs(Vec3(6, 0, 0), Vec3(0, 30, 0), Vec3(1))), 0, 0));
   s.top.instances.push_back(
-      place_mesh(s.mesh_bvh, *make_transform(compose_trs(Vec3(-6, 1, 0), Vec3(20, 0, 0), Vec3(0.7f))), 0, 0, &s.cutout));
+      place_mesh(s.mesh_bvh, *make_transform(compose_trs(Vec3(6, 0, 0), Vec3(0, 30, 0), Vec3(1))), 0, 0));
+  s.top.instances.push_back(place_mesh(
+      s.mesh_bvh, *make_transform(compose_trs(Vec3(-6, 1, 0), Vec3(20, 0, 0), Vec3(0.7f))), 0, 0, &s.cutout));
 }
 
 bool same_hit(const Hit& a, const Hit& b) {
@@ -204,15 +205,16 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own closest hit, on eve
         }
         ++hits;
         // A twin's hit: the same triangle under the next id, which must lose.
-        const bool twin = bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim + 1 < bvh.triangle_count() &&
-                          std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim + 1],
-                                      sizeof(PackedTriangle)) == 0;
+        const bool twin =
+            bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim + 1 < bvh.triangle_count() &&
+            std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim + 1], sizeof(PackedTriangle)) == 0;
         twins += twin ? 1 : 0;
-        const bool lost = bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim > 0 &&
-                          std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim - 1],
-                                      sizeof(PackedTriangle)) == 0;
+        const bool lost =
+            bvh.kind(h.prim) == PrimitiveKind::kTriangle && h.prim > 0 &&
+            std::memcmp(&scene.top.triangles[h.prim], &scene.top.triangles[h.prim - 1], sizeof(PackedTriangle)) == 0;
         if (lost) ++differences;  // the twin with the higher id won
-        if (!(mask >> i & 1u) || !same_hit(h, got[i]) || !same_hit(h, hb) || walked[i].tmax != alone.tmax) ++differences;
+        if (!(mask >> i & 1u) || !same_hit(h, got[i]) || !same_hit(h, hb) || walked[i].tmax != alone.tmax)
+          ++differences;
       }
     }
     CHECK(differences == 0);
@@ -221,8 +223,9 @@ TEST_CASE("BVH kernels: a packet of rays gets each ray's own closest hit, on eve
   }
 }
 
-TEST_CASE("BVH kernels: NaN and infinite rays miss in every kernel, single, packet and any-hit, on every instruction set",
-          "[bvh][isa]") {
+TEST_CASE(
+    "BVH kernels: NaN and infinite rays miss in every kernel, single, packet and any-hit, on every instruction set",
+    "[bvh][isa]") {
   // What a stereo camera with convergence 1e-45 made (issue 36): an infinite window offset, rays
   // that are not finite, and a packet walk that entered every unused child slot and wrote past its
   // fixed stack. Each kernel must answer such a ray with a miss, and the finite rays of the same

@@ -86,4 +86,3 @@ TEST_CASE("cone: the apex is on the surface", "[shapes][cone]") {
   REQUIRE(intersect_cone(make_ray({0, 0, -1}, {0, 0, 1}), h));
   CHECK(h.t == Approx(1.0f));
 }
-

@@ -37,4 +37,3 @@ TEST_CASE("cube: misses, grazing rays, axis-parallel rays", "[shapes][cube]") {
   REQUIRE(intersect_cube(make_ray({-5, 0.5f, 0.5f}, {1, 0, 0}), h));  // parallel to two slabs, inside them
   CHECK(h.t == Approx(4.0f));
 }
-

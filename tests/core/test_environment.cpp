@@ -38,9 +38,9 @@ TEST_CASE("environment: directions and equirectangular coordinates map back and 
     CHECK(back.y == Approx(uv.y).margin(1e-4));
   }
   const Environment plain(test_image(), 1.0f, 0.0f);
-  CHECK(plain.to_uv(Vec3(0, 0, -1)).x == Approx(0.5f));   // the image's centre looks down -Z
-  CHECK(plain.to_uv(Vec3(1, 0, 0)).x == Approx(0.75f));   // longitude grows towards +X
-  CHECK(plain.to_uv(Vec3(0, 1, 0)).y == Approx(0.0f));    // row 0 is straight up
+  CHECK(plain.to_uv(Vec3(0, 0, -1)).x == Approx(0.5f));  // the image's centre looks down -Z
+  CHECK(plain.to_uv(Vec3(1, 0, 0)).x == Approx(0.75f));  // longitude grows towards +X
+  CHECK(plain.to_uv(Vec3(0, 1, 0)).y == Approx(0.0f));   // row 0 is straight up
   CHECK(env.to_uv(Vec3(0, 0, -1)).x == Approx(0.5f - 30.0f / 360.0f).margin(1e-5));
 }
 
@@ -80,8 +80,8 @@ TEST_CASE("environment: the density integrates to 1 and matches what sampling dr
   }
   importance /= samples;
   uniform /= samples;
-  INFO("integral of radiance: " << importance << " by luminance, " << uniform << " uniformly; sun drawn " << sun
-                                  << "; " << on_edges << " on texel edges");
+  INFO("integral of radiance: " << importance << " by luminance, " << uniform << " uniformly; sun drawn " << sun << "; "
+                                << on_edges << " on texel edges");
   CHECK(importance == Approx(uniform).epsilon(0.03));
   CHECK(on_edges < samples / 5000);
   // The sun covers 2 of 512 texels but holds most of the luminance: most samples go to it.

@@ -72,11 +72,11 @@ TEST_CASE("natural uv: each shape at known points", "[shapes][uv]") {
     CHECK(s.uv.y == Approx(k.uv.y).margin(1e-6));
   }
   // Just west of the sphere's seam, u is nearly 1: the seam is where u wraps.
-  CHECK(object_space_patch(ShapeKind::kSphere, glm::normalize(Vec3(-1e-3f, 0, 1)), 0).uv.x == Approx(1.0f).margin(1e-3));
+  CHECK(object_space_patch(ShapeKind::kSphere, glm::normalize(Vec3(-1e-3f, 0, 1)), 0).uv.x ==
+        Approx(1.0f).margin(1e-3));
 }
 
-TEST_CASE("natural uv: tangent frames are orthogonal, read unmirrored and match finite differences",
-          "[shapes][uv]") {
+TEST_CASE("natural uv: tangent frames are orthogonal, read unmirrored and match finite differences", "[shapes][uv]") {
   for (const Known& k : kKnown) {
     INFO(k.where);
     // Moved a little towards an interior point, off poles, seams and edges, so that a small step

@@ -69,7 +69,7 @@ TEST_CASE("tone map: 8-bit encoding through the transform", "[color][tonemap]") 
   filmic.curve = ToneMap::kFilmic;
   const Rgb8Image rolled = encode_srgb8(image, filmic);
   CHECK(rolled.rgb[0] == 0);
-  CHECK(rolled.rgb[6] < 255);           // 1.0 is no longer white
+  CHECK(rolled.rgb[6] < 255);            // 1.0 is no longer white
   CHECK(rolled.rgb[9] > rolled.rgb[6]);  // 2 above 1
   CHECK(rolled.rgb[9] < 255);
   CHECK(rolled.rgb[10] == 255);  // 8: past the shoulder

@@ -2,10 +2,10 @@
 
 #include "tests/support/geometry.h"
 
-#include "core/mesh.h"
-#include "core/shapes/triangle.h"
 #include "core/accel/triangle_quad.h"
+#include "core/mesh.h"
 #include "core/rng.h"
+#include "core/shapes/triangle.h"
 
 using namespace rt;
 using rt::test::check_vec;
@@ -102,9 +102,9 @@ TEST_CASE("triangle quads: each lane gives exactly what the one-triangle routine
     rt::TriangleQuad quad{};
     const int used = 1 + trial % 4;  // the lanes left over must never hit
     for (int lane = 0; lane < used; ++lane) {
-      tris[lane] = rt::PackedTriangle::from_vertices(rt::Vec3(coord(), coord(), coord()),
-                                                     rt::Vec3(coord(), coord(), coord()),
-                                                     rt::Vec3(coord(), coord(), coord()));
+      tris[lane] =
+          rt::PackedTriangle::from_vertices(rt::Vec3(coord(), coord(), coord()), rt::Vec3(coord(), coord(), coord()),
+                                            rt::Vec3(coord(), coord(), coord()));
       rt::set_quad_lane(quad, lane, tris[lane]);
     }
     rt::Ray ray;

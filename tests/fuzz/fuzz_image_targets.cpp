@@ -39,10 +39,12 @@ std::string check_environment_sampling(const Environment& env, uint64_t seed) {
     Vec3 d, radiance;
     float pdf = 0.0f;
     if (!env.sample(Vec2(rng.next_float(), rng.next_float()), d, radiance, pdf)) break;
-    if (!is_finite(d) || std::fabs(glm::length(d) - 1.0f) > 1e-3f) return "an environment sample's direction is not unit";
+    if (!is_finite(d) || std::fabs(glm::length(d) - 1.0f) > 1e-3f)
+      return "an environment sample's direction is not unit";
     if (!(pdf > 0.0f) || !std::isfinite(pdf)) return "an environment sample's density is not positive and finite";
     if (!is_finite(radiance)) return "an environment sample's radiance is not finite";
-    if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d))) return "radiance or pdf at a sampled direction is not finite";
+    if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d)))
+      return "radiance or pdf at a sampled direction is not finite";
   }
   for (const Vec3 d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1e-30f, 1, 0), Vec3(0, 0, -1)})
     if (!is_finite(env.radiance(d)) || !std::isfinite(env.pdf(d))) return "radiance or pdf at a pole is not finite";

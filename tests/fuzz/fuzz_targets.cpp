@@ -68,7 +68,6 @@ std::filesystem::path scratch_folder() {
   return folder;
 }
 
-
 // A square with UVs whose material uses image 0 in every slot glTF has (and the alpha mask).
 nlohmann::json textured_square(nlohmann::json image) {
   const nlohmann::json slot = {{"index", 0}};
@@ -283,10 +282,9 @@ std::string bvh_build(const uint8_t* data, size_t size) {
         Hit h;
         const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
         const bool same =
-            hit == got &&
-            (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && std::memcmp(&h.b1, &hits[i].b1, 4) == 0 &&
-                      std::memcmp(&h.b2, &hits[i].b2, 4) == 0 && h.prim == hits[i].prim && h.part == hits[i].part &&
-                      std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0));
+            hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && std::memcmp(&h.b1, &hits[i].b1, 4) == 0 &&
+                                    std::memcmp(&h.b2, &hits[i].b2, 4) == 0 && h.prim == hits[i].prim &&
+                                    h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0));
         if (same) continue;
         const bool robust_alone = hit && robust_hit(prims.triangles[h.prim], packet[i], h.t);
         const bool robust_packet = got && robust_hit(prims.triangles[hits[i].prim], packet[i], hits[i].t);

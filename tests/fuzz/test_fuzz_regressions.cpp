@@ -30,18 +30,14 @@ int replay(const std::string& folder, const Target& target) {
 TEST_CASE("fuzz regressions: scene files", "[fuzz]") { CHECK(replay("scene", rt::fuzz::scene_json) >= 1); }
 TEST_CASE("fuzz regressions: glTF models", "[fuzz]") { CHECK(replay("gltf", rt::fuzz::gltf_model) >= 5); }
 TEST_CASE("fuzz regressions: BVH builds", "[fuzz]") { CHECK(replay("bvh", rt::fuzz::bvh_build) >= 1); }
-TEST_CASE("fuzz regressions: EXR tiles", "[fuzz]") {
-  CHECK(replay("exr", rt::fuzz::exr_tile) >= 1);
-}
+TEST_CASE("fuzz regressions: EXR tiles", "[fuzz]") { CHECK(replay("exr", rt::fuzz::exr_tile) >= 1); }
 
 TEST_CASE("fuzz regressions: environment images", "[fuzz]") {
   CHECK(replay("environment", rt::fuzz::environment_image) >= 1);
   CHECK(replay("environment_exr", rt::fuzz::environment_exr) >= 2);
   CHECK(replay("exr", rt::fuzz::environment_exr) >= 3);  // the tiles' finds, as environment files too
 }
-TEST_CASE("fuzz regressions: texture images", "[fuzz]") {
-  CHECK(replay("texture", rt::fuzz::texture_image) >= 2);
-}
+TEST_CASE("fuzz regressions: texture images", "[fuzz]") { CHECK(replay("texture", rt::fuzz::texture_image) >= 2); }
 
 // Every seed image (one of each format stb_image knew, and the hostile ones) by every path an
 // image takes into a scene.

@@ -93,7 +93,8 @@ TEST_CASE("bad scenes: every one is rejected by the loader, the validator and (w
   CHECK_THAT(limits, Catch::Contains("one scene per class of error (" + std::to_string(files) + " of them)"));
 }
 
-TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint and no warning", "[io][schema]") {
+TEST_CASE("validator: every shipped scene and model is valid, with no schema complaint and no warning",
+          "[io][schema]") {
   int checked = 0;
   for (const char* folder : {"scenes", "scenes/models", "scenes/toys", "scenes/gallery", "tests/data"}) {
     for (const auto& entry : std::filesystem::directory_iterator(rt::test::source_path(folder))) {

@@ -138,7 +138,8 @@ ChiSquare chi_square(const Bsdf& bsdf, int count, uint64_t seed) {
 // The directional albedo: the integral of f |cos| over the sphere, numerically.
 double albedo(const Bsdf& bsdf) {
   double sum = 0.0;
-  for (const double v : integrate_cells([&](Vec3 w) { return (bsdf.eval(w).x + bsdf.eval(w).y + bsdf.eval(w).z) / 3.0f; }, 24))
+  for (const double v :
+       integrate_cells([&](Vec3 w) { return (bsdf.eval(w).x + bsdf.eval(w).y + bsdf.eval(w).z) / 3.0f; }, 24))
     sum += v;
   return sum;
 }
@@ -181,7 +182,8 @@ TEST_CASE("BSDF sampling matches its density (chi-square over the sphere)", "[bs
       CHECK(test.dof > 20);
       CHECK(test.z < 4.0);  // p > 3e-5
       // Samples lost below the surface are the density's missing mass.
-      CHECK(std::abs(test.lost - test.expected_lost) < 5.0 * std::sqrt(std::max(test.expected_lost, 1.0)) + 0.002 * 200000);
+      CHECK(std::abs(test.lost - test.expected_lost) <
+            5.0 * std::sqrt(std::max(test.expected_lost, 1.0)) + 0.002 * 200000);
     }
   }
 }

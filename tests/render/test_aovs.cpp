@@ -46,8 +46,8 @@ TEST_CASE("AOVs: filled in the same pass, the colour and the rays unchanged, eve
     const char* integrator;
     const char* antialias;
   };
-  const Case cases[] = {{"whitted", "none"},    {"whitted", "uniform"}, {"whitted", "adaptive"},
-                        {"path", "none"},       {"normals", "adaptive"}};
+  const Case cases[] = {
+      {"whitted", "none"}, {"whitted", "uniform"}, {"whitted", "adaptive"}, {"path", "none"}, {"normals", "adaptive"}};
   for (const Case& c : cases) {
     RenderSettings settings = s.settings;
     settings.integrator = c.integrator;

@@ -196,13 +196,13 @@ TEST_CASE("rect light: the scene's intersection finds its face, so every integra
 }
 
 TEST_CASE("secondary shadows: an area light's samples follow the hit's weight in the pixel", "[lights][shadow]") {
-  CHECK(secondary_shadow_samples(16, 1.0f) == 16);         // a camera ray's hit
-  CHECK(secondary_shadow_samples(16, 0.85f) == 14);        // a mirror of 0.85: ceil(13.6)
-  CHECK(secondary_shadow_samples(16, 1.0f / 6.0f) == 3);   // one of 6 glossy rays: ceil(2.67)
-  CHECK(secondary_shadow_samples(16, 0.001f) == 1);        // never none
+  CHECK(secondary_shadow_samples(16, 1.0f) == 16);        // a camera ray's hit
+  CHECK(secondary_shadow_samples(16, 0.85f) == 14);       // a mirror of 0.85: ceil(13.6)
+  CHECK(secondary_shadow_samples(16, 1.0f / 6.0f) == 3);  // one of 6 glossy rays: ceil(2.67)
+  CHECK(secondary_shadow_samples(16, 0.001f) == 1);       // never none
   CHECK(secondary_shadow_samples(16, 0.0f) == 1);
   CHECK(secondary_shadow_samples(1, 0.5f) == 1);
-  CHECK(secondary_shadow_samples(1024, 1.5f) == 1024);     // never more than asked
+  CHECK(secondary_shadow_samples(1024, 1.5f) == 1024);  // never more than asked
 
   // A mirror of reflectivity 0.5 facing a lit floor: its hits on the floor take 8 samples of 16.
   const LoadedScene s = rt::test::load_scene_text("mirror_shadows.json", R"({

@@ -123,8 +123,8 @@ ChiSquare chi_square(const std::vector<double>& observed, const std::vector<doub
 
 struct LightCheck {
   ChiSquare chi;
-  double mass = 0.0;          // the density integrated over the sphere
-  double accepted = 0.0;      // the share of sample_li calls that drew a point
+  double mass = 0.0;             // the density integrated over the sphere
+  double accepted = 0.0;         // the share of sample_li calls that drew a point
   double worst_pdf_error = 0.0;  // of a sample's own pdf against pdf_along its direction
 };
 
@@ -157,7 +157,8 @@ LightCheck check_light(const Scene& scene, size_t l, Vec3 point, int count = 100
       for (int a = 0; a < kSub; ++a)
         for (int b = 0; b < kSub; ++b) {
           const float z = -1.0f + 2.0f * (static_cast<float>(row) + (static_cast<float>(a) + 0.5f) / kSub) / kRows;
-          const float phi = 2.0f * kPi * (static_cast<float>(column) + (static_cast<float>(b) + 0.5f) / kSub) / kColumns;
+          const float phi =
+              2.0f * kPi * (static_cast<float>(column) + (static_cast<float>(b) + 0.5f) / kSub) / kColumns;
           const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
           sum += pdf_along(scene, l, point, Vec3(r * std::cos(phi), r * std::sin(phi), z));
         }
@@ -172,7 +173,8 @@ LightCheck check_light(const Scene& scene, size_t l, Vec3 point, int count = 100
 Scene scene_of(const std::string& name, const std::string& nodes_and_lights) {
   return rt::test::load_scene_text(name, R"({ "camera": { "position": [0, 0, 9], "look_at": [0, 0, 0] },
     "materials": { "glow": { "kd": 0, "emission": [2, 1, 0.5] }, "grey": { "kd": 0.5 } },
-    )" + nodes_and_lights + "}").scene;
+    )" + nodes_and_lights + "}")
+      .scene;
 }
 
 // `chi`: the histogram is tested too; `mass` < 0: the integral is not (an emissive surface's
@@ -193,7 +195,8 @@ double polygon_irradiance(Vec3 point, Vec3 normal, const std::vector<Vec3>& v) {
   for (size_t i = 0; i < v.size(); ++i) {
     const glm::dvec3 a = glm::normalize(glm::dvec3(v[i] - point));
     const glm::dvec3 b = glm::normalize(glm::dvec3(v[(i + 1) % v.size()] - point));
-    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(glm::dvec3(normal), glm::normalize(glm::cross(a, b)));
+    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) *
+           glm::dot(glm::dvec3(normal), glm::normalize(glm::cross(a, b)));
   }
   return 0.5 * std::fabs(sum);
 }
@@ -264,8 +267,9 @@ TEST_CASE("light sampling: emissive triangles, shapes and CSG solids follow pdf_
 }
 
 TEST_CASE("light sampling: an environment image's directions follow pdf_li", "[lights][sampling]") {
-  const Scene scene = scene_of("ls_sky.json", R"("background": { "environment": ")" +
-                                                  rt::test::source_path("scenes/textures/sky.hdr") + R"(" }, "nodes": [])");
+  const Scene scene =
+      scene_of("ls_sky.json", R"("background": { "environment": ")" + rt::test::source_path("scenes/textures/sky.hdr") +
+                                  R"(" }, "nodes": [])");
   REQUIRE(scene.background.is_image());
   require_consistent(check_light(scene, scene.lights.size() + 1, Vec3(0.0f)), 1.0, true);
 }
@@ -309,9 +313,10 @@ TEST_CASE("light sampling furnace: what emissive shapes, meshes and CSG solids a
     CHECK(estimated_irradiance(scene, scene.lights.size(), point, up, kCount) == Approx(sphere).epsilon(0.015));
   }
   SECTION("a mesh: glTF's Box, a unit cube of 12 triangles, by Lambert's formula for its faces in view") {
-    const Scene scene = scene_of("lf_box.json", R"("nodes": [ { "mesh": { "file": ")" +
-                                                    rt::test::source_path("../shared/gltf/Box/glTF/Box.gltf") +
-                                                    R"(" }, "material": "glow", "transform": { "translate": [0.4, 2, 0.3] } } ])");
+    const Scene scene =
+        scene_of("lf_box.json", R"("nodes": [ { "mesh": { "file": ")" +
+                                    rt::test::source_path("../shared/gltf/Box/glTF/Box.gltf") +
+                                    R"(" }, "material": "glow", "transform": { "translate": [0.4, 2, 0.3] } } ])");
     REQUIRE(scene.emitters.size() == 12);
     // From (1.5, 0, 1.6) the box [-0.1, 0.9] x [1.5, 2.5] x [-0.2, 0.8] shows three faces: its
     // bottom (y = 1.5) and its sides at x = 0.9 and z = 0.8.
@@ -348,11 +353,14 @@ TEST_CASE("light sampling: area_scale is how much a transform stretches a surfac
     CHECK(area_scale(*t, t->normal_to_world_unit(n)) == Approx(world_area / object_area).epsilon(1e-4));
   }
   // Each shape's canonical area, and its points on its surface with their normals outward.
-  for (const ShapeKind kind : {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone}) {
+  for (const ShapeKind kind :
+       {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone}) {
     for (int i = 0; i < 64; ++i) {
-      const ShapePoint p = sample_object_surface(kind, Vec2((static_cast<float>(i % 8) + 0.37f) / 8.0f, (static_cast<float>(i / 8) + 0.61f) / 8.0f));
+      const ShapePoint p = sample_object_surface(
+          kind, Vec2((static_cast<float>(i % 8) + 0.37f) / 8.0f, (static_cast<float>(i / 8) + 0.61f) / 8.0f));
       const SurfacePatch patch = object_space_patch(kind, p.position, p.part);
-      INFO("kind " << static_cast<int>(kind) << " point " << p.position.x << ", " << p.position.y << ", " << p.position.z);
+      INFO("kind " << static_cast<int>(kind) << " point " << p.position.x << ", " << p.position.y << ", "
+                   << p.position.z);
       CHECK(glm::dot(patch.normal, p.normal) == Approx(1.0f).epsilon(1e-4));
       Ray towards(p.position + p.normal * 0.5f, -p.normal);  // from outside, straight at it
       Hit hit;

@@ -18,14 +18,16 @@ using namespace rt;
 
 namespace {
 
-// A sphere filling the view (the corners too: 17.4 degrees off-axis, the sphere 19.5) inside a uniform environment of radiance 1, no lights.
+// A sphere filling the view (the corners too: 17.4 degrees off-axis, the sphere 19.5) inside a uniform environment of
+// radiance 1, no lights.
 std::string furnace(const std::string& material) {
   return R"({
   "render": { "width": 12, "height": 12, "integrator": "path", "samples_per_pixel": 64, "max_depth": 64, "seed": 3 },
   "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 25 },
   "background": [1, 1, 1],
   "ambient": [0.7, 0.2, 0.2],
-  "materials": { "m": )" + material + R"( },
+  "materials": { "m": )" +
+         material + R"( },
   "nodes": [ { "name": "ball", "shape": "sphere", "material": "m" } ]
 })";
 }
@@ -173,7 +175,8 @@ TEST_CASE("convergence: the error falls as 1 / sqrt(spp)", "[path]") {
 }
 
 TEST_CASE("path tracing: the image is the same for any thread count and tile size", "[path][determinism]") {
-  const LoadedScene s = rt::test::load_scene_text("cornell_threads.json", rt::test::read_file(rt::test::source_path("scenes/cornell_box.json")));
+  const LoadedScene s = rt::test::load_scene_text(
+      "cornell_threads.json", rt::test::read_file(rt::test::source_path("scenes/cornell_box.json")));
   RenderSettings settings = s.settings;
   settings.width = settings.height = 24;
   settings.path.samples_per_pixel = 16;
@@ -214,7 +217,8 @@ TEST_CASE("path tracing: every shipped scene gives finite, non-negative samples 
 }
 
 TEST_CASE("noise threshold: converged pixels stop early, noisy ones take every sample", "[path]") {
-  const LoadedScene s = rt::test::load_scene_text("cornell_adaptive.json", rt::test::read_file(rt::test::source_path("scenes/cornell_box.json")));
+  const LoadedScene s = rt::test::load_scene_text(
+      "cornell_adaptive.json", rt::test::read_file(rt::test::source_path("scenes/cornell_box.json")));
   RenderSettings settings = s.settings;
   settings.width = settings.height = 24;
   settings.path.samples_per_pixel = 256;
@@ -238,7 +242,8 @@ TEST_CASE("noise threshold: converged pixels stop early, noisy ones take every s
   CHECK(pixel_relative_error(0.0, 0.0, 16) < 0.05f);
 }
 
-TEST_CASE("environment light: drawn by luminance, or found by BSDF rays alone, the image is the same", "[path][environment]") {
+TEST_CASE("environment light: drawn by luminance, or found by BSDF rays alone, the image is the same",
+          "[path][environment]") {
   Diagnostics diags;
   auto loaded = load_scene(rt::test::source_path("scenes/environment.json"), rt::test::load_options(), diags);
   REQUIRE(loaded);

@@ -126,7 +126,8 @@ TEST_CASE("ray origins: rays leaving any surface never hit it again where they s
       s.scene.bvh.visit_hits(leave, crossing);
       if (!s.scene.intersect(leave, again)) continue;
       const float distance = again.t * glm::length(leave.direction);
-      if (again.prim == hit.prim && again.part == hit.part && csg_surface_index(again) == csg_surface_index(hit) && distance < 1e-3f) {
+      if (again.prim == hit.prim && again.part == hit.part && csg_surface_index(again) == csg_surface_index(hit) &&
+          distance < 1e-3f) {
         ++self_hits;
         if (first_self_hit.empty())
           first_self_hit = "primitive " + std::to_string(hit.prim) + " part " + std::to_string(hit.part) +
@@ -135,8 +136,8 @@ TEST_CASE("ray origins: rays leaving any surface never hit it again where they s
       }
     }
   }
-  INFO("hits " << hits << ", rays spawned " << spawned << ", nearest self-hit " << nearest << ", first: "
-                << first_self_hit);
+  INFO("hits " << hits << ", rays spawned " << spawned << ", nearest self-hit " << nearest
+               << ", first: " << first_self_hit);
   CHECK(hits > 30000);
   CHECK(self_hits == 0);
   CHECK(self_crossings == 0);

@@ -24,8 +24,9 @@ TEST_CASE("a window of the image renders the whole render's pixels", "[render][w
   };
   // Adaptive anti-aliasing shares lattice samples across tile borders; a window's border pixels
   // compute their own and must still agree. glossy: random numbers per pixel.
-  for (const Case c : {Case{"scenes/antialias.json", "whitted", "adaptive"}, Case{"scenes/glossy.json", "whitted", "uniform"},
-                       Case{"scenes/primitives.json", "whitted", "none"}, Case{"scenes/cornell_box.json", "path", "none"}}) {
+  for (const Case c :
+       {Case{"scenes/antialias.json", "whitted", "adaptive"}, Case{"scenes/glossy.json", "whitted", "uniform"},
+        Case{"scenes/primitives.json", "whitted", "none"}, Case{"scenes/cornell_box.json", "path", "none"}}) {
     INFO(c.scene << " " << c.integrator << " " << c.antialias);
     const LoadedScene s = load(rt::test::source_path(c.scene));
     RenderSettings settings = s.settings;
@@ -90,6 +91,7 @@ TEST_CASE("cost-balanced bands cover the image once, the same every time", "[ren
 TEST_CASE("a window outside the image is refused", "[render][window]") {
   const LoadedScene s = load(rt::test::source_path("tests/data/golden_tiny.json"));
   Film film;
-  CHECK_THROWS_AS(render(s.scene, s.settings, film, {}, 0, RenderView{nullptr, 0, PixelWindow{0, 0, s.settings.width + 1, 1}}),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      render(s.scene, s.settings, film, {}, 0, RenderView{nullptr, 0, PixelWindow{0, 0, s.settings.width + 1, 1}}),
+      std::invalid_argument);
 }

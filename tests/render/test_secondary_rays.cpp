@@ -25,8 +25,8 @@ Ray refract_at_hit(const Scene& scene, const Ray& ray, float n1, float n2) {
   Ray r = ray;
   Hit hit;
   REQUIRE(scene.intersect(r, hit));
-  const EvaluatedSurface s = evaluate_surface(scene.materials()[scene.material_of(hit)], scene.surface(r, hit),
-                                              r.direction, scene.textures());
+  const EvaluatedSurface s =
+      evaluate_surface(scene.materials()[scene.material_of(hit)], scene.surface(r, hit), r.direction, scene.textures());
   Ray out;
   REQUIRE(refract(glm::normalize(r.direction), s.n, n1 / n2, out.direction));
   out.origin = offset_ray_origin(s.position, s.position_error, s.ng, out.direction);

@@ -16,8 +16,8 @@ rt::test::Run twin(const std::string& scene, const std::string& out) {
 }  // namespace
 
 TEST_CASE("povray twin: the benchmark scenes convert, with the camera, lights and sampling they ask", "[tools]") {
-  for (const char* scene : {"scenes/reflection.json", "scenes/refraction.json", "scenes/soft_shadows.json",
-                            "scenes/antialias.json"}) {
+  for (const char* scene :
+       {"scenes/reflection.json", "scenes/refraction.json", "scenes/soft_shadows.json", "scenes/antialias.json"}) {
     INFO(scene);
     const std::string out = rt::test::output_path("twin.pov");
     const rt::test::Run r = twin(scene, out);

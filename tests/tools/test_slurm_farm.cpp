@@ -69,8 +69,9 @@ std::string fresh(const std::string& name) {
 
 TEST_CASE("farm: tiles, frame chunks and a cancelled task on a one-node Slurm cluster", "[farm][slurm]") {
   if (::geteuid() != 0 || run_shell("command -v slurmctld slurmd munged sbatch >/dev/null 2>&1").code != 0) {
-    WARN("Slurm is not installed (tools/install-deps.sh --tests installs slurm-wlm and munge) or this is not root: "
-         "the farm test on a real cluster is skipped");
+    WARN(
+        "Slurm is not installed (tools/install-deps.sh --tests installs slurm-wlm and munge) or this is not root: "
+        "the farm test on a real cluster is skipped");
     return;
   }
   const Cluster cluster(fresh("slurm-cluster"));
@@ -120,7 +121,8 @@ TEST_CASE("farm: tiles, frame chunks and a cancelled task on a one-node Slurm cl
   CHECK_FALSE(std::filesystem::exists(dir + "/box-farm/tiles/tile_3.exr"));
   r = rtcli("merge '" + dir + "/box-farm/tiles'/tile_*.exr -o '" + dir + "/box.png'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("tile 3/8 (rows ") && Catch::Contains(") is missing: render it with --tile 3/8"));
+  CHECK_THAT(r.output,
+             Catch::Contains("tile 3/8 (rows ") && Catch::Contains(") is missing: render it with --tile 3/8"));
   CHECK_FALSE(std::filesystem::exists(dir + "/box.png"));
   // Only that task again; then the merge completes the image, the same as a local render.
   const auto again = run_shell(env + "sbatch --parsable --array=3 '" + dir + "/box-farm/render.sbatch' 2>&1");

@@ -34,9 +34,7 @@ EmbreeScene::EmbreeScene(const EmbreeDevice& device, const std::vector<PackedTri
   rtcCommitScene(scene_);
 }
 
-EmbreeScene::~EmbreeScene() {
-  rtcReleaseScene(scene_);
-}
+EmbreeScene::~EmbreeScene() { rtcReleaseScene(scene_); }
 
 namespace {
 

@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
               RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, repeats);
   for (size_t k = 0; k < thread_counts.size(); ++k) {
     const unsigned t = thread_counts[k];
-    std::printf("\n%u thread%s %*s %10s %10s %-7s %7s\n", t, t == 1 ? "" : "s", t == 1 ? 26 : 25, "", "rtcli",
-                "Embree", "", "ratio");
+    std::printf("\n%u thread%s %*s %10s %10s %-7s %7s\n", t, t == 1 ? "" : "s", t == 1 ? 26 : 25, "", "rtcli", "Embree",
+                "", "ratio");
     row("BVH build, cold", 1e3 * cold[k].first, 1e3 * cold[k].second, "ms", false);
     Bvh bvh;
     const EmbreeDevice device(t);
@@ -128,10 +128,7 @@ int main(int argc, char** argv) {
     row("BVH build, warm", 1e3 * builds.first.median, 1e3 * builds.second.median, "ms", false);
     for (const RaySet& set : sets) {
       const auto times = alternate(
-          repeats,
-          [&] {
-            trace_all(set.rays, t, [&](const Ray& ray) { return trace_ray(bvh, ray, set.occlusion); });
-          },
+          repeats, [&] { trace_all(set.rays, t, [&](const Ray& ray) { return trace_ray(bvh, ray, set.occlusion); }); },
           [&] {
             trace_all(set.rays, t, [&](const Ray& ray) {
               return set.occlusion ? embree->occluded(ray) : !std::isinf(embree->intersect(ray));

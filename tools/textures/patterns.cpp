@@ -204,7 +204,8 @@ HdrImage render_sky(const HdrPattern& p) {
       for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 4; ++i) {
           const float u = (static_cast<float>(x) + (static_cast<float>(i) + 0.5f) / 4.0f) / static_cast<float>(p.width);
-          const float v = (static_cast<float>(y) + (static_cast<float>(j) + 0.5f) / 4.0f) / static_cast<float>(p.height);
+          const float v =
+              (static_cast<float>(y) + (static_cast<float>(j) + 0.5f) / 4.0f) / static_cast<float>(p.height);
           const float longitude = (u - 0.5f) * 2.0f * kPi, theta = v * kPi;
           const Vec3 d(std::sin(theta) * std::sin(longitude), std::cos(theta), -std::sin(theta) * std::cos(longitude));
           Vec3 c;

@@ -32,7 +32,8 @@ std::vector<std::vector<Tap>> footprints(int in, int out) {
 
 Rgb8Image shrink_image(const Rgb8Image& image, int width) {
   if (width <= 0 || image.width <= width) return image;
-  const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(image.height) * width / image.width)));
+  const int height =
+      std::max(1, static_cast<int>(std::lround(static_cast<double>(image.height) * width / image.width)));
   const auto xs = footprints(image.width, width), ys = footprints(image.height, height);
   std::vector<float> linear(256);
   for (int v = 0; v < 256; ++v) linear[static_cast<size_t>(v)] = srgb_decode(static_cast<float>(v) / 255.0f);

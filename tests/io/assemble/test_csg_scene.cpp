@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/shadow_transmittance.h"
-#include "materials/optics.h"
 #include "io/scene_loader.h"
+#include "materials/optics.h"
 #include "tests/support/geometry.h"
 #include "tests/support/loading.h"
 #include "tests/support/test_paths.h"
@@ -144,6 +144,6 @@ TEST_CASE("CSG scenes: a cut surface refracts into the solid's medium, not the c
   const SurfaceInteraction si = s.scene.surface(r, h);
   CHECK(si.position.z == Approx(0.5f));  // the bite's floor, on the cutter
   const auto kd = [&](uint32_t m) { return s.scene.materials()[m].kd.x; };
-  CHECK(kd(si.material) == Approx(0.8f));  // shaded with the cutter's material (red)
+  CHECK(kd(si.material) == Approx(0.8f));                                // shaded with the cutter's material (red)
   CHECK(s.scene.materials()[si.medium].transmission.x == Approx(1.0f));  // behind it: the glass
 }

@@ -77,7 +77,8 @@ ImportedModel import_file(const std::string& path) {
 // `integrator`.
 LoadedScene quad_scene(const std::string& name, const std::string& gltf, const std::string& integrator = "whitted") {
   return rt::test::load_scene_text(name, R"({
-    "render": {"integrator": ")" + integrator + R"("},
+    "render": {"integrator": ")" + integrator +
+                                             R"("},
     "camera": {"position": [0.5, 0.5, 5], "look_at": [0.5, 0.5, 0]},
     "lights": [{"type": "point", "position": [0.5, 0.5, 4], "color": [1, 1, 1]}],
     "materials": {"wall": {"kd": [0.5, 0.5, 0.5]}},
@@ -362,8 +363,9 @@ TEST_CASE("glTF samples: BoxTextured's image from a file and from the GLB's buff
   CHECK(embedded.files.size() == 1);
 }
 
-TEST_CASE("glTF materials: transmission is tinted by the base colour, scaled by transmissionTexture, none through metal",
-          "[gltf][materials]") {
+TEST_CASE(
+    "glTF materials: transmission is tinted by the base colour, scaled by transmissionTexture, none through metal",
+    "[gltf][materials]") {
   // Texture 1's texels are (0, 128, 255): red 0, so the texture lets nothing through.
   const auto material = [](double metallic, bool texture) {
     Json transmission = {{"transmissionFactor", 0.8}};
@@ -372,7 +374,8 @@ TEST_CASE("glTF materials: transmission is tinted by the base colour, scaled by 
                 {"extensions", {{"KHR_materials_transmission", transmission}}}};
   };
   const auto passes = [&](double metallic, bool texture) {
-    const std::string path = quad_file(texture ? "transmission-texture.gltf" : "transmission.gltf", material(metallic, texture));
+    const std::string path =
+        quad_file(texture ? "transmission-texture.gltf" : "transmission.gltf", material(metallic, texture));
     rt::test::ImportProblems problems;
     const auto model = import_gltf(path, std::nullopt, LoadLimits{}, problems);
     REQUIRE(model);

@@ -24,7 +24,8 @@ HdrImage gradient(int width, int height) {
   image.height = height;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      image.texels.push_back(Vec3(0.01f + float(x), 0.5f * float(y + 1), x == 3 ? 1000.0f : 0.25f));  // a run-friendly blue row
+      image.texels.push_back(
+          Vec3(0.01f + float(x), 0.5f * float(y + 1), x == 3 ? 1000.0f : 0.25f));  // a run-friendly blue row
   return image;
 }
 
@@ -103,7 +104,8 @@ TEST_CASE("hdr: every truncation and corruption of a file ends in an error, neve
     const std::string text = "#?RADIANCE\n\n-Y 4096 +X 8192\n\x02\x02\x20\x00"s;
     std::string e;
     CHECK_FALSE(decode_hdr(std::vector<uint8_t>(text.begin(), text.end()), uint64_t{1} << 26, e));
-    CHECK_THAT(e, Catch::Contains("the header promises 8192 x 4096 texels, which take at least 2146304 bytes, and 4 follow"));
+    CHECK_THAT(
+        e, Catch::Contains("the header promises 8192 x 4096 texels, which take at least 2146304 bytes, and 4 follow"));
   }
   CHECK_THAT(message("#?RADIANCE\n\n-Y 3 +X 4\n" + std::string(47, '\x10')), Catch::Contains("take at least 48 bytes"));
   CHECK(message("#?RADIANCE\n\n-Y 3 +X 4\n" + std::string(48, '\x10')) == "read");
@@ -151,8 +153,8 @@ TEST_CASE("environment files: .hdr and .exr load as linear radiance, anything el
   std::vector<uint8_t> broken = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0, 'x'};
   write_bytes(rt::test::output_path("broken.exr"), broken);
   CHECK_FALSE(load_environment_image(rt::test::output_path("broken.exr"), limits, usage, error));
-  CHECK_THAT(error, Catch::Contains("not a readable OpenEXR image (its header ends early)") &&
-                        Catch::Contains("broken.exr"));
+  CHECK_THAT(error,
+             Catch::Contains("not a readable OpenEXR image (its header ends early)") && Catch::Contains("broken.exr"));
   // The merge fuzzer's 792-byte file whose string attribute declares 2 GB: OpenEXR opened directly
   // took 1.96 GB and 9 s here (issue 36); the walk refuses it at once.
   const std::string seed = rt::test::source_path("tests/fuzz/regressions/exr/oom-string-attribute-2gb.exr");
@@ -163,7 +165,8 @@ TEST_CASE("environment files: .hdr and .exr load as linear radiance, anything el
 TEST_CASE("a scene's background can be an environment image; its errors point at the key", "[hdr]") {
   const LoadedScene s = rt::test::load_scene_text("env_scene.json", R"({
     "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0] },
-    "background": { "environment": ")" + rt::test::source_path("scenes/textures/sky.hdr") + R"(", "intensity": 2, "rotate": 90 },
+    "background": { "environment": ")" + rt::test::source_path("scenes/textures/sky.hdr") +
+                                                                        R"(", "intensity": 2, "rotate": 90 },
     "materials": { "m": { "kd": 0.5 } },
     "lights": [ { "type": "point", "position": [0, 3, 0] } ],
     "nodes": [ { "name": "ball", "shape": "sphere", "material": "m" } ]
@@ -171,7 +174,8 @@ TEST_CASE("a scene's background can be an environment image; its errors point at
   REQUIRE(s.scene.background.is_image());
   // The sun (radiance 400 x 2) lies 40 + 90 degrees round from -Z, 35 up.
   const float longitude = radians(130.0f), elevation = radians(35.0f);
-  const Vec3 sun(std::sin(longitude) * std::cos(elevation), std::sin(elevation), -std::cos(longitude) * std::cos(elevation));
+  const Vec3 sun(std::sin(longitude) * std::cos(elevation), std::sin(elevation),
+                 -std::cos(longitude) * std::cos(elevation));
   CHECK(s.scene.background.radiance(sun).x > 200.0f);
   CHECK(s.scene.background.radiance(Vec3(0, -1, 0)).x < 1.0f);
 
