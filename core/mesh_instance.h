@@ -1,5 +1,5 @@
 // A triangle mesh placed in the world: the mesh's own BVH, built once in its object space, under
-// a transform. The top-level BVH holds instances next to analytic shapes; a ray that reaches one
+// a transform. The top-level BVH holds instances next to analytic shapes and CSG solids; a ray that reaches one
 // is moved into object space (its direction not renormalised, so t means the same in both spaces)
 // and handed to the mesh's BVH. A mesh used by many nodes, or by every frame of an animation, is
 // stored and indexed once.

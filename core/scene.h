@@ -1,5 +1,5 @@
 // One immutable, render-ready frame: the camera, the lights and the top-level BVH that places
-// shapes and the shared meshes where they are at this moment. io builds it (for an animation,
+// shapes, CSG solids and the shared meshes where they are at this moment. io builds it (for an animation,
 // core/scene_graph.h builds one per frame); the renderer and every thread only read it.
 #pragma once
 
@@ -32,7 +32,7 @@ struct Scene {
   Environment background;  // radiance of rays that meet nothing: a colour or an HDR image
   Vec3 ambient{0.0f};      // ambient light, multiplied by each material's kd
   std::vector<Light> lights;
-  Bvh bvh;  // top level: analytic shapes and mesh instances (each pointing into assets->meshes)
+  Bvh bvh;  // top level: analytic shapes, mesh instances (each pointing into assets->meshes), CSG solids
   // No material lets light through: a shadow ray needs only bvh.occluded(), the early-out
   // occlusion kernel, not the transmittance visitor. False (the visitor, always right) unless
   // whoever builds the scene has checked.
