@@ -1,13 +1,14 @@
 // Bounding volume hierarchy over a PrimitiveSet. Scenes use two levels: one BVH per mesh over its
 // triangles in object space, built once, and a top level over the analytic shapes, the mesh
 // instances and the CSG solids, rebuilt when placements change (each animation frame). Built as a
-// binary tree with the binned surface area heuristic, then collapsed into an 8-wide tree: each node holds the boxes of up to eight
-// children side by side, so one visit tests eight boxes with one SIMD slab test (one AVX
-// instruction per step, two SSE ones). Nodes are a flat array; traversal uses a fixed-size stack,
-// visits the nearest child first and skips entries farther than the closest hit found since they
-// were pushed. No allocation and no virtual call per ray or primitive: the closest-hit and
-// occlusion queries are compiled once per instruction set (core/accel/bvh_kernels.h) and the
-// BVH calls the set chosen when it was built, one indirect call a query.
+// binary tree with the binned surface area heuristic, then collapsed into an 8-wide tree: each node
+// holds the boxes of up to eight children side by side, so one visit tests eight boxes with one
+// SIMD slab test (one AVX instruction per step, two SSE ones). Nodes are a flat array; traversal
+// uses a fixed-size stack, visits the nearest child first and skips entries farther than the
+// closest hit found since they were pushed. No allocation and no virtual call per ray or primitive:
+// the closest-hit and occlusion queries are compiled once per instruction set
+// (core/accel/bvh_kernels.h) and the BVH calls the set chosen when it was built, one indirect call
+// a query.
 #pragma once
 
 #include <cstdint>
