@@ -6,6 +6,7 @@
 // (core/lights/environment.h) answer the same two questions.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -50,13 +51,18 @@ inline LightSample sample_li(const DirectionalLight& light, Vec3 /*point*/, Vec2
 struct RectFrame {
   Vec3 normal_area{0.0f};  // edge1 x edge2: the normal, as long as the area
   float area = 0.0f;
+  Vec3 unit_normal{0.0f};
   explicit RectFrame(const RectLight& light)
-      : normal_area(glm::cross(light.edge1, light.edge2)), area(glm::length(normal_area)) {}
+      : normal_area(glm::cross(light.edge1, light.edge2)),
+        area(glm::length(normal_area)),
+        unit_normal(glm::normalize(normal_area)) {}
 };
 
 // A point of the rectangle drawn uniformly by area: density d^2 / (cos_light area) per solid
 // angle. `radiance` is the light's colour, what its face emits (rect_light.h says what each
-// integrator makes of it).
+// integrator makes of it). (The cosine is worked out twice, from the unit normal for cos_light
+// and from the area-long normal for the density, as Whitted and the path tracer always have: one
+// formula for both moved a few pixels of the shipped turntable by one level.)
 inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
   LightSample s;
   const Vec3 to = light.point(u) - point;
@@ -65,11 +71,11 @@ inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec
   if (!(d2 > 0.0f)) return s;  // on the light itself: pdf 0
   s.direction = to / s.distance;
   s.radiance = light.color;
+  const float facing = -glm::dot(s.direction, frame.unit_normal);
+  s.cos_light = light.two_sided ? std::fabs(facing) : std::max(0.0f, facing);  // 0 behind it
   float cos_light = -glm::dot(s.direction, frame.normal_area) / frame.area;
   if (light.two_sided) cos_light = std::fabs(cos_light);
-  if (!(cos_light > 0.0f)) return s;  // its dark back, or edge-on: pdf 0
-  s.cos_light = cos_light;
-  s.pdf = d2 / (cos_light * frame.area);
+  if (cos_light > 0.0f) s.pdf = d2 / (cos_light * frame.area);  // else its dark back, or edge-on: pdf 0
   return s;
 }
 

@@ -18,8 +18,9 @@ struct LightSample {
   // or the point drawn lies where the light does not emit). 1 for a delta light.
   float pdf = 0.0f;
   bool delta = false;  // a point, spot or directional light: no ray finds it by chance
-  // The cosine between the light surface's normal and the direction back to the point (1 for a
-  // delta light and the sky): Whitted's rule for a rect light reads it (core/lights/rect_light.h).
+  // The cosine between the light surface's normal and the direction back to the point, 0 behind a
+  // one-sided light (1 for a delta light and the sky): Whitted's rule for a rect light reads it
+  // (core/lights/rect_light.h).
   float cos_light = 1.0f;
 };
 

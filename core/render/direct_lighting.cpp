@@ -49,7 +49,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
                                                           (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
       if (!rect) return sample_li(light, s.position, u);
       LightSample ls = sample_li(*rect, frame, s.position, u);
-      ls.radiance *= ls.pdf > 0.0f ? rect->attenuation(ls.distance) * ls.cos_light : 0.0f;
+      ls.radiance *= rect->attenuation(ls.distance) * ls.cos_light;
       return ls;
     };
     // The shadow ray towards a sample, or false when the sample cannot light the point.
