@@ -63,16 +63,25 @@ struct RectFrame {
 // integrator makes of it). (The cosine is worked out twice, from the unit normal for cos_light
 // and from the area-long normal for the density, as Whitted and the path tracer always have: one
 // formula for both moved a few pixels of the shipped turntable by one level.)
-inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
+//
+// rect_point is the sample without its density, all Whitted reads (its rule needs no pdf).
+inline LightSample rect_point(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
   LightSample s;
   const Vec3 to = light.point(u) - point;
-  const float d2 = glm::dot(to, to);
-  s.distance = std::sqrt(d2);
-  if (!(d2 > 0.0f)) return s;  // on the light itself: pdf 0
+  s.distance = std::sqrt(glm::dot(to, to));
+  if (!(s.distance > 0.0f)) return s;  // on the light itself
   s.direction = to / s.distance;
   s.radiance = light.color;
   const float facing = -glm::dot(s.direction, frame.unit_normal);
   s.cos_light = light.two_sided ? std::fabs(facing) : std::max(0.0f, facing);  // 0 behind it
+  return s;
+}
+
+inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
+  LightSample s = rect_point(light, frame, point, u);
+  const Vec3 to = light.point(u) - point;
+  const float d2 = glm::dot(to, to);
+  if (!(d2 > 0.0f)) return s;  // pdf 0
   float cos_light = -glm::dot(s.direction, frame.normal_area) / frame.area;
   if (light.two_sided) cos_light = std::fabs(cos_light);
   if (cos_light > 0.0f) s.pdf = d2 / (cos_light * frame.area);  // else its dark back, or edge-on: pdf 0

@@ -45,7 +45,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
   const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // all but the delta lights
   Vec3 sum(0.0f);
   for (size_t l = 0; l < light_count(scene); ++l) {
-    if (!sample_areas && !light_is_delta(scene, l)) continue;
+    if (!light_present(scene, l) || (!sample_areas && !light_is_delta(scene, l))) continue;
     const LightSample ls = sample_li(scene, l, s.position, ctx.samples, path, ctx.settings.detail);
     if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) continue;
     const Vec3 f = bsdf.eval(ls.direction);

@@ -38,10 +38,9 @@ LightSample sample_sky(const Environment& sky, Vec2 u) {
 
 }  // namespace
 
-LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
-                      SurfaceDetailSwitches detail) {
+LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
+                           SurfaceDetailSwitches detail) {
   const size_t n = scene.lights.size();
-  if (l < n) return sample_li(scene.lights[l], point, samples.get2(SamplePurpose::kLight, path, l));
   if (l == n) {
     if (scene.emitters.empty()) return LightSample{};
     const Vec2 u = samples.get2(SamplePurpose::kLight, path, n);

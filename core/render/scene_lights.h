@@ -23,15 +23,30 @@ namespace rt {
 // nothing when the scene has no emissive surface or no environment image).
 inline size_t light_count(const Scene& scene) { return scene.lights.size() + 2; }
 
+// Whether light l has anything to draw: the surfaces' and the sky's slots are empty in a scene
+// without emissive surfaces or an environment image (checked before sampling, which costs more).
+inline bool light_present(const Scene& scene, size_t l) {
+  const size_t n = scene.lights.size();
+  return l < n || (l == n ? !scene.emitters.empty() : scene.background.is_image());
+}
+
 // Whether light l is a delta light (no ray meets it by chance: light sampling alone finds it).
 inline bool light_is_delta(const Scene& scene, size_t l) {
   return l < scene.lights.size() && is_delta(scene.lights[l]);
 }
 
+// The emissive surfaces' and the sky's samples (l >= scene.lights.size()), out of line.
+LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
+                           SurfaceDetailSwitches detail);
+
 // A sample of light l for the shading point `point`, from the numbers of `samples` at bounce
-// `path`. pdf 0: none (nothing to draw, or a point the light does not emit from).
-LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
-                      SurfaceDetailSwitches detail);
+// `path`. pdf 0: none (nothing to draw, or a point the light does not emit from). Inline for the
+// scene's lights: the path tracer asks once a light per bounce.
+inline LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
+                             SurfaceDetailSwitches detail) {
+  if (l < scene.lights.size()) return sample_li(scene.lights[l], point, samples.get2(SamplePurpose::kLight, path, l));
+  return sample_area_li(scene, l, point, samples, path, detail);
+}
 
 // The density with which sample_li draws the direction `direction` (unit) from a point to the
 // emissive surface of `hit`, met `distance` away with unit geometric normal `normal`; 0 when
