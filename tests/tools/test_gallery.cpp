@@ -2,6 +2,9 @@
 // and links all there, and the HTML clean by Debian's tidy.
 #include <filesystem>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -60,7 +63,14 @@ TEST_CASE("gallery: --fast writes a self-contained page whose images and links a
   }
   const rt::test::Run tidy = rt::test::run_shell("tidy -q -e '" + out + "/index.html' 2>&1");
   INFO(tidy.output);
-  CHECK(tidy.code == 0);
+  // Tidy 5.6 (Debian 12's) predates the standard loading="lazy" attribute and calls it
+  // proprietary; every other warning counts.
+  std::istringstream lines(tidy.output);
+  std::vector<std::string> problems;
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line.find("proprietary attribute \"loading\"") == std::string::npos) problems.push_back(line);
+  CHECK(tidy.code <= 1);  // 1: warnings only
+  CHECK(problems.empty());
 }
 
 TEST_CASE("gallery: in headless Chromium every image loads, every slider moves, nothing logs an error",

@@ -115,8 +115,7 @@ def figure(name, image, full, alt, caption, stats, width):
     if stats.get("stereo") in ("side_by_side", "top_bottom"):
         height *= 2 if stats["stereo"] == "top_bottom" else 1
     # Lazy: a visitor on a phone loads the images (and the GIFs' megabytes) as they scroll to them.
-    return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d" loading="lazy" '
-            'decoding="async"></a>'
+    return ('<figure id="fig-%s"><a href="%s"><img src="%s" alt="%s" width="%d" height="%d" loading="lazy"></a>'
             '<figcaption><strong>%s</strong><br><span class="stats">%s · <a href="gallery/%s.json">stats</a>'
             '</span></figcaption></figure>') % (
         name, full, image, html.escape(alt, quote=True), width, height, html.escape(caption),
