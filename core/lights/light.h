@@ -64,10 +64,10 @@ struct RectFrame {
 // and from the area-long normal for the density, as Whitted and the path tracer always have: one
 // formula for both moved a few pixels of the shipped turntable by one level.)
 //
-// rect_point is the sample without its density, all Whitted reads (its rule needs no pdf).
-inline LightSample rect_point(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
+// rect_point is the sample without its density, all Whitted reads (its rule needs no pdf): `to`
+// runs from the shading point to the light's point.
+inline LightSample rect_point(const RectLight& light, const RectFrame& frame, Vec3 to) {
   LightSample s;
-  const Vec3 to = light.point(u) - point;
   s.distance = std::sqrt(glm::dot(to, to));
   if (!(s.distance > 0.0f)) return s;  // on the light itself
   s.direction = to / s.distance;
@@ -78,8 +78,8 @@ inline LightSample rect_point(const RectLight& light, const RectFrame& frame, Ve
 }
 
 inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec3 point, Vec2 u) {
-  LightSample s = rect_point(light, frame, point, u);
   const Vec3 to = light.point(u) - point;
+  LightSample s = rect_point(light, frame, to);
   const float d2 = glm::dot(to, to);
   if (!(d2 > 0.0f)) return s;  // pdf 0
   float cos_light = -glm::dot(s.direction, frame.normal_area) / frame.area;
