@@ -57,6 +57,8 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--preview", render.preview,
                        "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
                        "given beside it still apply");
+  render_cmd->add_option("--sampler", render.sampler,
+                         "Where samples fall: " + kSampleSequences.help() + " (overrides the scene)");
   render_cmd->add_option("--secondary-shadows", render.secondary_shadows,
                          kSecondaryShadows.help() + " (overrides the scene)");
   render_cmd

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/name_table.h"
+#include "core/sampling.h"
 #include "core/texture/texture.h"
 #include "core/tone_map.h"
 
@@ -20,6 +21,13 @@ inline constexpr NameEntry<SamplePositions> kSamplePositionEntries[] = {
     {"corners", SamplePositions::kCorners, "cell corners, shared with the neighbours"},
     {"centres", SamplePositions::kCentres, "the centres of each cell's quarters"}};
 inline constexpr NameTable<SamplePositions> kSamplePositions{kSamplePositionEntries};
+
+// The names render.sampler and --sampler take (core/sampling.h).
+inline constexpr NameEntry<SampleSequence> kSampleSequenceEntries[] = {
+    {"sobol", SampleSequence::kSobol,
+     "Owen-scrambled Sobol points: each pixel's samples cover every pair of dimensions evenly"},
+    {"independent", SampleSequence::kIndependent, "an independent hash for every number (rtcli before 0.9)"}};
+inline constexpr NameTable<SampleSequence> kSampleSequences{kSampleSequenceEntries};
 
 // render.antialias: which pixel sampler, and its parameters (each read by its own mode only).
 struct AntialiasSettings {
@@ -58,9 +66,10 @@ struct PathSettings {
 struct RenderSettings {
   int width = 640;
   int height = 480;
-  int max_depth = 5;     // bounces after the camera ray (reflection/refraction), >= 0
-  uint64_t seed = 0;     // keys every random stream, with frame, pixel and sample index
-  unsigned threads = 0;  // 0 = one per CPU the process may use (core/thread_count.h)
+  int max_depth = 5;                                // bounces after the camera ray (reflection/refraction), >= 0
+  uint64_t seed = 0;                                // keys every random stream, with frame, pixel and sample index
+  SampleSequence sampler = SampleSequence::kSobol;  // render.sampler / --sampler
+  unsigned threads = 0;                             // 0 = one per CPU the process may use (core/thread_count.h)
   std::string integrator = "whitted";
   AntialiasSettings antialias;
   int tile_size = 32;       // pixels per tile side; the image never depends on it

@@ -1,8 +1,13 @@
-// Keyed random numbers and stratification. Every random number a render uses is a hash of what
-// it is for: the sample's key (seed, frame, pixel or lattice point, sample), its purpose (lens,
-// light, glossy, ...), the path through the ray tree that asks (bounce by bounce) and an index.
-// Nothing is drawn from a sequential stream, so adding shadow samples does not reshuffle glossy
-// noise, and the image never depends on which thread traced what (docs/rendering.md, "Random numbers").
+// Keyed sample numbers and stratification. Every number a render uses is named by what it is for:
+// the sample's key (seed, frame, pixel or lattice point), its purpose (lens, light, glossy, ...),
+// the path through the ray tree that asks (bounce by bounce) and an index; the pair of dimensions
+// those name is drawn at the sample's number. Nothing is drawn from a sequential stream, so adding
+// shadow samples does not reshuffle glossy noise, and the image never depends on which thread
+// traced what (docs/rendering.md, "Random numbers").
+//
+// Two sequences (render.sampler): Owen-scrambled Sobol (the default; core/owen_sobol.h), whose
+// points for samples 0..n-1 of a pixel cover each pair of dimensions evenly, and independent
+// hashes, every number on its own (the images of rtcli before 0.9, kept for comparison).
 #pragma once
 
 #include <algorithm>
@@ -10,29 +15,51 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "core/owen_sobol.h"
 #include "core/rng.h"
 
 namespace rt {
 
 enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy, kBsdf, kRoulette };
 
+// render.sampler: how a pixel's samples draw their numbers (names in core/render_settings.h).
+enum class SampleSequence { kSobol, kIndependent };
+
 class SampleStream {
  public:
   SampleStream() = default;
-  // The key of one camera sample: the same for the same (seed, frame, point, sample) anywhere.
-  SampleStream(uint64_t seed, uint32_t frame, uint64_t point, uint32_t sample)
-      : key_(mix64(mix64(mix64(mix64(seed) ^ frame) ^ point) ^ sample)) {}
+  // The numbers of one camera sample: the same for the same (seed, frame, point, sample) anywhere.
+  SampleStream(uint64_t seed, uint32_t frame, uint64_t point, uint32_t sample,
+               SampleSequence sequence = SampleSequence::kSobol)
+      : point_key_(mix64(mix64(mix64(seed) ^ frame) ^ point)),
+        key_(mix64(point_key_ ^ sample)),
+        sample_(sample),
+        sequence_(sequence) {}
 
   // Two numbers in [0, 1) for (purpose, path, index); `path` identifies the ray's place in the
-  // tree (see child_path), `index` the sample within its purpose (light number and stratum...).
+  // tree (see child_path), `index` the sample within its purpose (light_dimension...).
   Vec2 get2(SamplePurpose purpose, uint64_t path, uint64_t index) const {
-    const uint64_t h = mix64(key_ ^ mix64(path ^ mix64((static_cast<uint64_t>(purpose) << 56) ^ index)));
+    const uint64_t dimension = mix64(path ^ mix64((static_cast<uint64_t>(purpose) << 56) ^ index));
+    if (sequence_ == SampleSequence::kSobol) {
+      // The pair's seeds, the same for every sample of the point: its samples are one sequence.
+      const uint64_t h = mix64(point_key_ ^ dimension);
+      return owen_sobol2(sample_, static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32),
+                         static_cast<uint32_t>(mix64(h)));
+    }
+    const uint64_t h = mix64(key_ ^ dimension);
     return Vec2(static_cast<float>(h >> 40) * 0x1p-24f, static_cast<float>((h >> 16) & 0xffffffu) * 0x1p-24f);
   }
 
  private:
-  uint64_t key_ = 0;
+  uint64_t point_key_ = 0;  // (seed, frame, point)
+  uint64_t key_ = 0;        // and the sample: the independent sequence's key
+  uint32_t sample_ = 0;
+  SampleSequence sequence_ = SampleSequence::kSobol;
 };
+
+// The index of sample `sample` of light `light` among a purpose's numbers (SamplePurpose::kLight):
+// the one layout Whitted's shadow samples and the path tracer's light list share.
+inline uint64_t light_dimension(uint64_t light, uint32_t sample = 0) { return light << 32 | sample; }
 
 // The path id of a child ray: which kind of branch (reflection, refraction, glossy, ...) and its
 // index among its siblings. The camera ray's path is 0.

@@ -50,6 +50,7 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
     s.detail.filter = *kTextureFilters.parse(*cmd.texture_filter);
   }
   if (cmd.shadow_samples) s.shadow_samples = *cmd.shadow_samples;
+  if (cmd.sampler) s.sampler = *kSampleSequences.parse(*cmd.sampler);
   if (cmd.secondary_shadows) s.scale_secondary_shadows = *kSecondaryShadows.parse(*cmd.secondary_shadows);
   if (cmd.exposure) s.display.exposure = *cmd.exposure;
   if (cmd.tone_map) s.display.curve = *kToneMaps.parse(*cmd.tone_map);

@@ -29,6 +29,7 @@ struct RenderCommand {
   std::optional<int> glossy_samples;
   std::optional<int> shadow_samples;
   std::optional<std::string> secondary_shadows;  // "full" or "scaled"
+  std::optional<std::string> sampler;            // kSampleSequences
   std::optional<float> exposure;                 // stops
   std::optional<std::string> tone_map;           // "clamp" or "filmic"
   std::optional<int> spp;                        // the path tracer's samples per pixel

@@ -38,6 +38,7 @@ bool check_names(const RenderCommand& cmd) {
          check_name("--aa", "anti-aliasing mode", cmd.aa_mode, pixel_samplers()) &&
          check_name("--texture-filter", "texture filter", cmd.texture_filter, kTextureFilters) &&
          check_name("--secondary-shadows", "secondary shadow rule", cmd.secondary_shadows, kSecondaryShadows) &&
+         check_name("--sampler", "sampler", cmd.sampler, kSampleSequences) &&
          check_name("--tone-map", "tone curve", cmd.tone_map, kToneMaps) &&
          check_name("--aa-positions", "sample position", cmd.aa_positions, kSamplePositions) &&
          check_name("--stereo", "stereo mode", cmd.stereo, kStereoModes);

@@ -25,6 +25,7 @@ std::string render_stats_json(const RenderStatsInput& in) {
       {"threads", t.last.threads},
       {"isa", isa_name(in.isa)},
       {"seed", in.settings.seed},
+      {"sampler", std::string(kSampleSequences.name(in.settings.sampler))},
       {"integrator", in.settings.integrator},
       {"antialias", in.settings.antialias.mode},
       {"shadow_samples", in.settings.shadow_samples},

@@ -10,6 +10,7 @@ std::string settings_text(const RenderSettings& s, const PixelChoices& c, Stereo
   const auto add = [&](const std::string& key, const std::string& value) { t += key + "=" + value + ";"; };
   add("size", std::to_string(s.width) + "x" + std::to_string(s.height));
   add("seed", std::to_string(s.seed));
+  if (s.sampler != SampleSequence::kSobol) add("sampler", std::string(kSampleSequences.name(s.sampler)));
   add("integrator", s.integrator);
   add("max_depth", std::to_string(s.max_depth));
   add("antialias", aa.mode + "," + std::to_string(aa.samples) + "," + (aa.jitter ? "jitter" : "grid") + "," +

@@ -46,7 +46,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       const Vec2 u = count == 1 && (centred || !rect)
                          ? Vec2(0.5f)
                          : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
-                                                          (static_cast<uint64_t>(l) << 32) | static_cast<uint32_t>(i)));
+                                                          light_dimension(l, static_cast<uint32_t>(i))));
       if (!rect) return sample_li(light, s.position, u);
       LightSample ls = rect_point(*rect, frame, rect->point(u) - s.position);
       ls.radiance *= rect->attenuation(ls.distance) * ls.cos_light;

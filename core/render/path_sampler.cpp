@@ -26,7 +26,7 @@ bool PathSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out
       while (n < spp) {
         const int count = std::min(kPacketSize, spp - n);
         for (int i = 0; i < count; ++i) {
-          const SampleStream samples(s.seed, ctx.frame, ctx.point_key(pixel), static_cast<uint32_t>(n + i));
+          const SampleStream samples(s.seed, ctx.frame, ctx.point_key(pixel), static_cast<uint32_t>(n + i), s.sampler);
           const Vec2 offset = samples.get2(SamplePurpose::kPixel, 0, 0);
           batch.add(CameraSample{static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, samples, 1.0f}, 0);
         }

@@ -51,7 +51,7 @@ namespace {
 SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  return SampleStream(s.seed, ctx.frame, ctx.point_key(pixel_index), sample);
+  return SampleStream(s.seed, ctx.frame, ctx.point_key(pixel_index), sample, s.sampler);
 }
 
 // n x n rays on a regular sub-pixel grid, averaged with equal weights: at the cell centres, or

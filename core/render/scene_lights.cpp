@@ -43,12 +43,12 @@ LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const Sampl
   const size_t n = scene.lights.size();
   if (l == n) {
     if (scene.emitters.empty()) return LightSample{};
-    const Vec2 u = samples.get2(SamplePurpose::kLight, path, n);
-    const float u_pick = samples.get2(SamplePurpose::kLight, path, n + 1).x;
+    const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 0));
+    const float u_pick = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 1)).x;
     return sample_surfaces(scene, point, u_pick, u, detail);
   }
   if (!scene.background.is_image()) return LightSample{};
-  return sample_sky(scene.background, samples.get2(SamplePurpose::kLight, path, n + 2));
+  return sample_sky(scene.background, samples.get2(SamplePurpose::kLight, path, light_dimension(n + 1)));
 }
 
 float surface_pdf_li(const Scene& scene, const Hit& hit, Vec3 normal, Vec3 direction, float distance) {

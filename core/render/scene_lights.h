@@ -5,8 +5,8 @@
 // density of whatever a BSDF ray met, for multiple importance sampling. The path tracer's
 // direct light is one loop over this list (core/render/path_integrator.cpp).
 //
-// Light l's numbers are keyed (SamplePurpose::kLight, path, key): key l for the scene's lights,
-// n and n + 1 for the surfaces (the point, the entry), n + 2 for the sky, n = scene.lights.size().
+// Light l's numbers are keyed (SamplePurpose::kLight, path, light_dimension(l, i)), as Whitted's
+// shadow samples: the surfaces' point i = 0, their entry i = 1.
 #pragma once
 
 #include <cstddef>
@@ -44,7 +44,8 @@ LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const Sampl
 // scene's lights: the path tracer asks once a light per bounce.
 inline LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
                              SurfaceDetailSwitches detail) {
-  if (l < scene.lights.size()) return sample_li(scene.lights[l], point, samples.get2(SamplePurpose::kLight, path, l));
+  if (l < scene.lights.size())
+    return sample_li(scene.lights[l], point, samples.get2(SamplePurpose::kLight, path, light_dimension(l)));
   return sample_area_li(scene, l, point, samples, path, detail);
 }
 

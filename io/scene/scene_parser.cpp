@@ -78,6 +78,9 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
   if (const auto seed = o.number("seed", kSeed)) s.seed = static_cast<uint64_t>(*seed);
   if (const auto n = o.number("glossy_samples", kGlossySamples)) s.glossy_samples = static_cast<int>(*n);
   if (const auto n = o.number("shadow_samples", kShadowSamples)) s.shadow_samples = static_cast<int>(*n);
+  if (const Json* m = o.get("sampler")) {
+    if (const auto k = read_choice(r, *m, o.child("sampler"), kSampleSequences)) s.sampler = *k;
+  }
   if (const Json* m = o.get("secondary_shadows")) {
     if (const auto k = read_choice(r, *m, o.child("secondary_shadows"), kSecondaryShadows))
       s.scale_secondary_shadows = *k;

@@ -206,7 +206,7 @@ double polygon_irradiance(Vec3 point, Vec3 normal, const std::vector<Vec3>& v) {
 double estimated_irradiance(const Scene& scene, size_t l, Vec3 point, Vec3 normal, int count) {
   double sum = 0.0;
   for (int i = 0; i < count; ++i) {
-    const LightSample ls = sample_li(scene, l, point, SampleStream(3, 0, static_cast<uint64_t>(i), 0), kPath, {});
+    const LightSample ls = sample_li(scene, l, point, SampleStream(3, 0, 0, static_cast<uint32_t>(i)), kPath, {});
     if (!(ls.pdf > 0.0f)) continue;
     Ray shadow(point, ls.direction);
     shadow.tmax = ls.distance * (1.0f - 1e-4f);

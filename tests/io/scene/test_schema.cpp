@@ -124,6 +124,7 @@ TEST_CASE("schema: every enum of names is the code's name table", "[schema]") {
         sorted(kSamplePositions.names()));
   CHECK(names_at("/definitions/render/properties/tone_map/enum") == sorted(kToneMaps.names()));
   CHECK(names_at("/definitions/render/properties/secondary_shadows/enum") == sorted(kSecondaryShadows.names()));
+  CHECK(names_at("/definitions/render/properties/sampler/enum") == sorted(kSampleSequences.names()));
   std::vector<std::string> layouts = kStereoModes.names();
   layouts.erase(layouts.begin());  // a camera's stereo block names a layout: "none" is leaving it out
   CHECK(names_at("/definitions/camera/properties/stereo/properties/mode/enum") == sorted(layouts));

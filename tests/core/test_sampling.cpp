@@ -1,0 +1,87 @@
+// The sample sequences: Owen-scrambled Sobol pairs keep the (0, 2)-sequence's stratification, and
+// the keyed streams are what a pixel's samples read.
+#include <catch2/catch.hpp>
+
+#include <set>
+#include <vector>
+
+#include "core/owen_sobol.h"
+#include "core/sampling.h"
+
+using namespace rt;
+
+namespace {
+
+// Whether the points fill every elementary interval of area 1 / points.size() (2^k points:
+// every 2^a x 2^b grid of cells with a + b = k) exactly once.
+bool is_net(const std::vector<Vec2>& points) {
+  int k = 0;
+  while ((size_t{1} << k) < points.size()) ++k;
+  for (int a = 0; a <= k; ++a) {
+    const int cols = 1 << a, rows = 1 << (k - a);
+    std::set<int> cells;
+    for (const Vec2 p : points)
+      cells.insert(static_cast<int>(p.y * static_cast<float>(rows)) * cols + static_cast<int>(p.x * static_cast<float>(cols)));
+    if (cells.size() != points.size()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("Owen scrambling is a permutation that keeps blocks of indices together", "[sampling]") {
+  // Every aligned block of 16 indices maps onto an aligned block of 16 (bits are flipped by the
+  // bits above them only), so a shuffled index run of 2^k is still a run of 2^k points.
+  for (uint32_t seed : {1u, 0x9e3779b9u, 12345u}) {
+    std::set<uint32_t> images, blocks;
+    for (uint32_t i = 0; i < 256; ++i) {
+      const uint32_t v = owen_scramble(i << 24, seed);
+      images.insert(v);
+      if (i < 16) blocks.insert(v >> 28);
+    }
+    CHECK(images.size() == 256);
+    CHECK(blocks.size() == 1);
+  }
+  CHECK(reverse_bits(1u) == 0x80000000u);
+  CHECK(reverse_bits(0x0000f00du) == 0xb00f0000u);
+}
+
+TEST_CASE("Sobol's first two dimensions make a (0, 2)-sequence, scrambled or not", "[sampling]") {
+  CHECK(sobol_dimension1(1) == 0x80000000u);
+  CHECK(sobol_dimension1(2) == 0xc0000000u);
+  CHECK(sobol_dimension1(3) == 0x40000000u);
+  for (const uint32_t n : {16u, 64u, 256u, 1024u}) {
+    std::vector<Vec2> plain, scrambled;
+    for (uint32_t i = 0; i < n; ++i) {
+      plain.push_back(Vec2(unit_float(sobol_dimension0(i)), unit_float(sobol_dimension1(i))));
+      scrambled.push_back(owen_sobol2(i, 0x1234567u, 0xdeadbeefu, 0x7654321u));
+    }
+    CHECK(is_net(plain));
+    CHECK(is_net(scrambled));
+    // A second run of n points (n..2n-1) is a net too: a pixel's later samples fill in evenly.
+    std::vector<Vec2> next;
+    for (uint32_t i = n; i < 2 * n; ++i) next.push_back(owen_sobol2(i, 99u, 7u, 3u));
+    CHECK(is_net(next));
+  }
+}
+
+TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions; independent ones do not", "[sampling]") {
+  const auto points = [](SampleSequence sequence, SamplePurpose purpose, uint64_t path, uint64_t index) {
+    std::vector<Vec2> p;
+    for (uint32_t s = 0; s < 64; ++s) p.push_back(SampleStream(7, 2, 1234, s, sequence).get2(purpose, path, index));
+    return p;
+  };
+  CHECK(is_net(points(SampleSequence::kSobol, SamplePurpose::kPixel, 0, 0)));
+  CHECK(is_net(points(SampleSequence::kSobol, SamplePurpose::kBsdf, 3, 1)));
+  CHECK(is_net(points(SampleSequence::kSobol, SamplePurpose::kLight, 5, light_dimension(2, 7))));
+  CHECK_FALSE(is_net(points(SampleSequence::kIndependent, SamplePurpose::kPixel, 0, 0)));
+  // Pairs are decorrelated: two dimensions of the same sample do not repeat each other.
+  const std::vector<Vec2> a = points(SampleSequence::kSobol, SamplePurpose::kBsdf, 0, 0);
+  const std::vector<Vec2> b = points(SampleSequence::kSobol, SamplePurpose::kBsdf, 1, 0);
+  int same = 0;
+  for (size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
+  CHECK(same == 0);
+  // Another pixel draws another scramble of the sequence.
+  CHECK(SampleStream(7, 2, 1234, 0).get2(SamplePurpose::kPixel, 0, 0) !=
+        SampleStream(7, 2, 1235, 0).get2(SamplePurpose::kPixel, 0, 0));
+}
