@@ -151,6 +151,13 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
                    "rtcli: warning: this render can trace up to %llu camera rays; expect it to take a long time\n",
                    static_cast<unsigned long long>(max_camera_rays_per_frame(settings)));
   }
+  // Whitted's ambient stands in for indirect light, which the path tracer computes: a scene made for
+  // Whitted keeps its direct light (one light unit), and loses the flat term.
+  if (settings.integrator == "path" && max_component(graph.ambient) > 0.0f)
+    std::fprintf(stderr,
+                 "rtcli: warning: %s: \"ambient\" is Whitted's stand-in for indirect light; the path tracer "
+                 "computes that light instead and ignores it (docs/rendering.md, \"Lights and units\")\n",
+                 cmd.scene.c_str());
   const Timeline& t = graph.timeline;
   if (frames.count() > 1 && !graph.animated)
     std::fprintf(stderr, "rtcli: warning: %s has no animation: all %d frames will show the same picture\n",

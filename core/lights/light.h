@@ -59,13 +59,13 @@ struct RectFrame {
 };
 
 // A point of the rectangle drawn uniformly by area: density d^2 / (cos_light area) per solid
-// angle. `radiance` is the light's colour, what its face emits (rect_light.h says what each
-// integrator makes of it). (The cosine is worked out twice, from the unit normal for cos_light
-// and from the area-long normal for the density, as Whitted and the path tracer always have: one
-// formula for both moved a few pixels of the shipped turntable by one level.)
+// angle, carrying the face's radiance towards the point (RectLight::lighting_radiance). (The cosine is worked out
+// twice, from the unit normal for cos_light and from the area-long normal for the density, as Whitted and the path
+// tracer always have: one formula for both moved a few pixels of the shipped turntable by one level.)
 //
-// rect_point is the sample without its density, all Whitted reads (its rule needs no pdf): `to`
-// runs from the shading point to the light's point.
+// rect_point is the sample without its density, all Whitted reads (its rule needs no pdf; its
+// radiance is `color`, which Whitted scales by attenuation and cos_light): `to` runs from the
+// shading point to the light's point.
 inline LightSample rect_point(const RectLight& light, const RectFrame& frame, Vec3 to) {
   LightSample s;
   s.distance = std::sqrt(glm::dot(to, to));
@@ -85,6 +85,7 @@ inline LightSample sample_li(const RectLight& light, const RectFrame& frame, Vec
   float cos_light = -glm::dot(s.direction, frame.normal_area) / frame.area;
   if (light.two_sided) cos_light = std::fabs(cos_light);
   if (cos_light > 0.0f) s.pdf = d2 / (cos_light * frame.area);  // else its dark back, or edge-on: pdf 0
+  s.radiance = light.lighting_radiance(s.distance, frame.area);
   return s;
 }
 

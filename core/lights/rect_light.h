@@ -2,19 +2,21 @@
 // and two edge vectors so that it can face any way: its points are corner + s edge1 + t edge2,
 // s, t in [0, 1]. It emits towards normalize(edge1 x edge2) (and both ways if two_sided).
 //
-// One emission, `color`, read by each integrator by its own rule (docs/rendering.md, "Lights and units"):
-//  - Seen directly (camera, mirror and glossy rays, and BSDF rays of the path tracer), its face
-//    shows `color`: the radiance it emits, in both integrators.
-//  - The path tracer samples its face as the area emitter it is: a point y seen from x at
-//    distance d adds color x cos(theta_y) x cos(theta_x) x area / d^2, the physical rule.
-//  - Whitted lights a point as its samples would as point lights: each sends
-//    color x attenuation(d) x cos(theta_y) (theta_y between the light's normal and the direction
-//    to x; |cos| when two-sided), so a small rect light facing a point lights it as a point light
-//    of the same colour and attenuation would. A Blender area light sets `attenuation` so that
-//    this matches its power (io/gltf/extras.cpp).
+// One light unit for both integrators (docs/rendering.md, "Lights and units"): a point lights as
+// the light's samples would as point lights, each sending color x attenuation(d) x cos(theta_y)
+// (theta_y between the light's normal and the direction to the point, d its distance; |cos| when
+// two-sided), averaged over the face. So a small rect light facing a point lights it as a point
+// light of the same colour and attenuation would, in Whitted and in the path tracer alike.
+//  - Whitted takes that rule as it is, over render.shadow_samples stratified points.
+//  - The path tracer needs the face's radiance, which that rule makes
+//    L(d) = pi x color x attenuation(d) x d^2 / area (lighting_radiance): what its light samples
+//    carry and what its BSDF rays meet. With attenuation (0, 0, pi / area), L is `color`: an
+//    ordinary area emitter of that radiance (a Blender area light's import, io/gltf/extras.cpp).
+//  - Seen by a camera or mirror ray (and by Whitted's glossy rays), the face shows `color`.
 #pragma once
 
 #include "core/lights/attenuation.h"
+#include "core/math.h"
 #include "core/ray.h"
 
 namespace rt {
@@ -30,6 +32,12 @@ struct RectLight {
   // Unit normal, the side it emits towards: edge1 x edge2. (io refuses parallel or zero edges.)
   Vec3 normal() const { return glm::normalize(glm::cross(edge1, edge2)); }
   Vec3 point(Vec2 u) const { return corner + u.x * edge1 + u.y * edge2; }
+
+  // The face's radiance towards a point `distance` away, by which the light lights it (the rule
+  // above); `area` is the face's, |edge1 x edge2|.
+  Vec3 lighting_radiance(float distance, float area) const {
+    return color * (kPi * attenuation(distance) * distance * distance / area);
+  }
 
   // Where the ray meets the rectangle's face that shows light, in (ray.tmin, ray.tmax), and the
   // point's coordinates along the edges (each in [0, 1]); false if it misses it or meets the dark

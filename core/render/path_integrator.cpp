@@ -89,8 +89,15 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     if (met.light) {
       const RectLight& rect = *met.light;
       record_first_hit(ctx, Vec3(0.0f), rect.normal(), distance);
-      const float weight = delta ? 1.0f : bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance));
-      radiance += beta * rect.color * weight;
+      // A camera or mirror ray sees the face's colour, as Whitted shows it; a BSDF ray meets the
+      // radiance the light samples carry (core/lights/rect_light.h), weighted against them.
+      if (delta) {
+        radiance += beta * rect.color;
+      } else {
+        const float area = glm::length(glm::cross(rect.edge1, rect.edge2));
+        const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance));
+        radiance += beta * rect.lighting_radiance(distance, area) * weight;
+      }
       break;
     }
     const SurfaceInteraction si = scene.surface(ray, met.hit);

@@ -48,9 +48,9 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   // of the same power (intensity P / (4 pi) W/sr, times pi for the cosine lobe's peak).
   const float area = sx * sy;
   light.color = c * (*power / (4.0f * area));
-  // Whitted lights by each sample's colour x attenuation (core/lights/rect_light.h): falling off
-  // as 1 / d^2 from P / pi^2 head-on, as a Blender point light of that power does under Whitted.
-  light.attenuation = Attenuation{0.0f, 0.0f, kPi * kPi / (4.0f * area)};
+  // The attenuation under which a rect light's colour is its radiance in both integrators
+  // (core/lights/rect_light.h): head-on at 1 m it lights with P / (4 pi), as in Cycles.
+  light.attenuation = Attenuation{0.0f, 0.0f, kPi / area};
   light.two_sided = flag(a, "two_sided");
   return light;
 }

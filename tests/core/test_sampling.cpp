@@ -21,7 +21,8 @@ bool is_net(const std::vector<Vec2>& points) {
     const int cols = 1 << a, rows = 1 << (k - a);
     std::set<int> cells;
     for (const Vec2 p : points)
-      cells.insert(static_cast<int>(p.y * static_cast<float>(rows)) * cols + static_cast<int>(p.x * static_cast<float>(cols)));
+      cells.insert(static_cast<int>(p.y * static_cast<float>(rows)) * cols +
+                   static_cast<int>(p.x * static_cast<float>(cols)));
     if (cells.size() != points.size()) return false;
   }
   return true;

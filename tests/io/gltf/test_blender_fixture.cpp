@@ -54,12 +54,13 @@ TEST_CASE("Blender fixture: camera, lights and area-light extras in our units", 
   CHECK(centre.y == Approx(4.0f));
   CHECK(centre.z == Approx(0.0f).margin(1e-5));
   CHECK(softbox.normal().y == Approx(-1.0f));
-  // Its face's radiance P / (4 A) = 18.75, as Cycles'; Whitted's samples fall off from P / pi^2
-  // = 15.198 head-on at 1 m: colour x attenuation(1).
+  // Its face's radiance P / (4 A) = 18.75, as Cycles'; its samples fall off from P / (4 pi)
+  // = 11.937 head-on at 1 m: colour x attenuation(1), so that the face's radiance is its colour.
   CHECK(softbox.color.x == Approx(150.0f / (4.0f * 2.0f)));
   CHECK(softbox.color.y == Approx(0.95f * 150.0f / (4.0f * 2.0f)));
-  CHECK(softbox.color.x * softbox.attenuation(1.0f) == Approx(150.0f / (kPi * kPi)));
-  CHECK(softbox.color.x * softbox.attenuation(2.0f) == Approx(150.0f / (kPi * kPi) / 4.0f));
+  CHECK(softbox.color.x * softbox.attenuation(1.0f) == Approx(150.0f / (4.0f * kPi)));
+  CHECK(softbox.color.x * softbox.attenuation(2.0f) == Approx(150.0f / (4.0f * kPi) / 4.0f));
+  CHECK(softbox.lighting_radiance(3.0f, 2.0f).x == Approx(softbox.color.x));
   CHECK_FALSE(softbox.two_sided);
 
   // "Lamp": 200 W point light, exported as 200 x 683 / 4 pi cd: colour P / (4 pi^2) = 5.066.
