@@ -15,6 +15,7 @@
 #include "cli/frames/merge_command.h"
 #include "cli/render/render_command.h"
 #include "core/accel/isa.h"
+#include "core/denoise/denoiser.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render_settings.h"
@@ -139,7 +140,12 @@ int main(int argc, char** argv) {
                        "Do not render frames whose output file is already there and complete (resume a stopped job)");
   render_cmd->add_flag("--exr-float", render.exr_float, "EXR output: 32-bit float channels (default: half floats)");
   render_cmd->add_option("--aov", render.aov,
-                         "EXR output: layers beside the colour, any of albedo,normal,depth (comma-separated)");
+                         "EXR output: layers beside the colour, any of albedo,normal,depth,variance (comma-separated)");
+  render_cmd->add_flag("--denoise", render.denoise,
+                       "Denoise the image with its first hits' albedo, normal and depth and each pixel's variance "
+                       "(path tracer); an EXR keeps the raw image as layer \"raw\"; a --crop or --tile EXR gets the "
+                       "layers the denoiser needs, for rtcli merge --denoise");
+  render_cmd->add_option("--denoiser", render.denoiser, "Which denoiser --denoise uses: " + denoisers().help());
   render_cmd->add_option("--stats", render.stats,
                          "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
@@ -183,6 +189,16 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("tiles", merge.tiles, "The tiles (.exr), each once")->required();
   merge_cmd->add_option("-o,--output", merge.output, "The image: .png or .exr")->required();
   merge_cmd->add_flag("-q,--quiet", merge.quiet, "Print nothing but errors");
+  bool merge_denoise = false;
+  std::optional<std::string> merge_denoiser;
+  merge_cmd->add_flag("--denoise", merge_denoise,
+                      "Denoise the merged image (tiles rendered with --denoise hold the layers it reads); an EXR "
+                      "keeps the raw image as layer \"raw\"");
+  merge_cmd->add_option("--denoiser", merge_denoiser, "Which denoiser --denoise uses: " + denoisers().help())
+      ->check([](const std::string& name) {
+        return denoisers().find(name) ? std::string()
+                                      : "unknown denoiser \"" + name + "\"; expected one of: " + denoisers().list();
+      });
 
   EncodeCommand encode;
   CLI::App* encode_cmd =
@@ -248,7 +264,11 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return run_render(render);
     if (validate_cmd->parsed()) return run_validate(validate);
     if (bench_cmd->parsed()) return run_bench(bench);
-    if (merge_cmd->parsed()) return run_merge(merge);
+    if (merge_cmd->parsed()) {
+      if (merge_denoise || merge_denoiser)
+        merge.denoiser = merge_denoiser.value_or(std::string(denoisers().entries()[0].name));
+      return run_merge(merge);
+    }
     if (encode_cmd->parsed()) return run_encode(encode);
     if (slurm_cmd->parsed()) {
       farm_slurm.render_options = slurm_cmd->remaining();

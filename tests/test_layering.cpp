@@ -19,11 +19,12 @@ namespace {
 // transforms, meshes and their placements, the camera); textures, shapes and animation tracks;
 // CSG (span lists and the solid the BVH holds); the BVH; the scene's shared assets and settings;
 // lights (emissive surfaces are found through the assets); the scene itself, its graph and frames.
+// Denoisers (images in, an image out) sit on the basics alone.
 // The top-level files above the basics are named here one by one.
 const std::set<std::string> kCore{
     "core/",       "core/texture/",     "core/shapes/",      "core/animation/",        "core/csg/",
     "core/accel/", "core/scene_assets", "core/material.h",   "core/render_settings.h", "core/lights/",
-    "core/scene.", "core/scene_graph",  "core/csg_template", "core/frame_scenes"};
+    "core/scene.", "core/scene_graph",  "core/csg_template", "core/frame_scenes",      "core/denoise/"};
 
 // `own` and the given layers.
 std::set<std::string> with(std::set<std::string> own, const std::set<std::string>& below) {
@@ -45,6 +46,7 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"core/texture/", {"core/", "core/texture/"}},
       {"core/shapes/", {"core/", "core/shapes/"}},
       {"core/animation/", {"core/", "core/animation/"}},
+      {"core/denoise/", {"core/", "core/denoise/"}},
       {"core/csg/", {"core/", "core/shapes/", "core/csg/"}},
       {"core/accel/", {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/"}},
       {"core/scene_assets",

@@ -3,10 +3,12 @@
 #include <cstdio>
 
 #include "cli/common/exit_codes.h"
+#include "cli/frames/exr_denoise.h"
 #include "cli/frames/exr_display.h"
 #include "cli/frames/frame_output.h"
 #include "cli/frames/output_checks.h"
 #include "cli/frames/tile_merge.h"
+#include "core/thread_count.h"
 #include "io/image/png_file.h"
 
 namespace rt {
@@ -24,10 +26,14 @@ int run_merge(const MergeCommand& cmd) {
     return kExitBadInput;
   }
   std::vector<std::string> problems;
-  const std::optional<ExrImage> merged = merge_tiles(cmd.tiles, problems);
+  std::optional<ExrImage> merged = merge_tiles(cmd.tiles, problems);
   if (!merged) {
     for (const std::string& p : problems) std::fprintf(stderr, "rtcli: error: merge: %s\n", p.c_str());
     std::fprintf(stderr, "rtcli: nothing written\n");
+    return kExitBadInput;
+  }
+  if (!cmd.denoiser.empty() && !denoise_exr(*merged, cmd.denoiser, usable_cpu_count(), error)) {
+    std::fprintf(stderr, "rtcli: error: merge: %s; nothing written\n", error.c_str());
     return kExitBadInput;
   }
   bool ok = false;

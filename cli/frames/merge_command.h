@@ -2,6 +2,7 @@
 // (EXR files) put back together (cli/frames/tile_merge.h), written as the whole render would have been:
 // an EXR byte for byte, a PNG through the tiles' display transform. Exit 2 (and nothing written)
 // when a tile is missing, overlaps another or comes from another render; 1 when writing fails.
+// With --denoise, the merged image is denoised (the tiles must hold the denoiser's layers).
 #pragma once
 
 #include <string>
@@ -13,6 +14,7 @@ struct MergeCommand {
   std::vector<std::string> tiles;
   std::string output;
   bool quiet = false;
+  std::string denoiser;  // --denoise / --denoiser: denoise the merged image (cli/frames/exr_denoise.h)
 };
 
 int run_merge(const MergeCommand& cmd);

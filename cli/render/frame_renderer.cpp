@@ -9,7 +9,9 @@
 #include "cli/common/interrupt.h"
 #include "cli/common/progress_bar.h"
 #include "cli/render/aov_layers.h"
+#include "core/denoise/denoiser.h"
 #include "core/frame_scenes.h"
+#include "core/render/integrator.h"
 #include "core/render/stereo_images.h"
 #include "core/thread_count.h"
 
@@ -17,12 +19,11 @@ namespace rt {
 
 namespace {
 
-ExrLayer layer_of(const Film& film, const std::string& name, std::vector<std::string> channels) {
-  ExrLayer layer{name, std::move(channels), {}};
-  const size_t n = layer.channels.size();
-  layer.values.reserve(film.color.pixels.size() * n);
-  for (const Vec3& p : film.color.pixels)
-    for (size_t c = 0; c < n; ++c) layer.values.push_back(p[static_cast<int>(c)]);
+ExrLayer layer_of(const Image& image, const std::string& name) {
+  ExrLayer layer{name, {"R", "G", "B"}, {}};
+  layer.values.reserve(image.pixels.size() * 3);
+  for (const Vec3& p : image.pixels)
+    for (int c = 0; c < 3; ++c) layer.values.push_back(p[c]);
   return layer;
 }
 
@@ -39,6 +40,12 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
   const int all_passes = frames.count() * totals.passes;
   std::string error;
   Image left;
+  const std::unique_ptr<Denoiser> denoiser = content.denoiser.empty() ? nullptr : make_denoiser(content.denoiser);
+  if (denoiser && !integrator_samples_pixels(settings.integrator))
+    std::fprintf(stderr,
+                 "rtcli: warning: --denoise weighs each pixel's noise by its variance, which only the path tracer "
+                 "estimates; under %s the image is left as rendered\n",
+                 settings.integrator.c_str());
   for (int index = 0; index < frames.count(); ++index) {
     const int frame = frames.frames[static_cast<size_t>(index)];
     const Scene& scene = scenes.at(frame);
@@ -65,8 +72,9 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       }
       control.cancel = &interrupt.flag();
       // EXR layers come from the same pass as the colour (no stereo with EXR: checked before).
-      const RenderView view = stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
-                                               : RenderView{nullptr, 0, content.window, !content.aovs.empty()};
+      const RenderView view =
+          stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
+                           : RenderView{nullptr, 0, content.window, !content.aovs.empty() || denoiser != nullptr};
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
       if (totals.last.cancelled) {
@@ -87,12 +95,17 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       if (pass == 0 && totals.passes == 2) left = film.color;
     }
 
+    // The denoised image, shown in the raw one's place (no stereo: checked before).
+    const Image shown =
+        denoiser ? denoiser->denoise(denoise_input(film), resolve_thread_count(settings.threads)) : Image{};
+    const Image& picture = denoiser ? shown : film.color;
     if (is_exr(sinks[0].kind())) {  // linear, with its layers and metadata (no stereo: checked before)
       ExrImage exr;
       exr.width = settings.width;
       exr.height = settings.height;
       exr.window = film.window();
-      exr.layers.push_back(layer_of(film, "", {"R", "G", "B"}));
+      exr.layers.push_back(layer_of(picture, ""));
+      if (denoiser) exr.layers.push_back(layer_of(film.color, "raw"));
       for (const std::string& aov : content.aovs)
         exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
       exr.attributes = render_attributes(content.identity, frame, exr.window);
@@ -107,7 +120,7 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
     bool ok = true;
     const DisplayTransform& display = settings.display;
     if (!stereo.enabled()) {
-      ok = sinks[0].add(encode_srgb8(film.color, display), frame, error);
+      ok = sinks[0].add(encode_srgb8(picture, display), frame, error);
     } else if (stereo.mode == StereoMode::kPair) {
       ok = sinks[0].add(encode_srgb8(left, display), frame, error) &&
            sinks[1].add(encode_srgb8(film.color, display), frame, error);

@@ -31,7 +31,8 @@ struct RenderTotals {
 // outputs the layers beside the colour and the metadata.
 struct FrameContent {
   PixelWindow window;             // empty: the whole image
-  std::vector<std::string> aovs;  // EXR layers: albedo, normal, depth
+  std::vector<std::string> aovs;  // EXR layers: albedo, normal, depth, variance
+  std::string denoiser;           // denoise each frame with this (an EXR keeps the raw one as "raw"); empty: no
   bool exr_float = false;         // full floats, not half
   RenderIdentity identity;        // the EXR metadata (cli/frames/render_metadata.h)
 };

@@ -6,7 +6,7 @@
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames LIST] [--camera NAME]
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE]
 //   [--dither] [--allow-outside-files] [--stats FILE.json] [--crop x0,y0,x1,y1 | --tile I/N|auto]
-//   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--quiet]`
+//   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--denoise] [--quiet]`
 // (cli/main.cpp declares them, with their help). RenderCommand holds the options as given; the
 // command reads them once into a checked RenderJob (cli/render/render_job.h) and the scene's
 // settings with their overrides, and nothing below it sees this struct.
@@ -58,9 +58,11 @@ struct RenderCommand {
   std::string stats;  // --stats FILE: the render's figures as JSON (cli/render/render_stats.h); empty: none
   // Part of the render (cli/frames/render_share.h): a window of the image, a band of rows, a share of the frames.
   std::optional<std::string> crop, tile, chunk;
-  bool skip_existing = false;      // frames whose output is there and complete are not rendered again
-  bool exr_float = false;          // EXR output: 32-bit floats (default half)
-  std::optional<std::string> aov;  // EXR output: layers beside the colour, any of albedo,normal,depth
+  bool skip_existing = false;           // frames whose output is there and complete are not rendered again
+  bool exr_float = false;               // EXR output: 32-bit floats (default half)
+  std::optional<std::string> aov;       // EXR output: layers beside the colour, any of albedo,normal,depth,variance
+  bool denoise = false;                 // --denoise: the image denoised (an EXR keeps the raw one as layer "raw")
+  std::optional<std::string> denoiser;  // --denoiser NAME (implies --denoise)
   bool quiet = false;
 };
 

@@ -7,6 +7,7 @@
 #include "cli/common/suggestions.h"
 #include "cli/frames/output_checks.h"
 #include "cli/render/aov_layers.h"
+#include "core/denoise/denoiser.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "io/scene_loader.h"
@@ -41,7 +42,8 @@ bool check_names(const RenderCommand& cmd) {
          check_name("--sampler", "sampler", cmd.sampler, kSampleSequences) &&
          check_name("--tone-map", "tone curve", cmd.tone_map, kToneMaps) &&
          check_name("--aa-positions", "sample position", cmd.aa_positions, kSamplePositions) &&
-         check_name("--stereo", "stereo mode", cmd.stereo, kStereoModes);
+         check_name("--stereo", "stereo mode", cmd.stereo, kStereoModes) &&
+         check_name("--denoiser", "denoiser", cmd.denoiser, denoisers());
 }
 
 // "albedo,normal,depth" in any order, each once.
@@ -51,7 +53,8 @@ bool parse_aovs(const std::string& text, std::vector<std::string>& out) {
     const size_t comma = text.find(',', start);
     const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     if (!find_aov(name))
-      return fail("--aov: expected layers among albedo, normal, depth (comma-separated), found \"" + name + "\"");
+      return fail("--aov: expected layers among albedo, normal, depth, variance (comma-separated), found \"" + name +
+                  "\"");
     for (const std::string& seen : out)
       if (seen == name) return fail("--aov: \"" + name + "\" is given twice");
     out.push_back(name);
@@ -94,6 +97,8 @@ bool read_output(const RenderCommand& cmd, RenderJob& job) {
   if ((job.exr_float || !job.aovs.empty()) && !is_exr(job.kind))
     return fail(std::string(job.aovs.empty() ? "--exr-float" : "--aov") +
                 " applies to EXR output (-o NAME.exr or NAME_####.exr)");
+  if (!job.denoiser.empty() && stereo)
+    return fail("--denoise denoises one view; it does not go with --stereo (--stereo none renders the left eye's)");
   if (job.chunk && !is_sequence(job.kind))
     return fail(
         "--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
@@ -141,6 +146,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   job.stats = cmd.stats;
   job.skip_existing = cmd.skip_existing;
   job.exr_float = cmd.exr_float;
+  if (cmd.denoise || cmd.denoiser) job.denoiser = cmd.denoiser.value_or(std::string(denoisers().entries()[0].name));
   job.aa_debug = cmd.aa_debug;
   job.samples_debug = cmd.samples_debug;
   job.dither = cmd.dither;

@@ -46,6 +46,8 @@ struct RenderJob {
   // full floats or half.
   std::vector<std::string> aovs;
   bool exr_float = false;
+  // --denoise: the denoiser's name, empty for none (cli/render/render_plan.h says where it runs).
+  std::string denoiser;
   // Images written beside a PNG: --aa-debug's two, --samples-debug's one.
   bool aa_debug = false, samples_debug = false;
   bool dither = false;  // GIF frames: Floyd-Steinberg error diffusion

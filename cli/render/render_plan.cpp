@@ -1,9 +1,11 @@
 #include "cli/render/render_plan.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cli/frames/render_metadata.h"
 #include "cli/frames/render_share.h"
+#include "cli/render/aov_layers.h"
 #include "cli/render/settings_text.h"
 #include "core/render/band_split.h"
 
@@ -58,6 +60,17 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
   }
   plan.content.aovs = job.aovs;
   plan.content.exr_float = job.exr_float;
+  if (!job.denoiser.empty()) {
+    // A part of the image written as EXR is denoised once the parts are merged (a filter near a
+    // tile's edge needs the pixels beyond it): it carries what the denoiser reads instead.
+    if (!plan.content.window.empty() && is_exr(kind)) {
+      for (const std::string& layer : denoise_layers())
+        if (std::find(plan.content.aovs.begin(), plan.content.aovs.end(), layer) == plan.content.aovs.end())
+          plan.content.aovs.push_back(layer);
+    } else {
+      plan.content.denoiser = job.denoiser;
+    }
+  }
   if (is_exr(kind)) {
     RenderIdentity& id = plan.content.identity;
     id.scene = job.scene;
@@ -71,6 +84,7 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
     FrameList left;
     ExpectedExr expected;
     expected.layers = plan.content.aovs;
+    if (!plan.content.denoiser.empty()) expected.layers.push_back("raw");
     expected.full_float = plan.content.exr_float;
     const PixelWindow window =
         plan.content.window.empty() ? PixelWindow{0, 0, settings.width, settings.height} : plan.content.window;

@@ -12,6 +12,7 @@
 //    L(d) = pi x color x attenuation(d) x d^2 / area (lighting_radiance): what its light samples
 //    carry and what its BSDF rays meet. With attenuation (0, 0, pi / area), L is `color`: an
 //    ordinary area emitter of that radiance (a Blender area light's import, io/gltf/extras.cpp).
+//    (radiance_attenuation; a scene says "radiance": true).
 //  - Seen by a camera or mirror ray (and by Whitted's glossy rays), the face shows `color`.
 #pragma once
 
@@ -58,5 +59,11 @@ struct RectLight {
     return s >= 0.0f && s <= 1.0f && u >= 0.0f && u <= 1.0f;
   }
 };
+
+// The attenuation under which a rect light's colour is the radiance of its face in both
+// integrators: (0, 0, pi / area).
+inline Attenuation radiance_attenuation(const RectLight& light) {
+  return Attenuation{0.0f, 0.0f, kPi / glm::length(glm::cross(light.edge1, light.edge2))};
+}
 
 }  // namespace rt

@@ -19,12 +19,16 @@ struct Aovs {
   Vec3 albedo{0.0f};          // the diffuse colour (kd, less what the material transmits); 0 on a light's face
   Vec3 normal{0.0f};          // the shading normal, world space, bump and normal maps applied, facing the ray
   float distance = kFarAway;  // along the camera ray
+  // What the first thing met sends back by itself (a light's face, an emissive surface, the
+  // background): the part of the colour no bounce made, which a denoiser leaves as it is.
+  Vec3 emission{0.0f};
 
   // Adds a sample's layers with `weight` (its share of the pixel), the distance the nearer.
   void add(const Aovs& sample, float weight) {
     albedo += weight * sample.albedo;
     normal += weight * sample.normal;
     distance = std::min(distance, sample.distance);
+    emission += weight * sample.emission;
   }
 };
 

@@ -30,7 +30,7 @@ class DebugIntegrator final : public Integrator {
   Vec3 radiance_from_hit(const Ray& camera_ray, const SceneHit& met, int /*depth*/, TraceContext& ctx) const override {
     DebugHit h{camera_ray, {}, 0.0f, false};
     if (!met.surface && !met.light) {
-      record_no_hit(ctx);
+      record_no_hit(ctx, Vec3(0.0f));
       return black();
     }
     h.distance = (met.light ? h.ray.tmax : met.hit.t) * glm::length(h.ray.direction);
@@ -38,13 +38,13 @@ class DebugIntegrator final : public Integrator {
       h.light = true;
       h.surface.shading_normal = met.light->normal();
       h.surface.texcoord[0].uv = met.light_uv;
-      record_first_hit(ctx, Vec3(0.0f), h.surface.shading_normal, h.distance);
+      record_first_hit(ctx, Vec3(0.0f), h.surface.shading_normal, h.distance, Vec3(0.0f));
     } else {
       h.surface = ctx.scene.surface(h.ray, met.hit);
       if (ctx.aovs) {
         const EvaluatedSurface s = evaluate_surface(ctx.scene.materials()[h.surface.material], h.surface,
                                                     h.ray.direction, ctx.scene.textures());
-        record_first_hit(ctx, s.diffuse, s.n, h.distance);
+        record_first_hit(ctx, s.diffuse, s.n, h.distance, Vec3(0.0f));
       }
     }
     return View(h, ctx.scene);

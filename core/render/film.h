@@ -20,6 +20,9 @@ struct FilmPixel {
   uint16_t samples = 0;  // camera samples the colour averages (a shared corner counts in each pixel)
   uint8_t depth = 0;     // refinement depth
   Aovs aovs;             // when the render asks for them
+  // The variance of the colour's mean luminance, from its samples (the path tracer's pixels; 0
+  // where a pixel sampler does not estimate it): what a denoiser weighs noise by.
+  float variance = 0.0f;
 };
 
 class FilmTile {
@@ -48,9 +51,10 @@ struct Film {
   std::vector<uint16_t> samples;  // per pixel, row-major
   std::vector<uint8_t> depth;     // per pixel, row-major
   // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
-  Image albedo, normal;
+  Image albedo, normal, emission;
   std::vector<float> distance;
-  int x0 = 0, y0 = 0;  // where the film's first pixel is in the image
+  std::vector<float> variance;  // FilmPixel::variance, beside the layers
+  int x0 = 0, y0 = 0;           // where the film's first pixel is in the image
 
   Film() = default;
   Film(int width, int height) { allocate(width, height, nullptr); }
@@ -60,21 +64,25 @@ struct Film {
   // With `aovs`, the first hit's layers too. False (the film left partly grown) once `cancel` is set.
   bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false) {
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
-    color.width = albedo.width = normal.width = width;
-    color.height = albedo.height = normal.height = height;
+    color.width = albedo.width = normal.width = emission.width = width;
+    color.height = albedo.height = normal.height = emission.height = height;
     color.pixels.clear();
     samples.clear();
     depth.clear();
     albedo.pixels.clear();
     normal.pixels.clear();
+    emission.pixels.clear();
     distance.clear();
+    variance.clear();
     color.pixels.reserve(n);
     samples.reserve(n);
     depth.reserve(n);
     if (aovs) {
       albedo.pixels.reserve(n);
       normal.pixels.reserve(n);
+      emission.pixels.reserve(n);
       distance.reserve(n);
+      variance.reserve(n);
     }
     constexpr size_t kSlice = size_t{1} << 20;
     while (samples.size() < n) {
@@ -86,7 +94,9 @@ struct Film {
       if (aovs) {
         albedo.pixels.resize(next, Vec3(0.0f));
         normal.pixels.resize(next, Vec3(0.0f));
+        emission.pixels.resize(next, Vec3(0.0f));
         distance.resize(next, Aovs::kFarAway);
+        variance.resize(next, 0.0f);
       }
     }
     return true;
@@ -112,7 +122,9 @@ struct Film {
         if (has_aovs()) {
           albedo.pixels[i] = p.aovs.albedo;
           normal.pixels[i] = p.aovs.normal;
+          emission.pixels[i] = p.aovs.emission;
           distance[i] = p.aovs.distance;
+          variance[i] = p.variance;
         }
       }
   }

@@ -35,13 +35,17 @@ struct TraceContext {
 };
 
 // The camera sample's layers from what its ray met first; nothing once recorded (or not asked).
-inline void record_first_hit(TraceContext& ctx, Vec3 albedo, Vec3 normal, float distance) {
+inline void record_first_hit(TraceContext& ctx, Vec3 albedo, Vec3 normal, float distance, Vec3 emission) {
   if (!ctx.aovs) return;
-  *ctx.aovs = Aovs{albedo, normal, distance};
+  *ctx.aovs = Aovs{albedo, normal, distance, emission};
   ctx.aovs = nullptr;
 }
-// The camera ray met nothing: the layers keep their defaults (black, no normal, far away).
-inline void record_no_hit(TraceContext& ctx) { ctx.aovs = nullptr; }
+// The camera ray met nothing: the layers keep their defaults (black, no normal, far away) but
+// the background's radiance, all the colour there is.
+inline void record_no_hit(TraceContext& ctx, Vec3 background) {
+  if (ctx.aovs) ctx.aovs->emission = background;
+  ctx.aovs = nullptr;
+}
 
 class Integrator {
  public:

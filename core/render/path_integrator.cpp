@@ -79,16 +79,17 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         if (m.absorption[c] > 0.0f) beta[c] *= std::exp(-m.absorption[c] * distance);
     }
     if (!met.surface && !met.light) {  // into the background: a uniform colour or an HDR image
-      record_no_hit(ctx);
       const Environment& sky = scene.background;
+      const Vec3 sky_radiance = sky.radiance(dir);
+      record_no_hit(ctx, sky_radiance);
       float weight = 1.0f;
       if (!delta && sky.is_image()) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, sky.pdf(dir));
-      radiance += beta * sky.radiance(dir) * weight;
+      radiance += beta * sky_radiance * weight;
       break;
     }
     if (met.light) {
       const RectLight& rect = *met.light;
-      record_first_hit(ctx, Vec3(0.0f), rect.normal(), distance);
+      record_first_hit(ctx, Vec3(0.0f), rect.normal(), distance, rect.color);
       // A camera or mirror ray sees the face's colour, as Whitted shows it; a BSDF ray meets the
       // radiance the light samples carry (core/lights/rect_light.h), weighted against them.
       if (delta) {
@@ -106,7 +107,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     const EvaluatedSurface s =
         evaluate_surface(material, si, ray.direction, scene.textures(), cone_width, settings.detail);
     if (ctx.aovs) [[unlikely]]
-      record_first_hit(ctx, s.diffuse, s.n, distance);
+      record_first_hit(ctx, s.diffuse, s.n, distance, s.emission);
     if (s.emission != Vec3(0.0f)) {
       float weight = 1.0f;
       const float light_pdf = delta ? 0.0f : surface_pdf_li(scene, met.hit, si.geometric_normal, dir, distance);

@@ -4,6 +4,12 @@
 
 namespace rt {
 
+float mean_variance(double sum, double sum_squares, int n) {
+  if (n < 2) return 0.0f;
+  const double mean = sum / n;
+  return static_cast<float>(std::max(0.0, (sum_squares - sum * mean) / (n - 1)) / n);
+}
+
 float pixel_relative_error(double sum, double sum_squares, int n) {
   if (n < 2) return kInfinity;
   const double mean = sum / n;
@@ -53,7 +59,9 @@ bool PathSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out
       }
       layers.albedo /= static_cast<float>(n);
       layers.normal /= static_cast<float>(n);
-      out.at(x, y) = FilmPixel{sum / static_cast<float>(n), static_cast<uint16_t>(n), 0, layers};
+      layers.emission /= static_cast<float>(n);
+      out.at(x, y) = FilmPixel{sum / static_cast<float>(n), static_cast<uint16_t>(n), 0, layers,
+                               mean_variance(luminance, luminance_squares, n)};
     }
     ctx.row_done(tile.width());
   }

@@ -27,6 +27,10 @@ class PathSampler final : public PixelSampler {
   PathSettings settings_;
 };
 
+// The variance of the mean of n samples whose luminances sum to `sum` and whose squares sum to
+// `sum_squares` (0 for fewer than 2).
+float mean_variance(double sum, double sum_squares, int n);
+
 // The relative error of a pixel's mean from n samples whose luminances sum to `sum` and whose
 // squares sum to `sum_squares` (PathSampler's rule).
 float pixel_relative_error(double sum, double sum_squares, int n);

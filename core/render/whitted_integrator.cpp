@@ -15,9 +15,9 @@ namespace rt {
   // the light's shape.
   if (met.light) {
     radiance = met.light->color;
-    record_first_hit(ctx, Vec3(0.0f), met.light->normal(), ray.tmax * glm::length(ray.direction));
+    record_first_hit(ctx, Vec3(0.0f), met.light->normal(), ray.tmax * glm::length(ray.direction), radiance);
   } else if (!met.surface) {
-    record_no_hit(ctx);
+    record_no_hit(ctx, radiance);
   }
   if (met.surface) {
     const Hit& hit = met.hit;
@@ -26,7 +26,7 @@ namespace rt {
     const EvaluatedSurface s = evaluate_surface(scene.materials()[si.material], si, ray.direction, scene.textures(),
                                                 cone_width, ctx.settings.detail);
     if (ctx.aovs) [[unlikely]]
-      record_first_hit(ctx, s.diffuse, s.n, hit.t * glm::length(ray.direction));
+      record_first_hit(ctx, s.diffuse, s.n, hit.t * glm::length(ray.direction), s.emission);
     radiance = s.emission + direct_lighting(s, state.path, max_component(state.weight) * state.share, ctx);
     const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
     if (bounces && state.depth < ctx.settings.max_depth) {

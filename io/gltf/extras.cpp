@@ -50,7 +50,7 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   light.color = c * (*power / (4.0f * area));
   // The attenuation under which a rect light's colour is its radiance in both integrators
   // (core/lights/rect_light.h): head-on at 1 m it lights with P / (4 pi), as in Cycles.
-  light.attenuation = Attenuation{0.0f, 0.0f, kPi / area};
+  light.attenuation = radiance_attenuation(light);
   light.two_sided = flag(a, "two_sided");
   return light;
 }

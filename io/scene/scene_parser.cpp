@@ -263,6 +263,14 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       const auto e2 = o.vec3("edge2", true);
       const Json* two_sided = o.get("two_sided");
       if (two_sided && !two_sided->is_boolean()) r.expected(o.child("two_sided"), "true or false", *two_sided);
+      // "radiance": true: the colour is the face's radiance, the physical emitter's falloff
+      // (core/lights/rect_light.h), which no attenuation of the scene's may change.
+      const Json* radiance = o.get("radiance");
+      if (radiance && !radiance->is_boolean()) r.expected(o.child("radiance"), "true or false", *radiance);
+      const bool is_radiance = radiance && radiance->is_boolean() && radiance->get<bool>();
+      if (is_radiance && o.get("attenuation"))
+        r.error(o.child("attenuation"),
+                "a rect light with \"radiance\": true falls off as a physical emitter; expected no attenuation");
       o.finish();
       if (!corner || !e1 || !e2 || !attenuation || !check_rect_edges(r, o, *e1, *e2)) continue;
       light.corner = *corner;
@@ -270,6 +278,7 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       light.edge2 = *e2;
       light.color = emitted;
       light.attenuation = *attenuation;
+      if (is_radiance) light.attenuation = radiance_attenuation(light);
       light.two_sided = two_sided && two_sided->is_boolean() && two_sided->get<bool>();
       out.emplace_back(light);
     } else if (type == 2u) {

@@ -73,8 +73,13 @@ TEST_CASE("light units: a rect light lights a diffuse plane alike in both integr
     check_same_light("lu_rect_back.json", R"({ "type": "rect", "corner": [3.5, 0.5, -1], "edge1": [0, 1, 0],
       "edge2": [0, 0, 2], "color": 6, "two_sided": true })");
   }
-  SECTION("as an ordinary emitter of radiance colour: attenuation (0, 0, pi / area)") {
+  SECTION("as an ordinary emitter of radiance colour: \"radiance\": true") {
+    const LoadedScene s = plane_lit_by("lu_rect_radiance.json", R"({ "type": "rect", "corner": [-0.5, 2, -0.5],
+      "edge1": [1, 0, 0], "edge2": [0, 0, 2], "color": 5, "radiance": true })");
+    const RectLight& rect = std::get<RectLight>(s.scene.lights[0]);
+    CHECK(rect.attenuation.c2 == Approx(kPi / 2.0f));
+    CHECK(rect.lighting_radiance(0.7f, 2.0f).x == Approx(5.0f));
     check_same_light("lu_rect_emitter.json", R"({ "type": "rect", "corner": [-0.5, 2, -0.5], "edge1": [1, 0, 0],
-      "edge2": [0, 0, 1], "color": 5, "attenuation": [0, 0, 3.14159265] })");
+      "edge2": [0, 0, 1], "color": 5, "radiance": true })");
   }
 }
