@@ -127,6 +127,19 @@ std::string render_script(const SlurmJobSpec& spec) {
   return s + "\n";
 }
 
+// The merge's denoising options: a tiled render asked to --denoise carries the denoiser's layers,
+// and its merge denoises the whole image (cli/render/render_plan.cpp).
+std::string merge_denoise_options(const SlurmJobSpec& spec) {
+  const std::vector<std::string>& o = spec.render_options;
+  for (size_t i = 0; i < o.size(); ++i) {
+    if (o[i] == "--denoiser" && i + 1 < o.size()) return " --denoiser " + shell_quote(o[i + 1]);
+    if (o[i].rfind("--denoiser=", 0) == 0) return " " + shell_quote(o[i]);
+  }
+  for (const std::string& option : o)
+    if (option == "--denoise") return " --denoise";
+  return "";
+}
+
 std::string finish_script(const SlurmJobSpec& spec) {
   std::string error;
   const std::optional<OutputKind> kind = output_kind(spec.output, error);
@@ -137,8 +150,8 @@ std::string finish_script(const SlurmJobSpec& spec) {
   s += "# rtcli farm slurm: after every task of the array succeeded (--dependency=afterok).\n";
   s += "set -euo pipefail\n";
   if (tiles)
-    s += "exec " + shell_quote(spec.rtcli) + " merge " + shell_quote(spec.farm_dir + "/tiles") + "/tile_*.exr -o " +
-         shell_quote(spec.output) + "\n";
+    s += "exec " + shell_quote(spec.rtcli) + " merge " + shell_quote(spec.farm_dir + "/tiles") + "/tile_*.exr" +
+         merge_denoise_options(spec) + " -o " + shell_quote(spec.output) + "\n";
   else
     s += "exec " + shell_quote(spec.rtcli) + " encode " + shell_quote(spec.farm_dir + "/frames/frame_######.exr") +
          " --frames " + shell_quote(spec.frames) + (spec.dither ? " --dither" : "") + " -o " +

@@ -96,3 +96,14 @@ TEST_CASE("cli: what does not go with --denoise is refused with the reason", "[c
   CHECK(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("only the path tracer estimates"));
 }
+
+TEST_CASE("cli: a farm render with --denoise merges its tiles with --denoise", "[cli][denoise][split]") {
+  const std::string dir = rt::test::fresh_folder("denoise-farm");
+  auto r = rtcli("farm slurm scenes/cornell_box.json --tasks 2 --spp 4 --denoiser feature --dry-run -q -o '" + dir +
+                 "/c.png'");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(rt::test::read_file(dir + "/c-farm/render.sbatch"), Catch::Contains("'--denoiser' 'feature'"));
+  CHECK_THAT(rt::test::read_file(dir + "/c-farm/finish.sbatch"),
+             Catch::Contains("/tile_*.exr --denoiser 'feature' -o '" + dir + "/c.png'"));
+}
