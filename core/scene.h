@@ -11,6 +11,7 @@
 #include "core/lights/emitters.h"
 #include "core/lights/environment.h"
 #include "core/lights/light.h"
+#include "core/lights/light_selection.h"
 #include "core/scene_assets.h"
 
 namespace rt {
@@ -40,6 +41,8 @@ struct Scene {
   // The emissive mesh triangles, for the path tracer's light sampling (empty unless whoever
   // builds the scene makes it: SceneGraph::at does).
   Emitters emitters;
+  // Which light the path tracer samples where there are many (core/lights/light_selection.h).
+  LightSelection light_selection;
 
   const std::vector<Material>& materials() const { return assets->materials; }
   const std::vector<Texture>& textures() const { return assets->textures; }

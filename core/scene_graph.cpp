@@ -118,6 +118,8 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
                                   [](const Material& m) { return m.transmissive(); });
   scene.emitters = Emitters(scene.bvh, *assets);
+  scene.light_selection =
+      LightSelection(light_powers(scene.lights, scene.emitters, scene.background, scene.bvh.bounds()));
   return scene;
 }
 

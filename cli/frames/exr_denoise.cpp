@@ -27,7 +27,8 @@ bool read_layer(const ExrImage& exr, const std::string& name, const std::vector<
   }
   *image = Image(exr.window.width(), exr.window.height());
   for (size_t i = 0; i < pixels; ++i)
-    image->pixels[i] = Vec3(l->values[stride * i + at[0]], l->values[stride * i + at[1]], l->values[stride * i + at[2]]);
+    image->pixels[i] =
+        Vec3(l->values[stride * i + at[0]], l->values[stride * i + at[1]], l->values[stride * i + at[2]]);
   return true;
 }
 
@@ -55,8 +56,8 @@ bool denoise_exr(ExrImage& exr, const std::string& denoiser, unsigned threads, s
     error = "the tiles are already denoised (they hold a layer \"raw\")";
     return false;
   }
-  const Image denoised = make_denoiser(denoiser)->denoise(
-      DenoiseInput{color, albedo, normal, emission, depth, variance}, threads);
+  const Image denoised =
+      make_denoiser(denoiser)->denoise(DenoiseInput{color, albedo, normal, emission, depth, variance}, threads);
   for (ExrLayer& l : exr.layers)
     if (l.name.empty()) {
       ExrLayer raw = l;

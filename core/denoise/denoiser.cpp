@@ -6,7 +6,8 @@ namespace rt {
 namespace {
 
 constexpr NameEntry<DenoiserKind> kDenoiserEntries[] = {
-    {"feature", {[]() -> std::unique_ptr<Denoiser> { return std::make_unique<FeatureFilter>(); }},
+    {"feature",
+     {[]() -> std::unique_ptr<Denoiser> { return std::make_unique<FeatureFilter>(); }},
      "rtcli's own: an edge-avoiding a-trous filter on albedo-demodulated light, guided by normals, depth, "
      "albedo and each pixel's variance"}};
 constexpr NameTable<DenoiserKind> kDenoisers{kDenoiserEntries};

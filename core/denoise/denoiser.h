@@ -16,12 +16,12 @@ namespace rt {
 
 // One image and its features, all the same size, row-major.
 struct DenoiseInput {
-  const Image& color;                   // linear radiance
-  const Image& albedo;                  // the first hit's diffuse colour; black where nothing was met
-  const Image& normal;                  // the first hit's shading normal; zero where nothing was met
-  const Image& emission;                // what the first thing met emits (lights, the background): kept as it is
-  const std::vector<float>& depth;      // along the camera ray; Aovs::kFarAway where nothing was met
-  const std::vector<float>& variance;   // of each pixel's mean luminance; all 0 if unknown
+  const Image& color;                  // linear radiance
+  const Image& albedo;                 // the first hit's diffuse colour; black where nothing was met
+  const Image& normal;                 // the first hit's shading normal; zero where nothing was met
+  const Image& emission;               // what the first thing met emits (lights, the background): kept as it is
+  const std::vector<float>& depth;     // along the camera ray; Aovs::kFarAway where nothing was met
+  const std::vector<float>& variance;  // of each pixel's mean luminance; all 0 if unknown
 };
 
 class Denoiser {

@@ -31,7 +31,8 @@ Guide make_guide(const DenoiseInput& in) {
   g.depth = in.depth;
   g.hit.resize(n);
   g.slope.assign(n, 0.0f);
-  for (size_t i = 0; i < n; ++i) g.hit[i] = in.depth[i] < kFarAway && glm::dot(in.normal.pixels[i], in.normal.pixels[i]) > 0.0f;
+  for (size_t i = 0; i < n; ++i)
+    g.hit[i] = in.depth[i] < kFarAway && glm::dot(in.normal.pixels[i], in.normal.pixels[i]) > 0.0f;
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       const size_t i = static_cast<size_t>(y) * static_cast<size_t>(g.width) + static_cast<size_t>(x);

@@ -23,10 +23,10 @@ namespace rt {
 class FeatureFilter final : public Denoiser {
  public:
   static constexpr int kPasses = 3;
-  static constexpr float kAlbedoFloor = 0.02f;  // below this (a mirror, black paint) nothing is demodulated
+  static constexpr float kAlbedoFloor = 0.02f;    // below this (a mirror, black paint) nothing is demodulated
   static constexpr float kLuminanceSigma = 8.0f;  // luminance differences, in standard deviations
   static constexpr float kNormalPower = 64.0f;
-  static constexpr float kDepthSigma = 1.0f;    // depth differences, in the slope's steps
+  static constexpr float kDepthSigma = 1.0f;  // depth differences, in the slope's steps
   static constexpr float kAlbedoSigma = 0.1f;
 
   Image denoise(const DenoiseInput& input, unsigned threads) const override;

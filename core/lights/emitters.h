@@ -39,6 +39,8 @@ class Emitters {
   Emitters(const Bvh& bvh, const SceneAssets& assets);
 
   bool empty() const { return entries_.empty(); }
+  // The sum of area x emission weight over every entry: pi times it is their power.
+  float total_weight() const { return total_; }
   size_t size() const { return entries_.size(); }
   // A point: u_pick chooses the entry, u the point on it. `bvh` is the one the table was built from.
   EmitterSample sample(const Bvh& bvh, float u_pick, Vec2 u) const;

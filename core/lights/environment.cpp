@@ -126,4 +126,15 @@ float Environment::pdf(Vec3 direction) const {
   return image_->pdf(uv) / (2.0f * kPi * kPi * sin_theta);
 }
 
+float EnvironmentImage::mean_luminance() const {
+  // The rows' sin(theta) weights sum to about height x 2 / pi per column.
+  if (width_ <= 0 || height_ <= 0) return 0.0f;
+  return static_cast<float>(total_ * kPi / (2.0 * width_ * height_));
+}
+
+float Environment::mean_luminance() const {
+  if (image_) return intensity_ * image_->mean_luminance();
+  return (color_.x + color_.y + color_.z) / 3.0f;
+}
+
 }  // namespace rt

@@ -33,6 +33,8 @@ class EnvironmentImage {
   Vec2 sample(Vec2 u, float& pdf) const;
   float pdf(Vec2 uv) const;
   bool black() const { return total_ <= 0.0; }
+  // The luminance averaged over the sphere (each row weighted by the area it covers).
+  float mean_luminance() const;
 
  private:
   int width_, height_;
@@ -51,6 +53,8 @@ class Environment {
 
   bool is_image() const { return image_ != nullptr; }
   Vec3 color() const { return color_; }  // a uniform environment's radiance
+  // The radiance's luminance averaged over every direction.
+  float mean_luminance() const;
   // Radiance arriving from `direction` (any length).
   Vec3 radiance(Vec3 direction) const;
   // For an image: a direction drawn by luminance, its radiance and density per unit solid angle.

@@ -36,24 +36,35 @@ float bsdf_weight(PathSettings::Strategy strategy, float bsdf_pdf, float light_p
 
 }  // namespace
 
-// One shadow ray to each light of the scene's list (core/render/scene_lights.h): a delta light
-// counts fully, a light that BSDF rays can also meet is weighted against them (MIS).
+// One shadow ray to each light of the scene's list (core/render/scene_lights.h), or with many
+// lights to one drawn by power (scene.light_selection, its estimate divided by the light's
+// probability): a delta light counts fully, a light that BSDF rays can also meet is weighted
+// against them (MIS, its density times the probability of drawing it).
 Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, int bounce, TraceContext& ctx) const {
   const Scene& scene = ctx.scene;
   const uint64_t path = static_cast<uint64_t>(bounce);
   const PathSettings::Strategy strategy = ctx.settings.path.strategy;
   const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // all but the delta lights
-  Vec3 sum(0.0f);
-  for (size_t l = 0; l < light_count(scene); ++l) {
-    if (!light_present(scene, l) || (!sample_areas && !light_is_delta(scene, l))) continue;
+  const auto one_light = [&](size_t l, float chosen) {
+    if (!light_present(scene, l) || (!sample_areas && !light_is_delta(scene, l))) return Vec3(0.0f);
     const LightSample ls = sample_li(scene, l, s.position, ctx.samples, path, ctx.settings.detail);
-    if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) continue;
+    if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) return Vec3(0.0f);
     const Vec3 f = bsdf.eval(ls.direction);
-    if (max_component(f) <= 0.0f) continue;
-    if (!visible(s, ls.direction, ls.distance, ctx)) continue;
-    if (ls.delta) sum += f * ls.radiance * kDeltaLightScale;
-    else sum += f * ls.radiance * (light_weight(strategy, ls.pdf, bsdf.pdf(ls.direction)) / ls.pdf);
+    if (max_component(f) <= 0.0f) return Vec3(0.0f);
+    if (!visible(s, ls.direction, ls.distance, ctx)) return Vec3(0.0f);
+    if (ls.delta) return f * ls.radiance * (kDeltaLightScale / chosen);
+    const float pdf = ls.pdf * chosen;
+    return f * ls.radiance * (light_weight(strategy, pdf, bsdf.pdf(ls.direction)) / pdf);
+  };
+  const LightSelection& selection = scene.light_selection;
+  if (selection.active()) {
+    float chosen = 1.0f;
+    const float u = ctx.samples.get2(SamplePurpose::kLight, path, light_dimension(light_count(scene))).x;
+    const size_t l = selection.sample(u, chosen);
+    return one_light(l, chosen);
   }
+  Vec3 sum(0.0f);
+  for (size_t l = 0; l < light_count(scene); ++l) sum += one_light(l, 1.0f);
   return sum;
 }
 
@@ -83,7 +94,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       const Vec3 sky_radiance = sky.radiance(dir);
       record_no_hit(ctx, sky_radiance);
       float weight = 1.0f;
-      if (!delta && sky.is_image()) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, sky.pdf(dir));
+      if (!delta && sky.is_image())
+        weight = bsdf_weight(settings.path.strategy, bsdf_pdf,
+                             sky.pdf(dir) * scene.light_selection.probability(scene.lights.size() + 1));
       radiance += beta * sky_radiance * weight;
       break;
     }
@@ -96,7 +109,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
         radiance += beta * rect.color;
       } else {
         const float area = glm::length(glm::cross(rect.edge1, rect.edge2));
-        const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance));
+        const float chosen =
+            scene.light_selection.active() ? scene.light_selection.probability(light_index(scene, rect)) : 1.0f;
+        const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance) * chosen);
         radiance += beta * rect.lighting_radiance(distance, area) * weight;
       }
       break;
@@ -110,7 +125,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       record_first_hit(ctx, s.diffuse, s.n, distance, s.emission);
     if (s.emission != Vec3(0.0f)) {
       float weight = 1.0f;
-      const float light_pdf = delta ? 0.0f : surface_pdf_li(scene, met.hit, si.geometric_normal, dir, distance);
+      const float light_pdf = delta ? 0.0f
+                                    : surface_pdf_li(scene, met.hit, si.geometric_normal, dir, distance) *
+                                          scene.light_selection.probability(scene.lights.size());
       if (light_pdf > 0.0f) weight = bsdf_weight(settings.path.strategy, bsdf_pdf, light_pdf);
       radiance += beta * s.emission * weight;
     }

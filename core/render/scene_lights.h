@@ -30,6 +30,13 @@ inline bool light_present(const Scene& scene, size_t l) {
   return l < n || (l == n ? !scene.emitters.empty() : scene.background.is_image());
 }
 
+// The index in the list of the scene's rect light `rect` (met by a ray: Scene::intersect).
+inline size_t light_index(const Scene& scene, const RectLight& rect) {
+  for (size_t l = 0; l < scene.lights.size(); ++l)
+    if (std::get_if<RectLight>(&scene.lights[l]) == &rect) return l;
+  return scene.lights.size();
+}
+
 // Whether light l is a delta light (no ray meets it by chance: light sampling alone finds it).
 inline bool light_is_delta(const Scene& scene, size_t l) {
   return l < scene.lights.size() && is_delta(scene.lights[l]);
