@@ -12,9 +12,7 @@ float luminance(Vec3 c) { return (c.x + c.y + c.z) / 3.0f; }  // as emission_wei
 // d (path tracer units), so a point light sends pi x colour x attenuation(1) x 4 pi.
 struct PowerOf {
   float disk;  // pi R^2: the scene's cross-section, for lights from infinitely far
-  float operator()(const PointLight& l) const {
-    return kPi * luminance(l.color) * l.attenuation(1.0f) * 4.0f * kPi;
-  }
+  float operator()(const PointLight& l) const { return kPi * luminance(l.color) * l.attenuation(1.0f) * 4.0f * kPi; }
   float operator()(const SpotLight& l) const {
     const float cos_mid = 0.5f * (l.cos_inner + l.cos_outer);
     return kPi * luminance(l.color) * l.attenuation(1.0f) * 2.0f * kPi * (1.0f - cos_mid);

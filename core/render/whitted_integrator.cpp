@@ -88,6 +88,22 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
     reflect_weight += (s.pbr ? Vec3(s.transmission_factor) : s.transmission) * fresnel;
     refract_weight = s.transmission * (1.0f - fresnel);
     beyond = after;
+    // Below a glossy split each ray stays one ray (spread()): at glass it follows the reflection
+    // or the refraction, drawn by their weights, rather than both, so a rough glass ball costs
+    // glossy_samples x depth rays, not glossy_samples x 2^depth. (The split's rays average the
+    // choices; the expected colour is the same.)
+    const float reflect_part = max_component(reflect_weight), refract_part = max_component(refract_weight);
+    if (state.split && reflect_part > 0.0f && refract_part > 0.0f) {
+      const float p_reflect = reflect_part / (reflect_part + refract_part);
+      const float u = ctx.samples.get2(SamplePurpose::kGlossy, child_path(state.path, kFresnelChoice, 0), 0).x;
+      if (u < p_reflect) {
+        reflect_weight /= p_reflect;
+        refract_weight = Vec3(0.0f);
+      } else {
+        refract_weight /= 1.0f - p_reflect;
+        reflect_weight = Vec3(0.0f);
+      }
+    }
   }
   Vec3 sum(0.0f);
   PathState next = state;
@@ -97,13 +113,14 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
     next.path = child_path(state.path, kReflected, 0);
     Vec3 mirror = reflect(d, s.n);
     if (glm::dot(mirror, s.ng) <= 0.0f) mirror = reflect(d, s.ng);  // never into the surface
-    sum += reflect_weight * spread(s, mirror, s.glossy, RayKind::kReflection, next, ctx);
+    sum += reflect_weight * spread(s, mirror, s.glossy, RayKind::kReflection, max_component(reflect_weight), next, ctx);
   }
   if (max_component(state.weight * refract_weight) >= kMinWeight) {
     next.weight = state.weight * refract_weight;
     next.media = beyond;
     next.path = child_path(state.path, kRefracted, 0);
-    sum += refract_weight * spread(s, refracted, s.refraction_glossy, RayKind::kRefraction, next, ctx);
+    sum += refract_weight *
+           spread(s, refracted, s.refraction_glossy, RayKind::kRefraction, max_component(refract_weight), next, ctx);
   }
   return sum;
 }
@@ -114,13 +131,18 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const Vec3& incomin
 // above it for a refraction) are discarded and the rest averaged; if all fall there, the central
 // ray stands in. Only the first glossy hit of a path splits; glossy hits below it trace one
 // jittered ray each, so a ray tree costs glossy_samples x depth rays rather than
-// glossy_samples ^ depth. A refracted ray spreads for glTF's rough transmission.
-Vec3 WhittedIntegrator::spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind,
+// glossy_samples ^ depth; at glass below a split, one of the two branches is followed
+// (secondary()). A refracted ray spreads for glTF's rough transmission; at glass the branches
+// split in proportion to their weight (`branch_weight`), at least one ray each.
+Vec3 WhittedIntegrator::spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
                                const PathState& state, TraceContext& ctx) const {
   if (!ctx.settings.glossy || width <= 0.0f || ctx.settings.glossy_samples < 1)
     return traced_from(s, centre, kind, state, ctx);
   const bool through = kind == RayKind::kRefraction;
-  const int count = state.split ? 1 : ctx.settings.glossy_samples;
+  // At glass the two branches share the split by their weights (a 4 % Fresnel reflection takes
+  // one ray of 8, the refraction 8): rays follow what they add, as scaled shadow samples do.
+  int count = state.split ? 1 : ctx.settings.glossy_samples;
+  if (count > 1 && s.transmissive()) count = secondary_shadow_samples(count, branch_weight);
   const StratifiedGrid grid(count);
   Vec3 u, v;
   hughes_moller_basis(centre, u, v);

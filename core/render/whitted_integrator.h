@@ -35,12 +35,12 @@ class WhittedIntegrator final : public Integrator {
   // trace() once the ray's first meeting is known (ray.tmax at it).
   Vec3 shade(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const;
   // Branch kinds for child_path.
-  enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay, kGlossyRefraction };
+  enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay, kGlossyRefraction, kFresnelChoice };
 
  private:
   Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
-  Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, const PathState& state,
-              TraceContext& ctx) const;
+  Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
+              const PathState& state, TraceContext& ctx) const;
   Vec3 traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
                    TraceContext& ctx) const;
 };

@@ -294,3 +294,28 @@ TEST_CASE("a glass sphere's shadow is light all over: each surface filters by tr
   CHECK(amber.y == Approx(0.9216f * 0.25f));
   CHECK(amber.z == Approx(0.9216f * 0.0625f));
 }
+
+TEST_CASE("glass below a glossy split follows one branch: glossy_samples x depth rays, not x 2^depth",
+          "[glossy][refraction]") {
+  // A glossy mirror floor whose 8 rays per camera ray all meet a glass slab hanging over it; the
+  // glass would fork each into reflection and refraction at every surface, 2^depth rays each.
+  const LoadedScene s = rt::test::load_scene_text("glossy_over_glass.json", R"({
+  "render": { "width": 4, "height": 4, "max_depth": 8, "glossy_samples": 8, "shadow_samples": 1,
+              "antialias": { "mode": "none" } },
+  "camera": { "position": [0, 0.5, 0], "look_at": [0, 0, -0.3], "fov": 10 },
+  "background": [0.5, 0.6, 0.7],
+  "materials": { "floor": { "kd": 0, "ks": 0, "reflectivity": 1, "glossy": 0.05 },
+                 "glass": { "kd": 0, "transmission": 1, "ior": 1.5 } },
+  "nodes": [ { "shape": "plane", "material": "floor", "transform": { "scale": 50 } },
+             { "shape": "cube", "material": "glass", "transform": { "translate": [0, 3, 0], "scale": [50, 0.5, 50] } } ]
+})");
+  Image image;
+  const RenderStats stats = render(s.scene, s.settings, image);
+  // 16 camera rays, 8 glossy rays each, then at most one ray a bounce for the 7 bounces left:
+  // 16 x 8 x 8 in all. (Both branches at every glass surface took 1136 here: 256 reflected, 896
+  // refracted, 384 glossy.)
+  const uint64_t secondary =
+      stats.rays[RayKind::kGlossy] + stats.rays[RayKind::kReflection] + stats.rays[RayKind::kRefraction];
+  CHECK(secondary <= 16 * 8 * 8);
+  CHECK(stats.rays[RayKind::kRefraction] > 16 * 8);  // the rays do go through the glass
+}
