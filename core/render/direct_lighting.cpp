@@ -1,5 +1,6 @@
 #include "core/render/direct_lighting.h"
 
+#include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
 #include "materials/phong.h"
 
@@ -11,6 +12,28 @@ namespace {
 // child box for all its lanes, which pays only when enough of them are in use (measured:
 // docs/benchmark.md, "Shadow-ray packets").
 constexpr int kMinShadowPacket = 4;
+
+// The emissive surfaces as Whitted sees them, through the light interface
+// (core/render/scene_lights.h): `count` points drawn from them by area x emission, each lighting
+// by the point-light rule as the path tracer's sample would, L / (pi x density): a floor under a
+// glowing ball is as bright as path traced (tests/render/test_light_units.cpp).
+template <class ShadowRay, class Lit>
+Vec3 emitted_light(const EvaluatedSurface& s, uint64_t path, int count, const ShadowRay& shadow_ray, const Lit& lit,
+                   TraceContext& ctx) {
+  const Scene& scene = ctx.scene;
+  Vec3 sum(0.0f);
+  for (int i = 0; i < count; ++i) {
+    LightSample ls = sample_area_li(scene, scene.lights.size(), s.position, ctx.samples, path, ctx.settings.detail,
+                                    static_cast<uint32_t>(i));
+    if (!(ls.pdf > 0.0f)) continue;
+    ls.radiance /= kPi * ls.pdf;
+    Ray shadow;
+    if (!shadow_ray(ls, shadow)) continue;
+    const Vec3 visible = shadow_transmittance(scene, shadow);
+    if (max_component(visible) > 0.0f) sum += lit(ls, visible);
+  }
+  return sum / static_cast<float>(count);
+}
 
 }  // namespace
 
@@ -31,6 +54,28 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
   const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
   const bool lifted = s.shadow_lift != Vec3(0.0f);
+  // The shadow ray towards a sample, or false when the sample cannot light the point.
+  const auto shadow_ray = [&](const LightSample& ls, Ray& shadow) {
+    // A light behind the geometric surface cannot reach it, whatever the shading normal says;
+    // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
+    // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
+    // follows the normals rather than the facets' edges.
+    if (glm::dot(s.n, ls.direction) <= 0.0f) return false;
+    if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) return false;
+    if (max_component(ls.radiance) <= 0.0f) return false;  // the dark back of an area light
+    // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
+    // far beside a lift of a fraction of a facet.
+    shadow.origin = shadow_ray_origin(s, ls.direction);
+    shadow.direction = ls.direction;
+    shadow.tmin = 0.0f;
+    // Stop just short of the light so a surface the light sits on does not shadow it.
+    shadow.tmax = ls.distance * (1.0f - kShadowEpsilon);
+    ++ctx.counters[RayKind::kShadow];
+    return true;
+  };
+  const auto lit = [&](const LightSample& ls, Vec3 visible) {
+    return visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+  };
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     // A point light is one sample; an area light shadow_samples points stratified over it, one
@@ -51,28 +96,6 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       LightSample ls = rect_point(*rect, frame, rect->point(u) - s.position);
       ls.radiance *= rect->attenuation(ls.distance) * ls.cos_light;
       return ls;
-    };
-    // The shadow ray towards a sample, or false when the sample cannot light the point.
-    const auto shadow_ray = [&](const LightSample& ls, Ray& shadow) {
-      // A light behind the geometric surface cannot reach it, whatever the shading normal says;
-      // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
-      // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
-      // follows the normals rather than the facets' edges.
-      if (glm::dot(s.n, ls.direction) <= 0.0f) return false;
-      if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) return false;
-      if (max_component(ls.radiance) <= 0.0f) return false;  // the dark back of an area light
-      // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
-      // far beside a lift of a fraction of a facet.
-      shadow.origin = shadow_ray_origin(s, ls.direction);
-      shadow.direction = ls.direction;
-      shadow.tmin = 0.0f;
-      // Stop just short of the light so a surface the light sits on does not shadow it.
-      shadow.tmax = ls.distance * (1.0f - kShadowEpsilon);
-      ++ctx.counters[RayKind::kShadow];
-      return true;
-    };
-    const auto lit = [&](const LightSample& ls, Vec3 visible) {
-      return visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
     };
     Vec3 light_sum(0.0f);
     if (count < kMinShadowPacket || !scene.all_opaque) {
@@ -106,6 +129,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     }
     sum += light_sum / static_cast<float>(count);
   }
+  if (!scene.emitters.empty()) sum += emitted_light(s, path, samples, shadow_ray, lit, ctx);
   return sum;
 }
 

@@ -39,16 +39,16 @@ LightSample sample_sky(const Environment& sky, Vec2 u) {
 }  // namespace
 
 LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
-                           SurfaceDetailSwitches detail) {
+                           SurfaceDetailSwitches detail, uint32_t sample) {
   const size_t n = scene.lights.size();
   if (l == n) {
     if (scene.emitters.empty()) return LightSample{};
-    const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 0));
-    const float u_pick = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 1)).x;
+    const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 2 * sample));
+    const float u_pick = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 2 * sample + 1)).x;
     return sample_surfaces(scene, point, u_pick, u, detail);
   }
   if (!scene.background.is_image()) return LightSample{};
-  return sample_sky(scene.background, samples.get2(SamplePurpose::kLight, path, light_dimension(n + 1)));
+  return sample_sky(scene.background, samples.get2(SamplePurpose::kLight, path, light_dimension(n + 1, sample)));
 }
 
 float surface_pdf_li(const Scene& scene, const Hit& hit, Vec3 normal, Vec3 direction, float distance) {

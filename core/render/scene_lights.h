@@ -42,9 +42,10 @@ inline bool light_is_delta(const Scene& scene, size_t l) {
   return l < scene.lights.size() && is_delta(scene.lights[l]);
 }
 
-// The emissive surfaces' and the sky's samples (l >= scene.lights.size()), out of line.
+// The emissive surfaces' and the sky's samples (l >= scene.lights.size()), out of line; `sample`
+// numbers several samples of one shading point (Whitted's shadow samples; the path tracer's one is 0).
 LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
-                           SurfaceDetailSwitches detail);
+                           SurfaceDetailSwitches detail, uint32_t sample = 0);
 
 // A sample of light l for the shading point `point`, from the numbers of `samples` at bounce
 // `path`. pdf 0: none (nothing to draw, or a point the light does not emit from). Inline for the
