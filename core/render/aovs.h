@@ -1,9 +1,10 @@
 // What the first surface a camera sample meets shows beside its colour: the layers an EXR output
-// holds (--aov) and a denoiser or a live preview reads. The integrator that renders the colour
-// fills them at its first hit (TraceContext::aovs), in the same pass; the pixel sampler averages
-// them with the colour's weights (as pbrt-v4's GBufferFilm), but keeps the distance of the
-// nearest surface any sample met (as Arnold's closest filter): an average of a near surface and
-// the background's 1e10 is no distance at all.
+// holds (--aov) and a denoiser or a live preview reads. (The path tracer records them at the
+// first surface that is not a perfect mirror or clear glass, seen through those and tinted by
+// them, as Cycles' and OpenImageDenoise's denoising layers: path_integrator.cpp.) The integrator that renders the
+// colour fills them at its first hit (TraceContext::aovs), in the same pass; the pixel sampler averages them with the
+// colour's weights (as pbrt-v4's GBufferFilm), but keeps the distance of the nearest surface any sample met (as
+// Arnold's closest filter): an average of a near surface and the background's 1e10 is no distance at all.
 #pragma once
 
 #include <algorithm>

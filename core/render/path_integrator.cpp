@@ -79,6 +79,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
   bool delta = true;      // the last bounce was a delta lobe (or the camera): what it meets counts fully
   float bsdf_pdf = 0.0f;  // the density of the last bounce's direction, for MIS where it meets a light
   float cone_width = ctx.pixel_footprint, cone_spread = ctx.pixel_spread;
+  float travelled = 0.0f;  // along the path before this segment: the layers' distance (record below)
   for (int bounce = 0;; ++bounce) {
     const float length = glm::length(ray.direction);
     const Vec3 dir = ray.direction / length;
@@ -92,7 +93,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     if (!met.surface && !met.light) {  // into the background: a uniform colour or an HDR image
       const Environment& sky = scene.background;
       const Vec3 sky_radiance = sky.radiance(dir);
-      record_no_hit(ctx, sky_radiance);
+      record_no_hit(ctx, beta * sky_radiance);
       float weight = 1.0f;
       if (!delta && sky.is_image())
         weight = bsdf_weight(settings.path.strategy, bsdf_pdf,
@@ -102,7 +103,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     }
     if (met.light) {
       const RectLight& rect = *met.light;
-      record_first_hit(ctx, Vec3(0.0f), rect.normal(), distance, rect.color);
+      record_first_hit(ctx, Vec3(0.0f), rect.normal(), travelled + distance, beta * rect.color);
       // A camera or mirror ray sees the face's colour, as Whitted shows it; a BSDF ray meets the
       // radiance the light samples carry (core/lights/rect_light.h), weighted against them.
       if (delta) {
@@ -121,8 +122,12 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     cone_width += cone_spread * distance;
     const EvaluatedSurface s =
         evaluate_surface(material, si, ray.direction, scene.textures(), cone_width, settings.detail);
-    if (ctx.aovs) [[unlikely]]
-      record_first_hit(ctx, s.diffuse, s.n, distance, s.emission);
+    // The layers come from the first surface that is not a perfect mirror or clear glass (seen
+    // through those, tinted by them: as Cycles' and OpenImageDenoise's denoising albedo), so
+    // that a denoiser keeps what a glass ball or a mirror shows sharp.
+    const auto record = [&] { record_first_hit(ctx, beta * s.diffuse, s.n, travelled + distance, beta * s.emission); };
+    if (ctx.aovs && bounce >= settings.max_depth) [[unlikely]]
+      record();
     if (s.emission != Vec3(0.0f)) {
       float weight = 1.0f;
       const float light_pdf = delta ? 0.0f
@@ -142,6 +147,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       eta = crossing.n_after / crossing.n_before;
     }
     const Bsdf bsdf(s, eta);
+    if (ctx.aovs && bsdf.has_smooth_lobes()) [[unlikely]]
+      record();
     if (bsdf.has_smooth_lobes()) radiance += beta * direct_light(s, bsdf, bounce, ctx);
 
     const Vec2 pick = ctx.samples.get2(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 0);
@@ -163,6 +170,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     }
     if (!(max_component(beta) > 0.0f) || !is_finite(beta)) break;
 
+    travelled += distance;
     ray = Ray{};
     ray.origin = offset_ray_origin(s.position, s.position_error, s.ng, b.wi);
     ray.direction = b.wi;

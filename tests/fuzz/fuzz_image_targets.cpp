@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "cli/frames/exr_denoise.h"
 #include "cli/frames/tile_merge.h"
 #include "core/lights/environment.h"
 #include "core/rng.h"
@@ -96,6 +97,12 @@ std::string exr_tile(const uint8_t* data, size_t size) {
   if (!merged && problems.empty()) return "merge failed without saying why";
   if (merged && (!image || image->window != PixelWindow::whole(image->width, image->height)))
     return "merge of one tile succeeded but the tile is not the whole image";
+  if (merged) {  // rtcli merge --denoise: the layers checked, then the whole image denoised
+    ExrImage denoised = *merged;
+    std::string denoise_error;
+    if (!denoise_exr(denoised, "feature", 1, denoise_error) && denoise_error.empty())
+      return "denoise failed without saying why";
+  }
   std::filesystem::remove(path);
   return "";
 }

@@ -93,3 +93,27 @@ TEST_CASE("AOVs: a pixel's depth is the nearest surface any of its samples met",
   const Pass one = render_pass(s, centre, true);
   for (size_t i = 0; i < with.film.distance.size(); ++i) CHECK(with.film.distance[i] <= one.film.distance[i] * 1.02f);
 }
+
+TEST_CASE("AOVs: the path tracer's layers see through mirrors and clear glass, as a denoiser needs them",
+          "[render][aov][denoise]") {
+  // A perfect mirror filling the view reflects the red floor: the layers at the centre are the
+  // floor's (its albedo tinted by the mirror's 0.9, its normal, the whole path's length), and
+  // the emission layer holds the sky the mirror shows, so a denoiser keeps the reflection sharp.
+  const LoadedScene s = rt::test::load_scene_text("aov_mirror.json", R"({
+  "render": { "width": 9, "height": 9, "samples_per_pixel": 4, "max_depth": 3, "integrator": "path" },
+  "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 10 },
+  "background": [0.3, 0.4, 0.5],
+  "materials": { "mirror": { "kd": 0, "ks": 0, "reflectivity": 0.9 }, "red": { "kd": [0.8, 0.1, 0.1] } },
+  "nodes": [ { "shape": "plane", "material": "mirror", "transform": { "rotate": [-45, 0, 0], "scale": 20 } },
+             { "shape": "plane", "material": "red", "transform": { "translate": [0, -3, 0], "scale": 50 } } ]
+})");
+  const Pass p = render_pass(s, s.settings, true);
+  const size_t centre = p.film.index(4, 4);
+  // The camera looks down -z at a mirror tilted 45 degrees: the ray turns down to the floor.
+  const Vec3 albedo = p.film.albedo.pixels[centre];
+  CHECK(albedo.x == Approx(0.9f * 0.8f).epsilon(0.01));
+  CHECK(albedo.y == Approx(0.9f * 0.1f).epsilon(0.01));
+  CHECK(p.film.normal.pixels[centre].y == Approx(1.0f).epsilon(0.01));
+  CHECK(p.film.distance[centre] == Approx(5.0f + 3.0f).epsilon(0.02));
+  CHECK(p.film.emission.pixels[centre] == Vec3(0.0f));
+}

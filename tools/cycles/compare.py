@@ -5,7 +5,8 @@ wall time (RMSE against its own converged reference, linear radiance).
 
   python3 tools/cycles/compare.py [SCENE.json] [--size 160] [--reference 1024] [--samples 32] [--out DIR]
 
-Needs Blender 3.4 (Debian `blender`) and build/rtcli. Render times are each renderer's own
+Also rtcli's equal-time image denoised (--denoise). Needs Blender 3.4 (Debian `blender`) and
+build/rtcli. Render times are each renderer's own
 (rtcli's summary, Cycles' render call), both on 2 threads; Blender's start-up is not counted.
 """
 import argparse
@@ -63,9 +64,9 @@ def mean(a, c):
     return sum(p[c] for p in a) / len(a)
 
 
-def rtcli(scene, out, size, spp, seed):
+def rtcli(scene, out, size, spp, seed, *extra):
     r = subprocess.run([os.path.join(ROOT, "build/rtcli"), "render", scene, "-o", out, "--width", str(size),
-                        "--height", str(size), "--spp", str(spp), "--seed", str(seed), "--threads", "2"],
+                        "--height", str(size), "--spp", str(spp), "--seed", str(seed), "--threads", "2", *extra],
                        capture_output=True, text=True, check=True, cwd=ROOT)
     return float(re.search(r" in ([0-9.]+) s", r.stderr).group(1))
 
@@ -105,6 +106,11 @@ def main():
     e_rt = rmse(read_png(p("rtcli-eq.png")), rt_ref)
     print("equal time: Cycles %d samples in %.2f s, RMSE %.4f; rtcli %d samples in %.2f s, RMSE %.4f (%.2fx Cycles')"
           % (a.samples, t_cy, e_cy, spp, t_rt, e_rt, e_rt / e_cy))
+    # The same samples denoised (rtcli's --denoise; Cycles' denoiser stays off, as above). The
+    # denoiser's own time (milliseconds at this size) is not in rtcli's render time.
+    rtcli(a.scene, p("rtcli-eq-denoised.png"), a.size, spp, 3, "--denoise")
+    e_dn = rmse(read_png(p("rtcli-eq-denoised.png")), rt_ref)
+    print("equal time, rtcli denoised: RMSE %.4f (%.2fx Cycles')" % (e_dn, e_dn / e_cy))
 
 
 if __name__ == "__main__":
