@@ -13,25 +13,26 @@
 namespace rt {
 
 inline uint32_t reverse_bits(uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = __builtin_bswap32(x);  // the bytes, then the bits within them
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 }
 
-// A nested uniform (Owen) scramble of x's bits, most significant first: each bit flipped by a
-// hash of the bits above it. Done as a hash that only carries upwards (Laine and Karras's
-// construction, with Vegdahl's constants) on the reversed bits.
-inline uint32_t owen_scramble(uint32_t x, uint32_t seed) {
-  x = reverse_bits(x);
+// A hash whose every bit depends only on the bits below it (carries only go up): Laine and
+// Karras's construction, with Vegdahl's constants.
+inline uint32_t upward_hash(uint32_t x, uint32_t seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
-  return reverse_bits(x);
+  return x;
 }
+
+// A nested uniform (Owen) scramble of x's bits, most significant first: each bit flipped by a
+// hash of the bits above it, the upward hash on the reversed bits.
+inline uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(upward_hash(reverse_bits(x), seed)); }
 
 // The first Sobol dimension: the van der Corput sequence (the index's bits mirrored).
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
@@ -39,8 +40,8 @@ inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
 // The second Sobol dimension (primitive polynomial x + 1: direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1).
 inline uint32_t sobol_dimension1(uint32_t index) {
   uint32_t result = 0;
-  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1u) result ^= v;
+  // Branch-free: which bits are set is noise to a branch predictor.
+  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) result ^= v & (0u - (index & 1u));
   return result;
 }
 
@@ -49,11 +50,21 @@ inline float unit_float(uint32_t bits) { return static_cast<float>(bits >> 8) * 
 
 // Point `index` of the scrambled sequence that the three seeds pick: the index shuffled (by an
 // Owen scramble, which keeps every aligned power-of-two block of indices a block), then both
-// coordinates scrambled.
+// coordinates scrambled. Written without the bit reversals that cancel: the shuffled index's
+// first dimension is its reversal, which the coordinate's scramble reverses back.
+// `reversed_index`: reverse_bits(index), which a sample's many dimensions share.
+inline uint32_t shuffled_index(uint32_t reversed_index, uint32_t shuffle_seed) {
+  return reverse_bits(upward_hash(reversed_index, shuffle_seed));
+}
+inline float owen_sobol_x(uint32_t shuffled, uint32_t x_seed) {
+  return unit_float(reverse_bits(upward_hash(shuffled, x_seed)));  // owen_scramble(sobol_dimension0(i), x_seed)
+}
+inline float owen_sobol_y(uint32_t shuffled, uint32_t y_seed) {
+  return unit_float(owen_scramble(sobol_dimension1(shuffled), y_seed));
+}
 inline Vec2 owen_sobol2(uint32_t index, uint32_t shuffle_seed, uint32_t x_seed, uint32_t y_seed) {
-  const uint32_t i = owen_scramble(index, shuffle_seed);
-  return Vec2(unit_float(owen_scramble(sobol_dimension0(i), x_seed)),
-              unit_float(owen_scramble(sobol_dimension1(i), y_seed)));
+  const uint32_t i = shuffled_index(reverse_bits(index), shuffle_seed);
+  return Vec2(owen_sobol_x(i, x_seed), owen_sobol_y(i, y_seed));
 }
 
 }  // namespace rt

@@ -34,6 +34,7 @@ class SampleStream {
       : point_key_(mix64(mix64(mix64(seed) ^ frame) ^ point)),
         key_(mix64(point_key_ ^ sample)),
         sample_(sample),
+        reversed_sample_(reverse_bits(sample)),
         sequence_(sequence) {}
 
   // Two numbers in [0, 1) for (purpose, path, index); `path` identifies the ray's place in the
@@ -43,17 +44,26 @@ class SampleStream {
     if (sequence_ == SampleSequence::kSobol) {
       // The pair's seeds, the same for every sample of the point: its samples are one sequence.
       const uint64_t h = mix64(point_key_ ^ dimension);
-      return owen_sobol2(sample_, static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32),
-                         static_cast<uint32_t>(mix64(h)));
+      const uint32_t i = shuffled_index(reversed_sample_, static_cast<uint32_t>(h));
+      return Vec2(owen_sobol_x(i, static_cast<uint32_t>(h >> 32)), owen_sobol_y(i, static_cast<uint32_t>(mix64(h))));
     }
     const uint64_t h = mix64(key_ ^ dimension);
     return Vec2(static_cast<float>(h >> 40) * 0x1p-24f, static_cast<float>((h >> 16) & 0xffffffu) * 0x1p-24f);
+  }
+  // get2(...).x alone, for a choice that needs one number (a lobe, a light, roulette): the same
+  // value, without the second coordinate's work.
+  float get1(SamplePurpose purpose, uint64_t path, uint64_t index) const {
+    if (sequence_ != SampleSequence::kSobol) return get2(purpose, path, index).x;
+    const uint64_t dimension = mix64(path ^ mix64((static_cast<uint64_t>(purpose) << 56) ^ index));
+    const uint64_t h = mix64(point_key_ ^ dimension);
+    return owen_sobol_x(shuffled_index(reversed_sample_, static_cast<uint32_t>(h)), static_cast<uint32_t>(h >> 32));
   }
 
  private:
   uint64_t point_key_ = 0;  // (seed, frame, point)
   uint64_t key_ = 0;        // and the sample: the independent sequence's key
   uint32_t sample_ = 0;
+  uint32_t reversed_sample_ = 0;  // its bits mirrored, where the Sobol points start
   SampleSequence sequence_ = SampleSequence::kSobol;
 };
 

@@ -59,7 +59,7 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
   const LightSelection& selection = scene.light_selection;
   if (selection.active()) {
     float chosen = 1.0f;
-    const float u = ctx.samples.get2(SamplePurpose::kLight, path, light_dimension(light_count(scene))).x;
+    const float u = ctx.samples.get1(SamplePurpose::kLight, path, light_dimension(light_count(scene)));
     const size_t l = selection.sample(u, chosen);
     return one_light(l, chosen);
   }
@@ -151,10 +151,10 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       record();
     if (bsdf.has_smooth_lobes()) radiance += beta * direct_light(s, bsdf, bounce, ctx);
 
-    const Vec2 pick = ctx.samples.get2(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 0);
+    const float pick = ctx.samples.get1(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 0);
     const Vec2 u = ctx.samples.get2(SamplePurpose::kBsdf, static_cast<uint64_t>(bounce), 1);
     BsdfSample b;
-    if (!bsdf.sample(pick.x, u, b)) break;
+    if (!bsdf.sample(pick, u, b)) break;
     beta *= b.weight;
     delta = b.delta;
     bsdf_pdf = b.pdf;
@@ -164,7 +164,7 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       // Survive with a probability that follows the throughput, and make up for the paths ended.
       const float survive = max_component(beta);
       if (survive < 1.0f) {
-        if (ctx.samples.get2(SamplePurpose::kRoulette, static_cast<uint64_t>(bounce), 0).x >= survive) break;
+        if (ctx.samples.get1(SamplePurpose::kRoulette, static_cast<uint64_t>(bounce), 0) >= survive) break;
         beta /= survive;
       }
     }

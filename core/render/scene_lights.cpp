@@ -44,7 +44,7 @@ LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const Sampl
   if (l == n) {
     if (scene.emitters.empty()) return LightSample{};
     const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 2 * sample));
-    const float u_pick = samples.get2(SamplePurpose::kLight, path, light_dimension(n, 2 * sample + 1)).x;
+    const float u_pick = samples.get1(SamplePurpose::kLight, path, light_dimension(n, 2 * sample + 1));
     return sample_surfaces(scene, point, u_pick, u, detail);
   }
   if (!scene.background.is_image()) return LightSample{};
