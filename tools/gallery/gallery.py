@@ -14,6 +14,7 @@ import json
 import os
 import shlex
 import shutil
+import struct
 import subprocess
 import time
 import sys
@@ -120,6 +121,18 @@ def figure(name, image, full, alt, caption, stats, width):
             '</span></figcaption></figure>') % (
         name, full, image, html.escape(alt, quote=True), width, height, html.escape(caption),
         html.escape(stats_line(stats)), name)
+
+
+def static_figure(file, images, alt, caption):
+    """A figure of an image the docs hold (docs/images/FILE, a PNG), copied beside the renders and
+    shown at its own size."""
+    source = os.path.join(ROOT, "docs", "images", file)
+    shutil.copy(source, os.path.join(images, file))
+    with open(source, "rb") as f:
+        width, height = struct.unpack(">II", f.read(24)[16:24])
+    return ('<figure><a href="gallery/%s"><img src="gallery/%s" alt="%s" width="%d" height="%d" loading="lazy"></a>'
+            '<figcaption><strong>%s</strong></figcaption></figure>') % (
+        file, file, html.escape(alt, quote=True), width, height, html.escape(caption))
 
 
 def publish(tools, rendered, images, name, photo, display_width, stats):
@@ -270,6 +283,8 @@ def main():
                     json.dump(stats, f, indent=2)
                     f.write("\n")
                 print("rendered %s: %s" % (file, stats_line(stats)))
+            for file, alt, caption in section.get("images", []):
+                figures[file] = static_figure(file, images, alt, caption)
             body.append(section_html(section, figures, widths))
             nav.append('<a href="#%s">%s</a>' % (section["id"], html.escape(section["title"])))
     write_site(args.out, body, " ".join(nav))
