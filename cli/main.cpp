@@ -72,6 +72,11 @@ int main(int argc, char** argv) {
                    "Path tracer: the most samples per pixel (overrides the scene's render.samples_per_pixel)")
       ->check(whole_number(1, kMaxSamplesPerPixel));
   render_cmd
+      ->add_option("--time", render.time,
+                   "Path tracer: stop after about SECONDS with the best image so far, in whole passes of 8 samples a "
+                   "pixel (each frame, each eye); the summary says how many samples each pixel got")
+      ->check(real_number(0.001, 1e7));
+  render_cmd
       ->add_option("--noise-threshold", render.noise_threshold,
                    "Path tracer: a pixel stops sampling once its relative error is below T (0: off; overrides "
                    "the scene)")

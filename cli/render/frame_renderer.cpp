@@ -71,6 +71,7 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
         };
       }
       control.cancel = &interrupt.flag();
+      control.time_limit = job.time_limit;
       // EXR layers come from the same pass as the colour (no stereo with EXR: checked before).
       const RenderView view =
           stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
@@ -92,6 +93,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       totals.pixels_per_pass = static_cast<uint64_t>(film.width()) * static_cast<uint64_t>(film.height());
       for (const uint8_t d : film.depth) totals.refined += d > 0;
       for (const uint16_t n : film.samples) totals.samples += n;
+      totals.time_passes = totals.last.passes;
+      totals.time_limited = totals.time_limited || totals.last.time_limited;
       if (pass == 0 && totals.passes == 2) left = film.color;
     }
 

@@ -25,6 +25,8 @@ struct RenderTotals {
   uint64_t samples = 0;          // camera samples the pixels average, all frames and eyes
   int passes = 1;                // renders per frame: 2 in stereo
   uint64_t pixels_per_pass = 0;  // what each render computed: the image, or the window of it
+  int time_passes = 0;           // --time: the last render's whole passes
+  bool time_limited = false;     // --time stopped some render before all its samples
 };
 
 // What each frame's files hold beyond the picture: the part of the image rendered, and for EXR

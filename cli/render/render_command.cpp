@@ -151,6 +151,13 @@ bool check_settings(const RenderCommand& cmd, const RenderSettings& settings, co
                    "rtcli: warning: this render can trace up to %llu camera rays; expect it to take a long time\n",
                    static_cast<unsigned long long>(max_camera_rays_per_frame(settings)));
   }
+  if (cmd.time && !integrator_samples_pixels(settings.integrator)) {
+    std::fprintf(stderr,
+                 "rtcli: error: --time stops the path tracer between passes of samples; %s renders each pixel "
+                 "once (use --integrator path, or --preview for a quick draft)\n",
+                 settings.integrator.c_str());
+    return false;
+  }
   // Whitted's ambient stands in for indirect light, which the path tracer computes: a scene made for
   // Whitted keeps its direct light (one light unit), and loses the flat term.
   if (settings.integrator == "path" && max_component(graph.ambient) > 0.0f)

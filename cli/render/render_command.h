@@ -34,6 +34,7 @@ struct RenderCommand {
   std::optional<std::string> tone_map;           // "clamp" or "filmic"
   std::optional<int> spp;                        // the path tracer's samples per pixel
   std::optional<float> noise_threshold;          // its adaptive stop (0: off)
+  std::optional<double> time;                    // --time: seconds a frame may take (path tracer's passes)
   std::optional<float> clamp;                    // its largest sample value (0: off)
   bool samples_debug = false;                    // also write <output>.samples.png
   bool preview = false;                          // the draft preset (preview_settings)

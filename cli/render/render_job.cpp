@@ -145,6 +145,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   job.frames_given = cmd.frames.has_value();
   job.stats = cmd.stats;
   job.skip_existing = cmd.skip_existing;
+  job.time_limit = cmd.time.value_or(0.0);
   job.exr_float = cmd.exr_float;
   if (cmd.denoise || cmd.denoiser) job.denoiser = cmd.denoiser.value_or(std::string(denoisers().entries()[0].name));
   job.aa_debug = cmd.aa_debug;

@@ -40,6 +40,11 @@ void print_summary(const RenderJob& job, const RenderSettings& settings, const F
                  settings.path.noise_threshold > 0.0f ? ", adaptive" : "",
                  t.seconds > 0 ? samples / t.seconds / 1e6 : 0.0,
                  samples > 0 ? static_cast<double>(t.rays.total()) / samples : 0.0);
+    if (job.time_limit > 0.0)
+      std::fprintf(stderr, "  --time %g s: %s after %d pass%s of %d samples: %.0f samples per pixel%s\n",
+                   job.time_limit, t.time_limited ? "stopped" : "finished", t.time_passes,
+                   t.time_passes == 1 ? "" : "es", kPassSamples, samples / pixels,
+                   t.time_limited ? "" : " (all it asks for, within the time)");
     if (t.rays.invalid_samples > 0)
       std::fprintf(stderr, "rtcli: warning: %llu samples were not a finite, non-negative colour and were dropped\n",
                    static_cast<unsigned long long>(t.rays.invalid_samples));

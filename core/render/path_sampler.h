@@ -23,8 +23,30 @@ class PathSampler final : public PixelSampler {
   explicit PathSampler(const PathSettings& settings) : settings_(settings) {}
   bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override;
 
+  // Progressive rendering: each pass adds samples up to `samples_end` to every pixel of `window`
+  // that still takes them, from the sums the passes before it left, in the same order as one
+  // render of all the samples: the pixels come out the same bits.
+  bool renders_passes() const override { return true; }
+  bool begin_pass(int samples_end, const PixelWindow& window) override;
+
+  // What a pixel has gathered so far.
+  struct PixelState {
+    Vec3 sum{0.0f};
+    Aovs layers;  // summed
+    double luminance = 0.0, luminance_squares = 0.0;
+    int n = 0;
+    bool stopped = false;  // by the noise threshold
+  };
+
  private:
+  // Adds samples to the pixel up to `end` (fewer if the noise threshold stops it); its film value.
+  FilmPixel sample_pixel(int x, int y, PixelState& state, int end, PixelContext& ctx) const;
+
   PathSettings settings_;
+  // Passes: the pixels' states, row-major over the window, and where this pass stops.
+  std::vector<PixelState> states_;
+  PixelWindow window_;
+  int pass_end_ = 0;
 };
 
 // The variance of the mean of n samples whose luminances sum to `sum` and whose squares sum to

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/pixel_window.h"
 #include "core/render/film.h"
 #include "core/render/integrator.h"
 #include "core/render/tile_grid.h"
@@ -52,6 +53,11 @@ class PixelSampler {
   // Renders `tile` into `out` (already reset to the tile). Called from several threads at once,
   // each on its own tile. Returns false when it stopped early because the render was cancelled.
   virtual bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) = 0;
+  // Progressive rendering (RenderControl::time_limit): whether the sampler can add samples in
+  // passes, and the next pass: render_tile then adds samples up to `samples_end` to the pixels of
+  // `window`. False when no pixel would take another sample.
+  virtual bool renders_passes() const { return false; }
+  virtual bool begin_pass(int /*samples_end*/, const PixelWindow& /*window*/) { return false; }
 };
 
 // The sampler registered under settings.antialias.mode, for an image cut into `grid` (the path

@@ -73,15 +73,38 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
       done[static_cast<size_t>(tile.index)].store(true, std::memory_order_release);
       done[static_cast<size_t>(tile.index)].notify_all();
     }
-    counters[index] = mine;
+    counters[index] += mine;
   };
   // The calling thread reports progress while the workers render.
-  run_workers(threads, worker, [&] {
-    if (control.progress)
-      control.progress(RenderProgress{pixels_done.load(), window.pixels(), rays_done.load(), elapsed()});
-  });
-
+  const auto run_pass = [&] {
+    next = 0;
+    pixels_done = 0;
+    for (int t = 0; t < grid.count(); ++t) done[static_cast<size_t>(t)].store(false);
+    run_workers(threads, worker, [&] {
+      if (control.progress)
+        control.progress(RenderProgress{pixels_done.load(), window.pixels(), rays_done.load(), elapsed()});
+    });
+  };
   RenderStats stats;
+  if (control.time_limit > 0.0 && sampler->renders_passes()) {
+    // Passes of kPassSamples samples a pixel, each finished whole and stored: the film always
+    // holds the image so far. Another pass starts only if one as long as the last still ends in
+    // time, so the render stops near the limit with whole passes.
+    int end = 0;
+    while (!stopped) {
+      end += kPassSamples;
+      if (!sampler->begin_pass(end, window)) break;
+      const double before = elapsed();
+      run_pass();
+      if (!stopped) ++stats.passes;
+      const double took = elapsed() - before;
+      if (elapsed() + took > control.time_limit) break;
+    }
+    stats.time_limited = !stopped && sampler->begin_pass(end + kPassSamples, window);
+  } else {
+    run_pass();
+  }
+
   stats.seconds = elapsed();
   stats.threads = threads;
   stats.cancelled = stopped;

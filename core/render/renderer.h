@@ -29,8 +29,13 @@ struct RenderStats {
   double seconds = 0.0;
   RayCounters rays;
   unsigned threads = 1;
-  bool cancelled = false;  // stopped by RenderControl::cancel: the image is incomplete
+  bool cancelled = false;     // stopped by RenderControl::cancel: the image is incomplete
+  int passes = 0;             // progressive (RenderControl::time_limit): the whole passes rendered
+  bool time_limited = false;  // the time limit stopped it before every pixel had all its samples
 };
+
+// Samples a pixel takes per pass of a progressive render (a camera-ray packet's worth).
+inline constexpr int kPassSamples = 8;
 
 using ProgressCallback = std::function<void(const RenderProgress&)>;
 
@@ -39,6 +44,10 @@ struct RenderControl {
   ProgressCallback progress;
   // When it becomes true, every worker stops before its next pixel (Ctrl-C in the CLI).
   const std::atomic<bool>* cancel = nullptr;
+  // Seconds the render may take (0: no limit; render --time). A sampler that adds samples in
+  // passes (the path tracer's) then renders whole passes until the next would end past it; the
+  // film holds the best image so far. Other samplers ignore it.
+  double time_limit = 0.0;
 };
 
 // Whose eyes look: a camera other than the scene's (one eye of a stereo pair), and the eye's key

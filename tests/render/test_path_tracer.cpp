@@ -1,6 +1,7 @@
 // The path tracer as a whole (core/render/path_integrator.h): the white furnace, multiple
 // importance sampling, convergence at 1/sqrt(spp), determinism across threads, and no sample that
 // is not a finite, non-negative colour in any shipped scene. Fixed seeds: every figure is repeatable.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -316,4 +317,36 @@ TEST_CASE("MIS: emissive shapes and CSG solids are light-sampled; every strategy
     INFO("strategy " << k << " at 2048 spp: mean " << m << " against MIS " << ref_mean);
     CHECK(m == Approx(ref_mean).epsilon(0.03));
   }
+}
+
+TEST_CASE("progressive passes: with time enough, the same film as one render; out of time, whole passes",
+          "[path][progressive]") {
+  const LoadedScene s = rt::test::load_scene_text("progressive.json", kTwoLights);
+  RenderSettings settings = s.settings;
+  settings.path.samples_per_pixel = 40;  // not a multiple of the pass: the last pass is short
+  settings.path.noise_threshold = 0.05f;
+  RenderView view;
+  view.aovs = true;
+  Film once, passes;
+  const RenderStats a = render(s.scene, settings, once, {}, 0, view);
+  RenderControl control;
+  control.time_limit = 1e6;
+  const RenderStats b = render(s.scene, settings, passes, control, 0, view);
+  CHECK(a.passes == 0);
+  CHECK(b.passes == 5);
+  CHECK_FALSE(b.time_limited);
+  CHECK(once.color.pixels == passes.color.pixels);  // the same bits: the sums run in the same order
+  CHECK(once.samples == passes.samples);
+  // The noise threshold stopped some pixels early (the same ones, at the same sample, both ways).
+  CHECK(std::count_if(once.samples.begin(), once.samples.end(), [](uint16_t n) { return n < 40; }) > 0);
+  CHECK(once.albedo.pixels == passes.albedo.pixels);
+  CHECK(once.variance == passes.variance);
+  CHECK(a.rays.total() == b.rays.total());
+  // A limit already past after the first pass: one whole pass, 8 samples in every pixel.
+  control.time_limit = 1e-9;
+  Film first;
+  const RenderStats c = render(s.scene, settings, first, control, 0, view);
+  CHECK(c.passes == 1);
+  CHECK(c.time_limited);
+  for (const uint16_t n : first.samples) REQUIRE(n == kPassSamples);
 }
