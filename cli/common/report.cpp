@@ -15,4 +15,9 @@ void print_diagnostics(std::FILE* out, const Diagnostics& diags) {
   if (errors > 1) std::fprintf(out, "%zu errors\n", errors);
 }
 
+bool fail(const std::string& message) {
+  std::fprintf(stderr, "rtcli: error: %s\n", message.c_str());
+  return false;
+}
+
 }  // namespace rt

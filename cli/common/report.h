@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdio>
+#include <string>
 
 #include "io/base/diagnostics.h"
 
@@ -10,5 +11,8 @@ namespace rt {
 // Every diagnostic (its line, then the source excerpt; for a problem inside a referenced file,
 // "  in FILE:LINE:COLUMN: POINTER" and that file's excerpt), then "N errors" when there are several.
 void print_diagnostics(std::FILE* out, const Diagnostics& diags);
+
+// Prints "rtcli: error: MESSAGE" and returns false: how a command's check refuses what it was asked.
+bool fail(const std::string& message);
 
 }  // namespace rt

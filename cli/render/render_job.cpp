@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/common/report.h"
 #include "cli/common/suggestions.h"
 #include "cli/frames/output_checks.h"
 #include "cli/render/aov_layers.h"
@@ -14,11 +15,6 @@
 
 namespace rt {
 namespace {
-
-bool fail(const std::string& message) {
-  std::fprintf(stderr, "rtcli: error: %s\n", message.c_str());
-  return false;
-}
 
 std::string default_output(const std::string& scene, bool animation) {
   return std::filesystem::path(scene).stem().string() + (animation ? ".gif" : ".png");

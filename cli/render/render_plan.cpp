@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "cli/common/report.h"
 #include "cli/frames/render_metadata.h"
 #include "cli/frames/render_share.h"
 #include "cli/render/aov_layers.h"
@@ -11,11 +12,6 @@
 
 namespace rt {
 namespace {
-
-bool fail(const std::string& message) {
-  std::fprintf(stderr, "rtcli: error: %s\n", message.c_str());
-  return false;
-}
 
 // A stereo camera renders two views: one file of one view cannot hold them.
 bool check_stereo(const RenderJob& job, const StereoSettings& stereo) {
