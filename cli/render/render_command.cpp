@@ -279,7 +279,7 @@ int run_render(const RenderCommand& cmd) {
     const SignalBlock block;
     if (!write_render_stats(job->stats,
                             RenderStatsInput{job->scene, written, settings, *stereo, plan->frames, totals, load_seconds,
-                                             loaded->scene.bvh.isa()},
+                                             loaded->scene.bvh.isa(), job->time_limit},
                             error)) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());
       return kExitFailure;

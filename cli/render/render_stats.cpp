@@ -51,6 +51,8 @@ std::string render_stats_json(const RenderStatsInput& in) {
         {"msamples_per_second", t.seconds > 0 ? samples / t.seconds / 1e6 : 0.0},
         {"invalid_samples", t.rays.invalid_samples},
     };
+    if (in.time_limit > 0.0)
+      out["path"]["time"] = {{"limit", in.time_limit}, {"passes", t.time_passes}, {"stopped", t.time_limited}};
   }
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

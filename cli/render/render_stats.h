@@ -21,7 +21,8 @@ struct RenderStatsInput {
   const FrameList& frames;
   const RenderTotals& totals;
   double load_seconds = 0.0;
-  Isa isa = Isa::kSse;  // whose BVH kernels traced the rays
+  Isa isa = Isa::kSse;      // whose BVH kernels traced the rays
+  double time_limit = 0.0;  // --time (0: none)
 };
 
 // The JSON text (docs/command-line.md, "--stats" lists the keys).

@@ -364,6 +364,13 @@ TEST_CASE("cli: --time stops the path tracer after whole passes; with time enoug
   r = rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -o '" + dir + "/quick.png'");
   REQUIRE(r.code == 0);
   CHECK_THAT(r.output, Catch::Contains("stopped after 1 pass of 8 samples: 8 samples per pixel"));
+  r = rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -q --stats '" + dir +
+            "/s.json' -o '" + dir + "/quick2.png'");
+  REQUIRE(r.code == 0);
+  const auto stats = rt::Json::parse(rt::test::read_file(dir + "/s.json"));
+  CHECK(stats["path"]["time"]["passes"] == 1);
+  CHECK(stats["path"]["time"]["stopped"] == true);
+  CHECK(stats["path"]["mean_samples_per_pixel"] == 8.0);
   // Whitted renders each pixel once: refused, nothing written.
   r = rtcli("render scenes/soft_shadows.json --time 2 -o '" + dir + "/w.png'");
   CHECK(r.code == 2);
