@@ -8,49 +8,40 @@
 namespace rt {
 namespace {
 
-constexpr float kFarAway = 1e10f;  // Aovs::kFarAway: nothing met
 constexpr float kKernel[5] = {1.0f / 16.0f, 1.0f / 4.0f, 3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
 
 float luminance(Vec3 c) { return (c.x + c.y + c.z) / 3.0f; }  // as the path sampler's variance
 
-// What the passes read of each pixel besides the colour they smooth.
+// What the passes read of each pixel beyond the input's layers: whether the camera met a surface
+// there (a normal was recorded), and how fast depth changes per pixel (the larger of x and y).
 struct Guide {
-  int width = 0, height = 0;
-  std::vector<Vec3> normal, albedo;
-  std::vector<float> depth, slope;  // slope: how fast depth changes per pixel, the larger of x and y
   std::vector<bool> hit;
+  std::vector<float> slope;
 };
 
 Guide make_guide(const DenoiseInput& in) {
-  Guide g;
-  g.width = in.color.width;
-  g.height = in.color.height;
+  const int width = in.color.width, height = in.color.height;
   const size_t n = in.color.pixels.size();
-  g.normal = in.normal.pixels;
-  g.albedo = in.albedo.pixels;
-  g.depth = in.depth;
+  Guide g;
   g.hit.resize(n);
   g.slope.assign(n, 0.0f);
-  for (size_t i = 0; i < n; ++i)
-    g.hit[i] = in.depth[i] < kFarAway && glm::dot(in.normal.pixels[i], in.normal.pixels[i]) > 0.0f;
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      const size_t i = static_cast<size_t>(y) * static_cast<size_t>(g.width) + static_cast<size_t>(x);
+  for (size_t i = 0; i < n; ++i) g.hit[i] = glm::dot(in.normal.pixels[i], in.normal.pixels[i]) > 0.0f;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t i = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
       if (!g.hit[i]) continue;
-      float slope = 0.0f;
       // The smaller one-sided difference on each axis: a silhouette beside the pixel is no slope.
       const auto along = [&](int dx, int dy) {
-        float best = kFarAway;
+        float best = kInfinity;
         for (const int s : {-1, 1}) {
           const int qx = x + s * dx, qy = y + s * dy;
-          if (qx < 0 || qy < 0 || qx >= g.width || qy >= g.height) continue;
-          const size_t j = static_cast<size_t>(qy) * static_cast<size_t>(g.width) + static_cast<size_t>(qx);
-          if (g.hit[j]) best = std::min(best, std::fabs(g.depth[j] - g.depth[i]));
+          if (qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
+          const size_t j = static_cast<size_t>(qy) * static_cast<size_t>(width) + static_cast<size_t>(qx);
+          if (g.hit[j]) best = std::min(best, std::fabs(in.depth[j] - in.depth[i]));
         }
-        return best < kFarAway ? best : 0.0f;
+        return best < kInfinity ? best : 0.0f;
       };
-      slope = std::max(along(1, 0), along(0, 1));
-      g.slope[i] = slope;
+      g.slope[i] = std::max(along(1, 0), along(0, 1));
     }
   return g;
 }
@@ -71,7 +62,7 @@ Image FeatureFilter::denoise(const DenoiseInput& in, unsigned threads) const {
     light[i] = glm::max(in.color.pixels[i] - in.emission.pixels[i], Vec3(0.0f)) / divisor[i];
     const float scale = 1.0f / luminance(divisor[i]);
     const float v = in.variance.empty() ? 0.0f : in.variance[i] * scale * scale;
-    variance[i] = std::isfinite(v) ? v : 0.0f;
+    variance[i] = std::isfinite(v) && v > 0.0f ? v : 0.0f;  // a hostile layer: no noise, not NaN
     if (!is_finite(light[i])) light[i] = Vec3(0.0f);
   }
 
@@ -108,12 +99,12 @@ Image FeatureFilter::denoise(const DenoiseInput& in, unsigned threads) const {
             if (j != i) {
               w *= std::exp(-std::fabs(luminance(light[j]) - lum) / sigma);
               if (g.hit[i]) {
-                w *= std::pow(std::max(0.0f, glm::dot(g.normal[i], g.normal[j])), kNormalPower);
+                w *= std::pow(std::max(0.0f, glm::dot(in.normal.pixels[i], in.normal.pixels[j])), kNormalPower);
                 const float reach = kDepthSigma * g.slope[i] * static_cast<float>(step) *
                                         std::sqrt(static_cast<float>(dx * dx + dy * dy)) +
-                                    1e-3f * g.depth[i];
-                w *= std::exp(-std::fabs(g.depth[j] - g.depth[i]) / reach);
-                const Vec3 da = g.albedo[j] - g.albedo[i];
+                                    1e-3f * in.depth[i];
+                w *= std::exp(-std::fabs(in.depth[j] - in.depth[i]) / reach);
+                const Vec3 da = in.albedo.pixels[j] - in.albedo.pixels[i];
                 w *= std::exp(-glm::dot(da, da) / (2.0f * kAlbedoSigma * kAlbedoSigma));
               }
             }

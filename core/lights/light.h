@@ -99,10 +99,12 @@ inline LightSample sample_li(const Light& light, Vec3 point, Vec2 u) {
 
 // The density of sample_li(light, point, u) for the direction `direction` (unit) that meets the
 // light's face `distance` away from `point`.
-inline float pdf_li(const RectLight& light, Vec3 direction, float distance) {
-  const RectFrame frame(light);
+inline float pdf_li(const RectFrame& frame, Vec3 direction, float distance) {
   const float cos_light = std::fabs(glm::dot(direction, frame.normal_area)) / frame.area;
   return distance * distance / (cos_light * frame.area);
+}
+inline float pdf_li(const RectLight& light, Vec3 direction, float distance) {
+  return pdf_li(RectFrame(light), direction, distance);
 }
 
 inline bool is_delta(const Light& light) { return !std::holds_alternative<RectLight>(light); }

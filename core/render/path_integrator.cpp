@@ -109,11 +109,11 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       if (delta) {
         radiance += beta * rect.color;
       } else {
-        const float area = glm::length(glm::cross(rect.edge1, rect.edge2));
+        const RectFrame frame(rect);
         const float chosen =
             scene.light_selection.active() ? scene.light_selection.probability(light_index(scene, rect)) : 1.0f;
-        const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(rect, dir, distance) * chosen);
-        radiance += beta * rect.lighting_radiance(distance, area) * weight;
+        const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(frame, dir, distance) * chosen);
+        radiance += beta * rect.lighting_radiance(distance, frame.area) * weight;
       }
       break;
     }
