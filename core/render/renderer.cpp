@@ -86,7 +86,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     });
   };
   RenderStats stats;
-  if (control.time_limit > 0.0 && sampler->renders_passes()) {
+  if ((control.time_limit > 0.0 || control.pass_done) && sampler->renders_passes()) {
     // Passes of kPassSamples samples a pixel, each finished whole and stored: the film always
     // holds the image so far. Another pass starts only if one as long as the last still ends in
     // time, so the render stops near the limit with whole passes.
@@ -96,9 +96,11 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
       if (!sampler->begin_pass(end, window)) break;
       const double before = elapsed();
       run_pass();
-      if (!stopped) ++stats.passes;
+      if (stopped) break;
+      ++stats.passes;
+      if (control.pass_done) control.pass_done(film, end);
       const double took = elapsed() - before;
-      if (elapsed() + took > control.time_limit) break;
+      if (control.time_limit > 0.0 && elapsed() + took > control.time_limit) break;
     }
     stats.time_limited = !stopped && sampler->begin_pass(end + kPassSamples, window);
   } else {

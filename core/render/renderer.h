@@ -48,6 +48,11 @@ struct RenderControl {
   // passes (the path tracer's) then renders whole passes until the next would end past it; the
   // film holds the best image so far. Other samplers ignore it.
   double time_limit = 0.0;
+  // Called on the calling thread after each whole pass of such a sampler, with the film so far and
+  // the samples a pixel has had by then (a pixel the noise threshold stopped has fewer): a live
+  // preview's refinement (rtcli watch). Its presence makes a render run in passes, as a time limit
+  // does; without one, until every pixel has all its samples. Other samplers never call it.
+  std::function<void(const Film&, int samples)> pass_done;
 };
 
 // Whose eyes look: a camera other than the scene's (one eye of a stereo pair), and the eye's key

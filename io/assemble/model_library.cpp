@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "io/assemble/load_cache.h"
+
 namespace rt {
 namespace {
 
@@ -34,8 +36,34 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   Diagnostics found;
   Reporter in_file(found, ref.resolved_path);
   ImportError why;
-  auto model = import_gltf(ref.resolved_path, GltfSelection{ref.mesh_name, ref.animation}, options_.limits, usage_,
-                           in_file, why);
+  // A cached import (rtcli watch) stands for a fresh one: the same model, BVHs and warnings.
+  const std::string cache_key = key + '\n' + (options_.build_bvh ? isa_name(bvh_options_.isa) : "no BVH") + '\n' +
+                                (options_.limits.outside_files ? "outside" : "inside");
+  const LoadCache::Model* kept = options_.cache ? options_.cache->model(cache_key, usage_, options_.limits) : nullptr;
+  std::optional<ImportedModel> model;
+  std::optional<LoadCache::Model> keep;  // what the cache will hold of a fresh import
+  if (kept) {
+    model = kept->model;
+    usage_.texels += kept->used.texels;
+    usage_.vertices += kept->used.vertices;
+    usage_.triangles += kept->used.triangles;
+    usage_.animation_keys += kept->used.animation_keys;
+    for (const Diagnostic& d : kept->warnings) found.add(d);
+  } else {
+    const LimitUsage before = usage_;
+    const std::optional<FileStamp> stamp = stamp_file(ref.resolved_path);  // before reading: a later change shows
+    model = import_gltf(ref.resolved_path, GltfSelection{ref.mesh_name, ref.animation}, options_.limits, usage_,
+                        in_file, why);
+    if (model && options_.cache && in_file.errors() == 0) {
+      keep.emplace();
+      keep->files = FileStamps::of(model->files);
+      if (!keep->files.stamps.empty()) keep->files.stamps[0] = stamp;
+      keep->model = *model;
+      keep->used = LimitUsage{usage_.texels - before.texels, usage_.vertices - before.vertices,
+                              usage_.triangles - before.triangles, usage_.animation_keys - before.animation_keys};
+      keep->warnings = found.all();
+    }
+  }
   if (model) files_.insert(files_.end(), model->files.begin(), model->files.end());
   const std::string quoted = "\"" + ref.file + "\"";
   const std::string unreadable = "expected a readable glTF 2.0 file, found " + quoted +
@@ -65,9 +93,13 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
   const auto first_material = static_cast<uint32_t>(assets_.materials.size());
   add_materials(*model);
   loaded.meshes.resize(model->meshes.size());
+  size_t primitive = 0;
   for (size_t m = 0; m < model->meshes.size(); ++m) {
     for (ImportedPrimitive& p : model->meshes[m]) {
-      if (!add_geometry(std::move(p.mesh), ref)) return nullptr;
+      const Bvh* built = kept && primitive < kept->bvhs.size() ? &kept->bvhs[primitive] : nullptr;
+      ++primitive;
+      if (!add_geometry(std::move(p.mesh), ref, built)) return nullptr;
+      if (keep && options_.build_bvh) keep->bvhs.push_back(assets_.meshes.back().bvh);
       const uint32_t material =
           p.material >= 0 ? first_material + static_cast<uint32_t>(p.material) : default_material();
       loaded.meshes[m].push_back(
@@ -75,6 +107,7 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
     }
   }
   model->meshes.clear();
+  if (keep) options_.cache->keep(cache_key, std::move(*keep));
   loaded.model = std::move(*model);
   slot = std::move(loaded);
   return &*slot;
@@ -82,7 +115,7 @@ const LoadedModel* ModelLibrary::load(const MeshReference& ref) {
 
 // The mesh in its object space with its own BVH (counted against the triangle limit once, at
 // import, however often it is placed: instances share it).
-bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
+bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref, const Bvh* built) {
   for (const Vec3& v : mesh.positions) {
     if (!(max_abs_component(v) <= kMaxVertexCoordinate)) {
       report_.error(ref.pointer, "expected \"" + ref.file +
@@ -95,7 +128,8 @@ bool ModelLibrary::add_geometry(TriangleMesh mesh, const MeshReference& ref) {
   MeshGeometry g;
   g.mesh = std::move(mesh);
   for (const uint32_t i : g.mesh.indices) g.bounds.extend(g.mesh.positions[i]);
-  if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
+  if (built) g.bvh = *built;
+  else if (options_.build_bvh) g.bvh = Bvh(make_triangle_set(g.mesh), bvh_options_);
   assets_.meshes.push_back(std::move(g));
   return true;
 }

@@ -40,7 +40,8 @@ class ModelLibrary {
   const LoadedModel* load(const MeshReference& ref);
 
  private:
-  bool add_geometry(TriangleMesh mesh, const MeshReference& ref);
+  // `built`: the mesh's BVH from an earlier load (io/assemble/load_cache.h), else built here.
+  bool add_geometry(TriangleMesh mesh, const MeshReference& ref, const Bvh* built = nullptr);
   void add_materials(ImportedModel& model);
   uint32_t default_material();
 

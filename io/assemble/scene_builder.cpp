@@ -5,6 +5,7 @@
 
 #include "core/thread_count.h"
 #include "io/assemble/csg_operands.h"
+#include "io/assemble/load_cache.h"
 #include "io/assemble/model_library.h"
 #include "io/assemble/placement_warnings.h"
 #include "io/assemble/scene_warnings.h"
@@ -111,7 +112,19 @@ class Builder {
     if (desc_.environment && !options_.background) {  // --background replaces an image too
       const EnvironmentReference& e = *desc_.environment;
       std::string why;
-      auto image = load_environment_image(e.resolved_path, options_.limits, usage_, why);
+      std::shared_ptr<const EnvironmentImage> image;
+      const LoadCache::Environment* kept =
+          options_.cache ? options_.cache->environment(e.resolved_path, usage_, options_.limits) : nullptr;
+      if (kept) {
+        image = kept->image;
+        usage_.texels += kept->texels;
+      } else {
+        const FileStamps stamps = FileStamps::of({e.resolved_path});  // before reading: a later change shows
+        const uint64_t before = usage_.texels;
+        image = load_environment_image(e.resolved_path, options_.limits, usage_, why);
+        if (image && options_.cache)
+          options_.cache->keep(e.resolved_path, LoadCache::Environment{stamps, image, usage_.texels - before});
+      }
       if (!image) error(e.pointer, why);
       else {
         files_.push_back(e.resolved_path);
@@ -373,7 +386,7 @@ class Builder {
   Reporter report_ = scene_reporter(desc_, source_, diags_);
   SceneAssets assets_;
   LimitUsage usage_;
-  TextureLibrary textures_{assets_.textures, options_.limits, usage_};
+  TextureLibrary textures_{assets_.textures, options_.limits, usage_, options_.cache};
   std::vector<SceneNode> nodes_;
   std::vector<std::string> pointers_;  // per node: where the scene file describes it
   std::vector<bool> from_file_;        // per node: grafted from a glTF file

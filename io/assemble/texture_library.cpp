@@ -1,12 +1,26 @@
 #include "io/assemble/texture_library.h"
 
+#include "io/assemble/load_cache.h"
+
 namespace rt {
 
 uint32_t TextureLibrary::load(const TextureFileReference& ref, Reporter& report, std::vector<std::string>& files) {
   const std::string key = ref.resolved_path + "\n" + std::to_string(static_cast<int>(ref.encoding));
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
+  if (cache_) {
+    if (const LoadCache::Image* kept = cache_->image(key, usage_, limits_)) {
+      usage_.texels += kept->texels;
+      files.push_back(ref.resolved_path);
+      const uint32_t index = add(kept->texture);
+      indices_.emplace(key, index);
+      return index;
+    }
+  }
   TextureError error;
+  const FileStamps stamps = FileStamps::of({ref.resolved_path});  // before reading: a later change shows
+  const uint64_t texels_before = usage_.texels;
   auto texture = load_texture(ref.resolved_path, ref.encoding, limits_, usage_, error);
+  if (texture && cache_) cache_->keep(key, LoadCache::Image{stamps, *texture, usage_.texels - texels_before});
   uint32_t index = kNoTexture;
   if (texture) {
     files.push_back(ref.resolved_path);

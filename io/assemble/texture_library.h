@@ -17,8 +17,9 @@ namespace rt {
 
 class TextureLibrary {
  public:
-  TextureLibrary(std::vector<Texture>& textures, const LoadLimits& limits, LimitUsage& usage)
-      : textures_(textures), limits_(limits), usage_(usage) {}
+  // `cache` (may be null) keeps decoded files between loads (io/assemble/load_cache.h).
+  TextureLibrary(std::vector<Texture>& textures, const LoadLimits& limits, LimitUsage& usage, LoadCache* cache)
+      : textures_(textures), limits_(limits), usage_(usage), cache_(cache) {}
 
   // The index of the file's texture, loading it the first time; kNoTexture when it cannot be
   // used, reported at ref.pointer the first time (past the texel budget: report.over_limit).
@@ -31,6 +32,7 @@ class TextureLibrary {
   std::vector<Texture>& textures_;
   const LoadLimits& limits_;
   LimitUsage& usage_;
+  LoadCache* cache_;
   std::map<std::string, uint32_t> indices_;  // resolved path + encoding -> index (kNoTexture: failed)
 };
 

@@ -16,6 +16,8 @@
 
 namespace rt {
 
+class LoadCache;  // io/assemble/load_cache.h
+
 struct LoadLimits {
   uint64_t scene_file_bytes = uint64_t{64} << 20;  // a JSON scene file
   uint64_t gltf_json_bytes = uint64_t{64} << 20;   // a .gltf file, or the JSON chunk of a .glb
@@ -64,6 +66,9 @@ struct LoadOptions {
   std::optional<std::string> integrator;
   // The scene's background and ambient colours replaced (--background, --ambient), linear RGB.
   std::optional<std::array<float, 3>> background, ambient;
+  // What earlier loads of the scene read and still hold, while their files are unchanged
+  // (rtcli watch); null: read everything.
+  LoadCache* cache = nullptr;
 };
 
 // A model on its own: its frame rate without --fps, and its world (Blender's default world

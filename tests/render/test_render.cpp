@@ -50,10 +50,12 @@ TEST_CASE("render statistics count camera and shadow rays", "[render]") {
   RenderSettings settings = s.settings;
   Image image;
   int progress_calls = 0;
-  const RenderStats stats = render(s.scene, settings, image, RenderControl{[&](const RenderProgress& p) {
-                                     ++progress_calls;
-                                     CHECK(p.pixels_done <= p.pixels_total);
-                                   }});
+  RenderControl control;
+  control.progress = [&](const RenderProgress& p) {
+    ++progress_calls;
+    CHECK(p.pixels_done <= p.pixels_total);
+  };
+  const RenderStats stats = render(s.scene, settings, image, control);
   CHECK(stats.rays[RayKind::kCamera] == 96u * 64u * 4u);  // 2 x 2 samples per pixel
   CHECK(stats.rays[RayKind::kShadow] > 0);
   CHECK(stats.rays[RayKind::kShadow] <= stats.rays[RayKind::kCamera]);  // one light
