@@ -14,6 +14,7 @@
 #include "cli/frames/encode_command.h"
 #include "cli/frames/merge_command.h"
 #include "cli/render/render_command.h"
+#include "cli/render/render_options.h"
 #include "core/accel/isa.h"
 #include "core/denoise/denoiser.h"
 #include "core/render/integrator.h"
@@ -31,139 +32,13 @@ int main(int argc, char** argv) {
   RenderCommand render;
   CLI::App* render_cmd = app.add_subcommand(
       "render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image or an animation");
-  render_cmd->add_option("scene", render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
-  render_cmd->add_option("-o,--output", render.output,
-                         "Output .png, .exr, .jpg, NAME_####.png, NAME_####.exr or .gif (default: <scene name>.png, or "
-                         ".gif for --frames A-B)");
-  render_cmd->add_option("--threads", render.threads, "Worker threads (default: one per CPU this process may use)")
-      ->check(whole_number(1, 1024));
-  render_cmd->add_option("--width", render.width, "Image width in pixels (overrides the scene)")
-      ->check(whole_number(1, kMaxImageSide));
-  render_cmd->add_option("--height", render.height, "Image height in pixels (overrides the scene)")
-      ->check(whole_number(1, kMaxImageSide));
-  render_cmd->add_option("--seed", render.seed, "Seed of every random stream (overrides the scene)")
-      ->check(whole_number(0, UINT64_MAX));
-  render_cmd->add_option("--integrator", render.integrator, integrators().help() + " (overrides the scene)");
-  render_cmd->add_option("--glossy-samples", render.glossy_samples, "Rays per glossy reflection (overrides the scene)")
-      ->check(whole_number(1, kMaxGlossySamples));
-  render_cmd->add_flag("--no-glossy", render.no_glossy, "Render glossy surfaces as perfect mirrors");
-  render_cmd->add_flag("--no-textures", render.no_textures, "Ignore colour and specular textures (kd and ks alone)");
-  render_cmd->add_flag("--no-bumps", render.no_bumps, "Ignore bump and normal maps");
-  render_cmd->add_option("--texture-filter", render.texture_filter,
-                         "Every texture filtered so: " + kTextureFilters.help() + " (overrides the scene)");
-  render_cmd
-      ->add_option("--shadow-samples", render.shadow_samples,
-                   "Shadow rays per area light and shading point (overrides the scene)")
-      ->check(whole_number(1, kMaxShadowSamples));
-  render_cmd->add_flag("--preview", render.preview,
-                       "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
-                       "given beside it still apply");
-  render_cmd->add_option("--sampler", render.sampler,
-                         "Where samples fall: " + kSampleSequences.help() + " (overrides the scene)");
-  render_cmd->add_option("--secondary-shadows", render.secondary_shadows,
-                         kSecondaryShadows.help() + " (overrides the scene)");
-  render_cmd
-      ->add_option("--exposure", render.exposure,
-                   "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
-                   "scene)")
-      ->check(real_number(-kMaxExposure, kMaxExposure));
-  render_cmd
-      ->add_option("--spp", render.spp,
-                   "Path tracer: the most samples per pixel (overrides the scene's render.samples_per_pixel)")
-      ->check(whole_number(1, kMaxSamplesPerPixel));
-  render_cmd
-      ->add_option("--time", render.time,
-                   "Path tracer: stop after about SECONDS with the best image so far, in whole passes of 8 samples a "
-                   "pixel (each frame, each eye); the summary says how many samples each pixel got")
-      ->check(real_number(0.001, 1e7));
-  render_cmd
-      ->add_option("--noise-threshold", render.noise_threshold,
-                   "Path tracer: a pixel stops sampling once its relative error is below T (0: off; overrides "
-                   "the scene)")
-      ->check(real_number(0.0, 1.0));
-  render_cmd
-      ->add_option("--clamp", render.clamp,
-                   "Path tracer: the largest value one sample may add, against fireflies (0: off; biased; "
-                   "overrides the scene)")
-      ->check(real_number(0.0, 1e30));
-  render_cmd->add_flag("--samples-debug", render.samples_debug,
-                       "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
-  render_cmd->add_option("--tone-map", render.tone_map, kToneMaps.help() + " (overrides the scene)");
-  render_cmd->add_option("--aa", render.aa_mode,
-                         "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
-  render_cmd->add_option("--aa-samples", render.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
-      ->check(whole_number(1, kMaxSamplesPerAxis));
-  render_cmd
-      ->add_option("--aa-threshold", render.aa_threshold,
-                   "Adaptive anti-aliasing: split a cell whose samples differ by more than T (0-1, displayed values)")
-      ->check(real_number(0.0, 1.0));
-  render_cmd->add_option("--aa-depth", render.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
-      ->check(whole_number(0, kMaxAdaptiveDepth));
-  render_cmd->add_option("--aa-positions", render.aa_positions,
-                         "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
-  render_cmd->add_flag(
-      "--aa-debug", render.aa_debug,
-      "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
-  CLI::Option* frames = render_cmd->add_option(
-      "--frames", render.frames,
-      "Render frames A-B, every S-th frame A-BxS, or a list 1,5,9-12 of the scene's animation: -o NAME.gif (looping "
-      "animated GIF) or -o NAME_####.png (numbered)");
-  render_cmd->add_option("--frame", render.frames, "Render frame N of the scene's animation")->excludes(frames);
-  render_cmd->add_option("--camera", render.camera,
-                         "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "
-                         "glTF file's first)");
-  render_cmd->add_option("--animation", render.animation,
-                         "A glTF file on its own: play one of its animations, by name or index (default: all of them)");
-  render_cmd->add_option("--fps", render.fps, "A glTF file on its own: frames per second of its animation (default 24)")
-      ->check(real_number(kMinGifFps, 1000.0));
-  render_cmd
-      ->add_option("--background", render.background,
-                   "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
-      ->check(color_value());
-  render_cmd
-      ->add_option("--ambient", render.ambient,
-                   "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
-      ->check(color_value());
-  render_cmd->add_option(
-      "--stereo", render.stereo,
-      "Stereo from the camera's two eyes: " + kStereoModes.help() + " (replaces the scene's camera.stereo mode)");
-  render_cmd->add_flag("--dither", render.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
-  const char* outside_help =
-      "Let glTF files read images and buffers outside their own folder (by default a model's URIs must stay in "
-      "it, so that a downloaded model cannot show other files)";
-  render_cmd->add_flag("--allow-outside-files", render.allow_outside_files, outside_help);
-  CLI::Option* crop = render_cmd->add_option(
-      "--crop", render.crop,
-      "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
-  render_cmd
-      ->add_option("--tile", render.tile,
-                   "Render band I of N equal bands of rows (0-based), or auto: this Slurm array task's band")
-      ->excludes(crop);
-  render_cmd->add_option("--chunk", render.chunk,
-                         "Render share I of N of the frames (consecutive, 0-based), or auto: this Slurm array task's");
-  render_cmd->add_flag("--skip-existing", render.skip_existing,
-                       "Do not render frames whose output file is already there and complete (resume a stopped job)");
-  render_cmd->add_flag("--exr-float", render.exr_float, "EXR output: 32-bit float channels (default: half floats)");
-  render_cmd->add_option("--aov", render.aov,
-                         "EXR output: layers beside the colour, any of albedo,normal,depth,variance (comma-separated)");
-  render_cmd->add_flag("--denoise", render.denoise,
-                       "Denoise the image with its first hits' albedo, normal and depth and each pixel's variance "
-                       "(path tracer); an EXR keeps the raw image as layer \"raw\"; a --crop or --tile EXR gets the "
-                       "layers the denoiser needs, for rtcli merge --denoise");
-  render_cmd->add_option("--denoiser", render.denoiser, "Which denoiser --denoise uses: " + denoisers().help());
-  render_cmd->add_option("--stats", render.stats,
-                         "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
-  render_cmd->add_flag("-q,--quiet", render.quiet, "Print nothing but errors and warnings");
-  const std::string isa_help = "Instruction set of the BVH traversal: " + kIsas.help() +
-                               "; auto: the best this CPU runs (default: RTCLI_ISA, else auto); the image is the same "
-                               "with any";
-  render_cmd->add_option("--isa", render.isa, isa_help);
+  add_render_options(*render_cmd, render);
 
   ValidateCommand validate;
   CLI::App* validate_cmd = app.add_subcommand(
       "validate", "Check scene files (.json) and glTF models (.gltf/.glb) without rendering: every problem, located");
   validate_cmd->add_option("files", validate.files, "Files to check")->required();
-  validate_cmd->add_flag("--allow-outside-files", validate.allow_outside_files, outside_help);
+  validate_cmd->add_flag("--allow-outside-files", validate.allow_outside_files, kOutsideFilesHelp);
   validate_cmd->add_flag("--json", validate.json,
                          "Print the problems as a JSON array (file, line, column, pointer, severity, message)");
 
@@ -186,7 +61,7 @@ int main(int argc, char** argv) {
                         "Replay the ray sets in FILE (from --save-rays) instead of generating them");
   bench_cmd->add_option("--save-rays", bench.save_rays,
                         "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
-  bench_cmd->add_option("--isa", bench.isa, isa_help);
+  bench_cmd->add_option("--isa", bench.isa, isa_help());
 
   MergeCommand merge;
   CLI::App* merge_cmd = app.add_subcommand(

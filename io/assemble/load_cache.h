@@ -26,10 +26,10 @@ namespace rt {
 class LoadCache {
  public:
   struct Model {
-    FileStamps files;                // the model, its buffers and images
-    ImportedModel model;             // as imported, meshes included
-    std::vector<Bvh> bvhs;           // per primitive, mesh by mesh (none when the load built none)
-    LimitUsage used;                 // what the import counted
+    FileStamps files;                  // the model, its buffers and images
+    ImportedModel model;               // as imported, meshes included
+    std::vector<Bvh> bvhs;             // per primitive, mesh by mesh (none when the load built none)
+    LimitUsage used;                   // what the import counted
     std::vector<Diagnostic> warnings;  // in the file's terms, reported again at each use
   };
   struct Image {
@@ -50,8 +50,14 @@ class LoadCache {
   const Environment* environment(const std::string& key, const LimitUsage& usage, const LoadLimits& limits);
 
   // Keeps what was just read (counted as read).
-  void keep(const std::string& key, Model m) { models_[key] = std::make_unique<Model>(std::move(m)); ++read_; }
-  void keep(const std::string& key, Image i) { images_[key] = std::make_unique<Image>(std::move(i)); ++read_; }
+  void keep(const std::string& key, Model m) {
+    models_[key] = std::make_unique<Model>(std::move(m));
+    ++read_;
+  }
+  void keep(const std::string& key, Image i) {
+    images_[key] = std::make_unique<Image>(std::move(i));
+    ++read_;
+  }
   void keep(const std::string& key, Environment e) {
     environments_[key] = std::make_unique<Environment>(std::move(e));
     ++read_;
