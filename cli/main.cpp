@@ -15,6 +15,7 @@
 #include "cli/frames/merge_command.h"
 #include "cli/render/render_command.h"
 #include "cli/render/render_options.h"
+#include "cli/watch/watch_command.h"
 #include "core/accel/isa.h"
 #include "core/denoise/denoiser.h"
 #include "core/render/integrator.h"
@@ -33,6 +34,17 @@ int main(int argc, char** argv) {
   CLI::App* render_cmd = app.add_subcommand(
       "render", "Render a scene (.json) or a glTF model (.gltf/.glb) to a PNG image or an animation");
   add_render_options(*render_cmd, render);
+
+  WatchCommand watch;
+  CLI::App* watch_cmd = app.add_subcommand(
+      "watch", "Show a scene rendering in the browser, refining; every saved change to it or its files shows at once");
+  watch_cmd->add_option("scene", watch.render.scene, "Scene file (.json) or glTF model (.gltf/.glb)")->required();
+  watch_cmd->add_option("--port", watch.port, "Port of the page (0: any free one; default 8765)")
+      ->check(whole_number(0, 65535));
+  watch_cmd->add_option("--bind", watch.bind,
+                        "Address to serve on (default 127.0.0.1: this machine only; 0.0.0.0 shows it to the network)");
+  watch_cmd->add_option("--frame", watch.frame, "Frame of the scene's animation to show first (the page changes it)");
+  add_scene_options(*watch_cmd, watch.render);
 
   ValidateCommand validate;
   CLI::App* validate_cmd = app.add_subcommand(
@@ -142,6 +154,7 @@ int main(int argc, char** argv) {
   // Loading never throws (bad input is a diagnostic); what escapes is a runtime failure.
   try {
     if (render_cmd->parsed()) return run_render(render);
+    if (watch_cmd->parsed()) return run_watch(watch);
     if (validate_cmd->parsed()) return run_validate(validate);
     if (bench_cmd->parsed()) return run_bench(bench);
     if (merge_cmd->parsed()) {

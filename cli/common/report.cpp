@@ -2,15 +2,18 @@
 
 namespace rt {
 
-void print_diagnostics(std::FILE* out, const Diagnostics& diags) {
-  for (const Diagnostic& d : diags.all()) {
-    std::fprintf(out, "%s\n", format_diagnostic(d).c_str());
-    if (!d.excerpt.empty()) std::fprintf(out, "%s\n", d.excerpt.c_str());
-    if (d.inside) {
-      std::fprintf(out, "%s\n", format_place(*d.inside).c_str());
-      if (!d.inside->excerpt.empty()) std::fprintf(out, "%s\n", d.inside->excerpt.c_str());
-    }
+std::string diagnostic_text(const Diagnostic& d) {
+  std::string text = format_diagnostic(d) + "\n";
+  if (!d.excerpt.empty()) text += d.excerpt + "\n";
+  if (d.inside) {
+    text += format_place(*d.inside) + "\n";
+    if (!d.inside->excerpt.empty()) text += d.inside->excerpt + "\n";
   }
+  return text;
+}
+
+void print_diagnostics(std::FILE* out, const Diagnostics& diags) {
+  for (const Diagnostic& d : diags.all()) std::fputs(diagnostic_text(d).c_str(), out);
   const size_t errors = diags.error_count();
   if (errors > 1) std::fprintf(out, "%zu errors\n", errors);
 }

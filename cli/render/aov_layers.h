@@ -49,6 +49,15 @@ inline DenoiseInput denoise_input(const Film& film) {
   return DenoiseInput{film.color, film.albedo, film.normal, film.emission, film.distance, film.variance};
 }
 
+// An RGB image as a layer called `name` ("": the colour).
+inline ExrLayer color_layer(const Image& image, const std::string& name) {
+  ExrLayer layer{name, {"R", "G", "B"}, {}};
+  layer.values.reserve(image.pixels.size() * 3);
+  for (const Vec3& p : image.pixels)
+    for (int c = 0; c < 3; ++c) layer.values.push_back(p[c]);
+  return layer;
+}
+
 // The layer's values from a film rendered with its first-hit layers (RenderView::aovs).
 inline ExrLayer aov_layer(const Film& film, const AovLayer& aov) {
   ExrLayer layer{aov.name, aov.channels, {}};

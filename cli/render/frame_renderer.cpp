@@ -17,18 +17,6 @@
 
 namespace rt {
 
-namespace {
-
-ExrLayer layer_of(const Image& image, const std::string& name) {
-  ExrLayer layer{name, {"R", "G", "B"}, {}};
-  layer.values.reserve(image.pixels.size() * 3);
-  for (const Vec3& p : image.pixels)
-    for (int c = 0; c < 3; ++c) layer.values.push_back(p[c]);
-  return layer;
-}
-
-}  // namespace
-
 std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded, const RenderSettings& settings,
                                  const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
                                  std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
@@ -107,8 +95,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       exr.width = settings.width;
       exr.height = settings.height;
       exr.window = film.window();
-      exr.layers.push_back(layer_of(picture, ""));
-      if (denoiser) exr.layers.push_back(layer_of(film.color, "raw"));
+      exr.layers.push_back(color_layer(picture, ""));
+      if (denoiser) exr.layers.push_back(color_layer(film.color, "raw"));
       for (const std::string& aov : content.aovs)
         exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
       exr.attributes = render_attributes(content.identity, frame, exr.window);

@@ -17,8 +17,8 @@ const char* const kOutsideFilesHelp =
 
 std::string isa_help() {
   return "Instruction set of the BVH traversal: " + kIsas.help() +
-                               "; auto: the best this CPU runs (default: RTCLI_ISA, else auto); the image is the same "
-                               "with any";
+         "; auto: the best this CPU runs (default: RTCLI_ISA, else auto); the image is the same "
+         "with any";
 }
 
 void add_scene_options(CLI::App& cmd, RenderCommand& r) {
@@ -37,64 +37,52 @@ void add_scene_options(CLI::App& cmd, RenderCommand& r) {
   cmd.add_flag("--no-textures", r.no_textures, "Ignore colour and specular textures (kd and ks alone)");
   cmd.add_flag("--no-bumps", r.no_bumps, "Ignore bump and normal maps");
   cmd.add_option("--texture-filter", r.texture_filter,
-                         "Every texture filtered so: " + kTextureFilters.help() + " (overrides the scene)");
-  cmd
-      .add_option("--shadow-samples", r.shadow_samples,
-                   "Shadow rays per area light and shading point (overrides the scene)")
+                 "Every texture filtered so: " + kTextureFilters.help() + " (overrides the scene)");
+  cmd.add_option("--shadow-samples", r.shadow_samples,
+                 "Shadow rays per area light and shading point (overrides the scene)")
       ->check(whole_number(1, kMaxShadowSamples));
   cmd.add_flag("--preview", r.preview,
-                       "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
-                       "given beside it still apply");
-  cmd.add_option("--sampler", r.sampler,
-                         "Where samples fall: " + kSampleSequences.help() + " (overrides the scene)");
-  cmd.add_option("--secondary-shadows", r.secondary_shadows,
-                         kSecondaryShadows.help() + " (overrides the scene)");
-  cmd
-      .add_option("--exposure", r.exposure,
-                   "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
-                   "scene)")
+               "Draft: no anti-aliasing, a quarter of the shadow and glossy samples (at most 4); options "
+               "given beside it still apply");
+  cmd.add_option("--sampler", r.sampler, "Where samples fall: " + kSampleSequences.help() + " (overrides the scene)");
+  cmd.add_option("--secondary-shadows", r.secondary_shadows, kSecondaryShadows.help() + " (overrides the scene)");
+  cmd.add_option("--exposure", r.exposure,
+                 "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
+                 "scene)")
       ->check(real_number(-kMaxExposure, kMaxExposure));
-  cmd
-      .add_option("--spp", r.spp,
-                   "Path tracer: the most samples per pixel (overrides the scene's r.samples_per_pixel)")
+  cmd.add_option("--spp", r.spp, "Path tracer: the most samples per pixel (overrides the scene's r.samples_per_pixel)")
       ->check(whole_number(1, kMaxSamplesPerPixel));
-  cmd
-      .add_option("--noise-threshold", r.noise_threshold,
-                   "Path tracer: a pixel stops sampling once its relative error is below T (0: off; overrides "
-                   "the scene)")
+  cmd.add_option("--noise-threshold", r.noise_threshold,
+                 "Path tracer: a pixel stops sampling once its relative error is below T (0: off; overrides "
+                 "the scene)")
       ->check(real_number(0.0, 1.0));
-  cmd
-      .add_option("--clamp", r.clamp,
-                   "Path tracer: the largest value one sample may add, against fireflies (0: off; biased; "
-                   "overrides the scene)")
+  cmd.add_option("--clamp", r.clamp,
+                 "Path tracer: the largest value one sample may add, against fireflies (0: off; biased; "
+                 "overrides the scene)")
       ->check(real_number(0.0, 1e30));
   cmd.add_option("--tone-map", r.tone_map, kToneMaps.help() + " (overrides the scene)");
-  cmd.add_option("--aa", r.aa_mode,
-                         "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
+  cmd.add_option("--aa", r.aa_mode, "Anti-aliasing: " + pixel_samplers().help() + " (overrides the scene)");
   cmd.add_option("--aa-samples", r.aa_samples, "Uniform anti-aliasing: N x N rays per pixel")
       ->check(whole_number(1, kMaxSamplesPerAxis));
-  cmd
-      .add_option("--aa-threshold", r.aa_threshold,
-                   "Adaptive anti-aliasing: split a cell whose samples differ by more than T (0-1, displayed values)")
+  cmd.add_option("--aa-threshold", r.aa_threshold,
+                 "Adaptive anti-aliasing: split a cell whose samples differ by more than T (0-1, displayed values)")
       ->check(real_number(0.0, 1.0));
   cmd.add_option("--aa-depth", r.aa_depth, "Adaptive anti-aliasing: most splits of a pixel")
       ->check(whole_number(0, kMaxAdaptiveDepth));
   cmd.add_option("--aa-positions", r.aa_positions,
-                         "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
+                 "Adaptive anti-aliasing, where the samples go: " + kSamplePositions.help());
   cmd.add_option("--camera", r.camera,
-                         "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "
-                         "glTF file's first)");
+                 "Look through a glTF camera, by its name or its node's (default: the scene's camera, or a "
+                 "glTF file's first)");
   cmd.add_option("--animation", r.animation,
-                         "A glTF file on its own: play one of its animations, by name or index (default: all of them)");
+                 "A glTF file on its own: play one of its animations, by name or index (default: all of them)");
   cmd.add_option("--fps", r.fps, "A glTF file on its own: frames per second of its animation (default 24)")
       ->check(real_number(kMinGifFps, 1000.0));
-  cmd
-      .add_option("--background", r.background,
-                   "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
+  cmd.add_option("--background", r.background,
+                 "Background colour, linear R,G,B or one number (overrides the scene; a glTF file's is 0.0509)")
       ->check(color_value());
-  cmd
-      .add_option("--ambient", r.ambient,
-                   "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
+  cmd.add_option("--ambient", r.ambient,
+                 "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
   cmd.add_flag("--allow-outside-files", r.allow_outside_files, kOutsideFilesHelp);
   cmd.add_option("--isa", r.isa, isa_help());
@@ -106,16 +94,14 @@ void add_render_options(CLI::App& cmd, RenderCommand& r) {
                  "Output .png, .exr, .jpg, NAME_####.png, NAME_####.exr or .gif (default: <scene name>.png, or "
                  ".gif for --frames A-B)");
   add_scene_options(cmd, r);
-  cmd
-      .add_option("--time", r.time,
-                   "Path tracer: stop after about SECONDS with the best image so far, in whole passes of 8 samples a "
-                   "pixel (each frame, each eye); the summary says how many samples each pixel got")
+  cmd.add_option("--time", r.time,
+                 "Path tracer: stop after about SECONDS with the best image so far, in whole passes of 8 samples a "
+                 "pixel (each frame, each eye); the summary says how many samples each pixel got")
       ->check(real_number(0.001, 1e7));
   cmd.add_flag("--samples-debug", r.samples_debug,
-                       "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
-  cmd.add_flag(
-      "--aa-debug", r.aa_debug,
-      "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
+               "Path tracer: also write NAME.samples.png, each pixel coloured by the samples it took");
+  cmd.add_flag("--aa-debug", r.aa_debug,
+               "Also write NAME.aa-refined.png (refined pixels green) and NAME.aa-depth.png (refinement depth)");
   CLI::Option* frames = cmd.add_option(
       "--frames", r.frames,
       "Render frames A-B, every S-th frame A-BxS, or a list 1,5,9-12 of the scene's animation: -o NAME.gif (looping "
@@ -126,26 +112,24 @@ void add_render_options(CLI::App& cmd, RenderCommand& r) {
       "Stereo from the camera's two eyes: " + kStereoModes.help() + " (replaces the scene's camera.stereo mode)");
   cmd.add_flag("--dither", r.dither, "GIF output: Floyd-Steinberg dithering (less banding, some noise)");
   CLI::Option* crop = cmd.add_option(
-      "--crop", r.crop,
-      "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
-  cmd
-      .add_option("--tile", r.tile,
-                   "Render band I of N equal bands of rows (0-based), or auto: this Slurm array task's band")
+      "--crop", r.crop, "Render pixels [x0, x1) x [y0, y1) of the image only: the same pixels as in the whole render");
+  cmd.add_option("--tile", r.tile,
+                 "Render band I of N equal bands of rows (0-based), or auto: this Slurm array task's band")
       ->excludes(crop);
   cmd.add_option("--chunk", r.chunk,
-                         "Render share I of N of the frames (consecutive, 0-based), or auto: this Slurm array task's");
+                 "Render share I of N of the frames (consecutive, 0-based), or auto: this Slurm array task's");
   cmd.add_flag("--skip-existing", r.skip_existing,
-                       "Do not render frames whose output file is already there and complete (resume a stopped job)");
+               "Do not render frames whose output file is already there and complete (resume a stopped job)");
   cmd.add_flag("--exr-float", r.exr_float, "EXR output: 32-bit float channels (default: half floats)");
   cmd.add_option("--aov", r.aov,
-                         "EXR output: layers beside the colour, any of albedo,normal,depth,variance (comma-separated)");
+                 "EXR output: layers beside the colour, any of albedo,normal,depth,variance (comma-separated)");
   cmd.add_flag("--denoise", r.denoise,
-                       "Denoise the image with its first hits' albedo, normal and depth and each pixel's variance "
-                       "(path tracer); an EXR keeps the raw image as layer \"raw\"; a --crop or --tile EXR gets the "
-                       "layers the denoiser needs, for rtcli merge --denoise");
+               "Denoise the image with its first hits' albedo, normal and depth and each pixel's variance "
+               "(path tracer); an EXR keeps the raw image as layer \"raw\"; a --crop or --tile EXR gets the "
+               "layers the denoiser needs, for rtcli merge --denoise");
   cmd.add_option("--denoiser", r.denoiser, "Which denoiser --denoise uses: " + denoisers().help());
   cmd.add_option("--stats", r.stats,
-                         "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
+                 "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   cmd.add_flag("-q,--quiet", r.quiet, "Print nothing but errors and warnings");
 }
 

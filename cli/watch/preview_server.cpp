@@ -1,0 +1,221 @@
+#include "cli/watch/preview_server.h"
+
+#include <httplib.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/common/report.h"
+#include "cli/watch/preview_images.h"
+#include "io/image/png_encoder.h"
+
+namespace rt {
+
+const std::string& preview_page_html();  // cli/watch/preview_page.cpp.in
+
+namespace {
+
+constexpr size_t kMaxBody = 4096;  // the page sends no bodies at all
+
+void fail_request(httplib::Response& res, int status, const std::string& why) {
+  res.status = status;
+  res.set_content(why + "\n", "text/plain; charset=utf-8");
+}
+
+// A number parameter in [lo, hi]; the whole text must be the number.
+std::optional<double> number_param(const httplib::Request& req, const char* key, double fallback, double lo, double hi) {
+  if (!req.has_param(key)) return fallback;
+  const std::string text = req.get_param_value(key);
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi) return std::nullopt;
+  return v;
+}
+
+// The layer and display transform a picture request asks for; nothing (400 sent) if they are bad.
+struct PictureRequest {
+  PreviewLayer layer = PreviewLayer::kColor;
+  DisplayTransform display;
+};
+
+std::optional<PictureRequest> picture_request(const httplib::Request& req, const PreviewImage& image,
+                                              httplib::Response& res) {
+  PictureRequest p;
+  p.display = image.display;
+  if (req.has_param("layer")) {
+    const auto layer = kPreviewLayers.parse(req.get_param_value("layer"));
+    if (!layer) {
+      std::string names;
+      for (const std::string& n : kPreviewLayers.names()) names += (names.empty() ? "" : ", ") + n;
+      fail_request(res, 400, "layer: expected one of " + names);
+      return std::nullopt;
+    }
+    p.layer = *layer;
+  }
+  const auto exposure = number_param(req, "exposure", image.display.exposure, -kMaxExposure, kMaxExposure);
+  if (!exposure) {
+    fail_request(res, 400, "exposure: expected a number of stops in [-20, 20]");
+    return std::nullopt;
+  }
+  p.display.exposure = static_cast<float>(*exposure);
+  if (req.has_param("tone")) {
+    const auto tone = kToneMaps.parse(req.get_param_value("tone"));
+    if (!tone) {
+      fail_request(res, 400, "tone: expected clamp or filmic");
+      return std::nullopt;
+    }
+    p.display.curve = *tone;
+  }
+  return p;
+}
+
+nlohmann::json status_json(const PreviewStatus& s) {
+  nlohmann::json j;
+  j["scene"] = s.scene;
+  j["scene_version"] = s.scene_version;
+  j["image_version"] = s.image_version;
+  j["load_failed"] = s.load_failed;
+  j["reload"] = s.reload;
+  j["first_image_seconds"] = s.first_image_seconds;
+  j["animated"] = s.animated;
+  j["first_frame"] = s.first_frame;
+  j["last_frame"] = s.last_frame;
+  j["rendering"] = s.rendering;
+  j["rays_per_second"] = s.rays_per_second;
+  j["problems"] = nlohmann::json::array();
+  for (const Diagnostic& d : s.problems)
+    j["problems"].push_back(
+        {{"severity", d.severity == Severity::kError ? "error" : "warning"}, {"text", diagnostic_text(d)}});
+  if (s.image) {
+    const PreviewImage& im = *s.image;
+    j["image"] = {{"width", im.width},
+                  {"height", im.height},
+                  {"film_width", im.film.width()},
+                  {"film_height", im.film.height()},
+                  {"frame", im.frame},
+                  {"samples", im.samples},
+                  {"target_samples", im.target_samples},
+                  {"stage", im.stage},
+                  {"last", im.last},
+                  {"seconds", im.seconds},
+                  {"rays", im.rays},
+                  {"scene_version", im.scene_version},
+                  {"exposure", im.display.exposure},
+                  {"tone_map", std::string(kToneMaps.name(im.display.curve))}};
+  } else {
+    j["image"] = nullptr;
+  }
+  return j;
+}
+
+}  // namespace
+
+PreviewServer::PreviewServer(PreviewBoard& board, std::function<bool(int)> show_frame, std::string download_name)
+    : board_(board),
+      show_frame_(std::move(show_frame)),
+      download_name_(std::move(download_name)),
+      server_(std::make_unique<httplib::Server>()) {
+  routes();
+}
+
+PreviewServer::~PreviewServer() { stop(); }
+
+bool PreviewServer::bind(const std::string& host, int port, std::string& error) {
+  host_ = host;
+  if (port == 0) {
+    port_ = server_->bind_to_any_port(host);
+    if (port_ > 0) return true;
+  } else if (server_->bind_to_port(host, port)) {
+    port_ = port;
+    return true;
+  }
+  error = "could not listen on " + host + ":" + std::to_string(port) +
+          (port == 0 ? "" : " (is another program using the port? --port 0 picks a free one)");
+  return false;
+}
+
+void PreviewServer::start() {
+  thread_ = std::thread([this] { server_->listen_after_bind(); });
+}
+
+void PreviewServer::stop() {
+  if (server_) server_->stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+void PreviewServer::routes() {
+  httplib::Server& s = *server_;
+  s.set_payload_max_length(kMaxBody);
+  s.set_read_timeout(5, 0);
+  s.set_write_timeout(5, 0);
+  s.set_keep_alive_max_count(100);
+  s.set_keep_alive_timeout(2);
+  s.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+    fail_request(res, 500, "the request could not be answered");
+  });
+  s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    if (res.status == 404) fail_request(res, 404, "not found: " + req.path + " (the page is at /)");
+    else fail_request(res, res.status, "bad request");
+  });
+  // Only the names this server answers to: a page served from another name (DNS rebinding)
+  // must not read the render.
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const std::string host = req.get_header_value("Host");
+    const std::string port = ":" + std::to_string(port_);
+    const bool ok = host == host_ + port || host == "localhost" + port || host == "127.0.0.1" + port ||
+                    host == "[::1]" + port || (host_ == "0.0.0.0" && host.size() > port.size() &&
+                                               host.compare(host.size() - port.size(), port.size(), port) == 0);
+    if (ok) return httplib::Server::HandlerResponse::Unhandled;
+    fail_request(res, 403, "this server answers to " + host_ + port + " and localhost" + port + " only");
+    return httplib::Server::HandlerResponse::Handled;
+  });
+
+  s.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(preview_page_html(), "text/html; charset=utf-8");
+  });
+  s.Get("/status", [this](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(status_json(board_.status()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
+                    "application/json");
+  });
+  const auto picture = [this](bool save) {
+    return [this, save](const httplib::Request& req, httplib::Response& res) {
+      const std::shared_ptr<const PreviewImage> image = board_.image();
+      if (!image) return fail_request(res, 503, "no image yet: the first render has not finished");
+      const std::optional<PictureRequest> p = picture_request(req, *image, res);
+      if (!p) return;
+      const std::vector<uint8_t> png = encode_png(preview_layer(*image, p->layer, p->display));
+      res.set_header("Cache-Control", "no-store");
+      if (save)
+        res.set_header("Content-Disposition", "attachment; filename=\"" + download_name_ + "-" +
+                                                  std::string(kPreviewLayers.name(p->layer)) + "-" +
+                                                  std::to_string(image->samples) + "spp.png\"");
+      res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+    };
+  };
+  s.Get("/image.png", picture(false));
+  s.Get("/save.png", picture(true));
+  s.Get("/save.exr", [this](const httplib::Request&, httplib::Response& res) {
+    const std::shared_ptr<const PreviewImage> image = board_.image();
+    if (!image) return fail_request(res, 503, "no image yet: the first render has not finished");
+    std::vector<uint8_t> exr;
+    std::string error;
+    if (!preview_exr(*image, exr, error)) return fail_request(res, 500, error);
+    res.set_header("Content-Disposition", "attachment; filename=\"" + download_name_ + "-" +
+                                              std::to_string(image->samples) + "spp.exr\"");
+    res.set_content(reinterpret_cast<const char*>(exr.data()), exr.size(), "image/x-exr");
+  });
+  s.Post("/frame", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto n = number_param(req, "n", NAN, -1e9, 1e9);
+    if (!n || !std::isfinite(*n) || *n != std::floor(*n)) return fail_request(res, 400, "n: expected a frame number");
+    if (!show_frame_(static_cast<int>(*n)))
+      return fail_request(res, 400, "n: expected a frame of the scene's animation");
+    res.status = 204;
+  });
+}
+
+}  // namespace rt

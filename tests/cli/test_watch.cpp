@@ -1,0 +1,300 @@
+// `rtcli watch` as a user meets it: started on a scene of their own, its page loaded in headless
+// Chromium, the scene edited (saved by rename, as editors do), broken, fixed; bad requests sent
+// to the server; Ctrl-C. The server is asked over HTTP with cpp-httplib's client.
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <httplib.h>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "io/image/png_file.h"
+#include "tests/support/run_rtcli.h"
+#include "tests/support/test_paths.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A red sphere on a grey floor; `color` replaces the sphere's colour, `extra` goes into the
+// scene's render block.
+std::string watch_scene(const std::string& color, const std::string& render = "\"integrator\": \"whitted\"") {
+  return R"({
+  // the watch test's scene
+  "render": {"width": 160, "height": 120, )" +
+         render + R"(},
+  "camera": {"position": [0, 1, 5], "look_at": [0, 0.6, 0], "fov": 40},
+  "background": [0.1, 0.1, 0.15],
+  "materials": {"ball": {"kd": )" +
+         color + R"(}, "floor": {"kd": 0.6}},
+  "lights": [{"type": "point", "position": [3, 4, 3], "intensity": 1}],
+  "nodes": [
+    {"shape": "sphere", "material": "ball", "transform": {"translate": [0, 0.8, 0], "scale": 0.8}},
+    {"shape": "plane", "material": "floor", "transform": {"scale": 5}}
+  ]
+}
+)";
+}
+
+// Saves as editors that write a new file and rename it over the old one do.
+void save_by_rename(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp~";
+  std::ofstream(tmp) << text;
+  fs::rename(tmp, path);
+}
+
+class WatchProcess {
+ public:
+  WatchProcess(const std::string& scene, const std::string& folder) : out_(folder + "/watch-out.txt") {
+    std::vector<std::string> args = {RTCLI_BINARY, "watch", scene, "--port", "0", "--threads", "2"};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    REQUIRE(posix_spawn(&pid_, RTCLI_BINARY, &actions, nullptr, argv.data(), environ) == 0);
+    posix_spawn_file_actions_destroy(&actions);
+    // The address is the first line it prints.
+    const auto start = Clock::now();
+    while (port_ == 0 && Clock::now() - start < std::chrono::seconds(30)) {
+      const std::string out = rt::test::read_file(out_);
+      const size_t at = out.find("http://127.0.0.1:");
+      if (at != std::string::npos) port_ = std::atoi(out.c_str() + at + 17);
+      else std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    REQUIRE(port_ > 0);
+  }
+  ~WatchProcess() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  // Ctrl-C; the exit code, -1 if it did not exit within `seconds`.
+  int interrupt(double seconds) {
+    ::kill(pid_, SIGINT);
+    const auto start = Clock::now();
+    int status = 0;
+    while (Clock::now() - start < std::chrono::duration<double>(seconds)) {
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return -1;
+  }
+  int port() const { return port_; }
+  std::string output() const { return rt::test::read_file(out_); }
+  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/"; }
+
+  httplib::Client client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_connection_timeout(5);
+    c.set_read_timeout(10);
+    return c;
+  }
+  Json status() const {
+    auto c = client();
+    const auto r = c.Get("/status");
+    REQUIRE(r);
+    REQUIRE(r->status == 200);
+    return Json::parse(r->body);
+  }
+  // The status once `done` says so, within 60 s.
+  template <class Done>
+  Json wait_for(Done done, const char* what) const {
+    const auto start = Clock::now();
+    Json s = status();
+    while (!done(s) && Clock::now() - start < std::chrono::seconds(60)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      s = status();
+    }
+    INFO("waiting for " << what << "; status: " << s.dump());
+    REQUIRE(done(s));
+    return s;
+  }
+  // The picture's centre pixel (the sphere), as the page gets it.
+  std::array<int, 3> centre(const std::string& folder) const {
+    auto c = client();
+    const auto r = c.Get("/image.png?layer=color");
+    REQUIRE(r);
+    REQUIRE(r->status == 200);
+    const std::string path = folder + "/centre.png";
+    std::ofstream(path, std::ios::binary) << r->body;
+    std::string error;
+    const auto png = rt::read_png(path, error);
+    REQUIRE(png);
+    const size_t i = (static_cast<size_t>(png->height / 2 - png->height / 10) * png->width + png->width / 2) * 3;
+    return {png->rgb[i], png->rgb[i + 1], png->rgb[i + 2]};
+  }
+
+ private:
+  std::string out_;
+  pid_t pid_ = -1;
+  int port_ = 0;
+};
+
+bool finished(const Json& s, uint64_t scene_version) {
+  return !s["image"].is_null() && s["image"]["last"] == true && s["image"]["scene_version"] == scene_version;
+}
+
+// Chromium's DOM of the page after it has polled a while; empty when Chromium cannot run here.
+std::string page_dom(const WatchProcess& w, const std::string& screenshot = "") {
+  if (rt::test::run_shell("command -v chromium >/dev/null").code != 0) return "";
+  const std::string chromium =
+      "timeout 60 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --virtual-time-budget=3000 ";
+  if (!screenshot.empty())
+    rt::test::run_shell(chromium + "--window-size=900,560 --screenshot='" + screenshot + "' '" + w.url() +
+                        "' >/dev/null 2>&1");
+  return rt::test::run_shell(chromium + "--dump-dom '" + w.url() + "' 2>/dev/null").output;
+}
+
+}  // namespace
+
+TEST_CASE("cli: watch shows the render refining, follows edits saved by rename, shows errors located, and stops on "
+          "Ctrl-C",
+          "[cli][watch]") {
+  const std::string folder = rt::test::fresh_folder("watch");
+  const std::string scene = folder + "/ball.json";
+  std::ofstream(scene) << watch_scene("[0.8, 0.1, 0.1]");
+  WatchProcess w(scene, folder);
+
+  // A first, coarse picture, then refinements until the scene's own settings.
+  Json s = w.wait_for([](const Json& j) { return finished(j, 1); }, "the first render to finish");
+  CHECK(s["image_version"].get<int>() >= 3);  // coarse, draft, final
+  CHECK(s["image"]["width"] == 160);
+  CHECK(s["image"]["film_width"] == 160);
+  CHECK(s["first_image_seconds"].get<double>() >= 0.0);
+  CHECK(s["load_failed"] == false);
+  auto c = w.centre(folder);
+  CHECK(c[0] > 2 * c[2]);  // red
+
+  const std::string dom = page_dom(w, folder + "/watch-1-first.png");
+  if (dom.empty()) {
+    WARN("chromium is not installed or did not run: the page is checked over HTTP only");
+  } else {
+    INFO(dom);
+    CHECK_THAT(dom, Catch::Contains("data-loaded-version=\""));
+    CHECK_THAT(dom, Catch::Contains("id=\"samples\" data-samples=\""));
+    CHECK_THAT(dom, Catch::Contains(">done<"));
+  }
+
+  // An edit, saved by rename: the new picture.
+  save_by_rename(scene, watch_scene("[0.1, 0.1, 0.8]"));
+  s = w.wait_for([](const Json& j) { return finished(j, 2); }, "the edited scene's render");
+  CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("ball.json changed"));
+  c = w.centre(folder);
+  CHECK(c[2] > 2 * c[0]);  // blue
+
+  // A mistake: the error, located, and the last good picture stays.
+  save_by_rename(scene, watch_scene("[0.1, 0.1, \"blue\"]"));
+  s = w.wait_for([](const Json& j) { return j["load_failed"] == true; }, "the error to show");
+  REQUIRE(!s["problems"].empty());
+  const std::string problem = s["problems"][0]["text"];
+  CHECK_THAT(problem, Catch::Contains("ball.json:6:43: error: /materials/ball/kd/2"));
+  CHECK_THAT(problem, Catch::Contains("^"));  // the excerpt with its caret
+  CHECK(s["image"]["scene_version"] == 2);
+  c = w.centre(folder);
+  CHECK(c[2] > 2 * c[0]);  // still the blue one
+  CHECK_THAT(w.output(), Catch::Contains("ball.json:6:43: error"));  // the terminal says it too
+  const std::string error_dom = page_dom(w, folder + "/watch-3-error.png");
+  if (!error_dom.empty()) {
+    INFO(error_dom);
+    CHECK_THAT(error_dom, Catch::Contains("ball.json:6:43: error: /materials/ball/kd/2"));
+    CHECK_THAT(error_dom, Catch::Contains("data-loaded-version=\""));
+  }
+
+  // Fixed: the render again, no problems.
+  save_by_rename(scene, watch_scene("[0.9, 0.8, 0.1]"));
+  s = w.wait_for([](const Json& j) { return finished(j, 3); }, "the fixed scene's render");
+  CHECK(s["load_failed"] == false);
+  CHECK(s["problems"].empty());
+  c = w.centre(folder);
+  CHECK(c[1] > 2 * c[2]);  // yellow
+
+  CHECK(w.interrupt(5.0) == 0);
+  CHECK_THAT(w.output(), Catch::Contains("rtcli watch: stopped"));
+}
+
+TEST_CASE("cli: watch refines a path-traced scene in passes and shows its layers", "[cli][watch]") {
+  const std::string folder = rt::test::fresh_folder("watch-path");
+  const std::string scene = folder + "/ball.json";
+  std::ofstream(scene) << watch_scene("[0.8, 0.1, 0.1]", "\"integrator\": \"path\", \"samples_per_pixel\": 24");
+  WatchProcess w(scene, folder);
+  const Json s = w.wait_for([](const Json& j) { return finished(j, 1); }, "the path tracer's passes");
+  CHECK(s["image"]["samples"] == 24);
+  CHECK(s["image"]["target_samples"] == 24);
+  CHECK(s["image_version"].get<int>() >= 5);  // coarse, draft, three passes (8, 16, 24), the end
+  auto c = w.client();
+  for (const char* layer : {"color", "albedo", "normal", "depth", "refinement"}) {
+    const auto r = c.Get((std::string("/image.png?layer=") + layer + "&exposure=1.5&tone=filmic").c_str());
+    REQUIRE(r);
+    CHECK(r->status == 200);
+    CHECK(r->get_header_value("Content-Type") == "image/png");
+  }
+  const auto exr = c.Get("/save.exr");
+  REQUIRE(exr);
+  CHECK(exr->status == 200);
+  CHECK(exr->body.compare(0, 4, "\x76\x2f\x31\x01") == 0);  // OpenEXR's magic number
+  CHECK_THAT(exr->get_header_value("Content-Disposition"), Catch::Contains("ball-24spp.exr"));
+  CHECK(w.interrupt(5.0) == 0);
+}
+
+TEST_CASE("cli: watch answers bad requests with errors and keeps rendering", "[cli][watch][hostile]") {
+  const std::string folder = rt::test::fresh_folder("watch-hostile");
+  const std::string scene = folder + "/ball.json";
+  std::ofstream(scene) << watch_scene("[0.8, 0.1, 0.1]");
+  WatchProcess w(scene, folder);
+  w.wait_for([](const Json& j) { return finished(j, 1); }, "the first render");
+  auto c = w.client();
+  const auto status_of = [&](const httplib::Result& r) { return r ? r->status : -1; };
+  CHECK(status_of(c.Get("/../../../etc/passwd")) == 404);
+  CHECK(status_of(c.Get("/ball.json")) == 404);  // nothing from disk, not even the scene
+  CHECK(status_of(c.Get("/image.png?layer=secret")) == 400);
+  CHECK(status_of(c.Get("/image.png?exposure=nan")) == 400);
+  CHECK(status_of(c.Get("/image.png?tone=%00")) == 400);
+  CHECK(status_of(c.Post("/frame?n=99999", "", "text/plain")) == 400);
+  CHECK(status_of(c.Post("/frame?n=0.5", "", "text/plain")) == 400);
+  CHECK(status_of(c.Post("/frame", std::string(100000, 'x'), "text/plain")) == 413);
+  CHECK(status_of(c.Get("/status", {{"Host", "attacker.example:" + std::to_string(w.port())}})) == 403);
+  CHECK(status_of(c.Get(("/" + std::string(20000, 'a')).c_str())) != 200);
+  // Many clients at once: every one answered.
+  std::atomic<int> answered{0};
+  std::vector<std::thread> clients;
+  for (int i = 0; i < 24; ++i)
+    clients.emplace_back([&] {
+      auto mine = w.client();
+      if (const auto r = mine.Get("/status"); r && r->status == 200) ++answered;
+    });
+  for (std::thread& t : clients) t.join();
+  CHECK(answered == 24);
+  // And the render goes on: an edit still shows.
+  save_by_rename(scene, watch_scene("[0.1, 0.1, 0.8]"));
+  w.wait_for([](const Json& j) { return finished(j, 2); }, "the edited scene's render");
+  CHECK(w.interrupt(5.0) == 0);
+}
+
+TEST_CASE("cli: watch refuses what it cannot serve", "[cli][watch]") {
+  const rt::test::Run r = rt::test::rtcli_bounded("watch scenes/default.json --port 70000");
+  CHECK(r.code == 2);
+  const rt::test::Run bad = rt::test::rtcli_bounded("watch scenes/default.json --bind 203.0.113.1 --port 0");
+  CHECK(bad.code == 1);
+  CHECK_THAT(bad.output, Catch::Contains("could not listen on 203.0.113.1"));
+}
