@@ -32,37 +32,46 @@ std::optional<LoadedScene> load_gltf_model(const std::string& path, const LoadOp
   node.mesh = MeshReference{path, path, std::nullopt, {}, "", options.animation};
   desc.nodes.push_back(std::move(node));
   std::vector<std::string> files;
-  std::optional<BuiltScene> built = build_scene(desc, nullptr, options, diags, &files);
+  std::optional<BuiltScene> built = build_scene(desc, {}, options, diags, &files);
   if (!built) return std::nullopt;
   return LoadedScene{desc.render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }
 
 // Schema failures at values the parser or builder already reported (or above or below them)
-// are not repeated: their messages say more. Any other gets the prefix "schema:".
-void check_schema(const JsonDocument& doc, Diagnostics& diags) {
+// are not repeated: their messages say more. Any other gets the prefix "schema:". Each file is
+// checked on its own; what the scene requires (a camera, nodes) may come from any of them, and
+// the parser checks it of them together.
+void check_schema(const SceneSources& sources, Diagnostics& diags) {
   const std::vector<Diagnostic> found = diags.all();
-  const JsonReader reader(doc, diags);
-  for (const SchemaError& e : check_scene_schema(doc.root)) {
-    const bool reported = std::any_of(found.begin(), found.end(), [&](const Diagnostic& d) {
-      return d.severity == Severity::kError && pointers_related(d.pointer, e.pointer);  // "" contains every pointer
-    });
-    if (!reported) reader.error(e.pointer, "schema: " + e.message);
+  const bool together = sources.files().size() > 1;
+  for (const auto& file : sources.files()) {
+    const JsonReader reader(file->doc, diags);
+    for (const SchemaError& e : check_scene_schema(file->doc.root)) {
+      if (together && e.pointer.empty() && e.message.rfind("Missing required property", 0) == 0) continue;
+      // A template's shape may take its material where it is placed (the parser checks each placement).
+      if (pointer_is_inside(e.pointer, "/templates") && e.message == "Missing dependency 'material'.") continue;
+      const bool reported = std::any_of(found.begin(), found.end(), [&](const Diagnostic& d) {
+        return d.severity == Severity::kError && d.file == file->doc.path &&
+               pointers_related(d.pointer, e.pointer);  // "" contains every pointer
+      });
+      if (!reported) reader.error(e.pointer, "schema: " + e.message);
+    }
   }
 }
 
 // Every check runs whatever the others found, so one run reports every problem: a parse error
 // does not stop the textures, glTF files and transforms from being checked (without a BVH).
 std::optional<LoadedScene> load_json_scene(const std::string& path, const LoadOptions& options, Diagnostics& diags) {
-  std::optional<JsonDocument> doc = read_json_file(path, options.limits.scene_file_bytes, diags);
-  if (!doc) return std::nullopt;
-  const SceneDescription desc = parse_scene_partial(*doc, options, diags);
+  std::optional<SceneSources> sources = read_scene_sources(path, options.limits, diags);
+  if (!sources) return std::nullopt;
+  const SceneDescription desc = parse_scene_partial(*sources, options, diags);
   LoadOptions build_options = options;
   build_options.build_bvh = options.build_bvh && !diags.has_errors();
   std::vector<std::string> models;
-  std::optional<BuiltScene> built = build_scene(desc, &*doc, build_options, diags, &models);
-  check_schema(*doc, diags);
+  std::optional<BuiltScene> built = build_scene(desc, sources->places(), build_options, diags, &models);
+  check_schema(*sources, diags);
   if (!built || diags.has_errors()) return std::nullopt;
-  std::vector<std::string> files{path};
+  std::vector<std::string> files = sources->paths();
   files.insert(files.end(), models.begin(), models.end());
   return LoadedScene{desc.render, std::move(built->graph), built->frame, std::move(built->scene), std::move(files)};
 }

@@ -20,20 +20,20 @@ namespace rt {
 // One refinement of the picture: the film of a stage (the first, coarse one smaller than the
 // image), and what it took.
 struct PreviewImage {
-  Film film;                // with the first hit's layers
+  Film film;                   // with the first hit's layers
   uint64_t scene_version = 0;  // of the load it shows (PreviewStatus::scene_version)
-  int width = 0;            // of the image the film previews
+  int width = 0;               // of the image the film previews
   int height = 0;
-  int frame = 0;            // of the scene's animation
-  int samples = 0;          // a pixel's samples so far (the path tracer's passes), or rays per pixel
-  int target_samples = 0;   // the path tracer: the most a pixel takes; else 0
-  std::string stage;        // "coarse", "draft", "final" or "pass"
-  bool last = false;        // nothing refines it further
-  double seconds = 0.0;     // since the change that made this scene version was seen
-  uint64_t rays = 0;        // traced for it, since then
-  bool radiance = true;     // false: a debug view (its values are data, never tone mapped)
-  bool path_traced = false; // its refinement map is the samples a pixel took
-  DisplayTransform display; // the scene's own exposure and tone map: the page's defaults
+  int frame = 0;             // of the scene's animation
+  int samples = 0;           // a pixel's samples so far (the path tracer's passes), or rays per pixel
+  int target_samples = 0;    // the path tracer: the most a pixel takes; else 0
+  std::string stage;         // "coarse", "draft", "final" or "pass"
+  bool last = false;         // nothing refines it further
+  double seconds = 0.0;      // since the change that made this scene version was seen
+  uint64_t rays = 0;         // traced for it, since then
+  bool radiance = true;      // false: a debug view (its values are data, never tone mapped)
+  bool path_traced = false;  // its refinement map is the samples a pixel took
+  DisplayTransform display;  // the scene's own exposure and tone map: the page's defaults
 };
 
 // What the page polls: everything but the pixels.
@@ -43,12 +43,12 @@ struct PreviewStatus {
   std::shared_ptr<const PreviewImage> image;
   std::vector<Diagnostic> problems;  // of the last load (errors: the image is the last good one's)
   bool load_failed = false;
-  std::string scene;                       // the file, as named
-  std::string reload;                      // what the last reload did, in words
-  double first_image_seconds = -1.0;       // from the change seen to this version's first image
-  int first_frame = 0, last_frame = 0;     // the scene's timeline
+  std::string scene;                    // the file, as named
+  std::string reload;                   // what the last reload did, in words
+  double first_image_seconds = -1.0;    // from the change seen to this version's first image
+  int first_frame = 0, last_frame = 0;  // the scene's timeline
   bool animated = false;
-  double rays_per_second = 0.0;            // while rendering
+  double rays_per_second = 0.0;  // while rendering
   bool rendering = false;
 };
 
@@ -65,7 +65,8 @@ class PreviewBoard {
   }
   // A load that worked: the problems are its warnings. Returns the new scene version, which the
   // images rendered from it carry.
-  uint64_t post_load(std::vector<Diagnostic> problems, std::string reload, int first_frame, int last_frame, bool animated) {
+  uint64_t post_load(std::vector<Diagnostic> problems, std::string reload, int first_frame, int last_frame,
+                     bool animated) {
     const std::lock_guard lock(mutex_);
     status_.problems = std::move(problems);
     status_.load_failed = false;

@@ -1,10 +1,10 @@
 #include "cli/watch/preview_images.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
 
 #include "cli/render/aov_layers.h"
 #include "core/render/refinement_images.h"

@@ -98,7 +98,9 @@ void PreviewRenderer::render_job(const Job& job) {
   FrameScenes frames(loaded.graph, loaded.frame, loaded.scene,
                      BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
   const Scene& scene = frames.at(job.frame);
-  const auto since_seen = [&] { return std::chrono::duration<double>(PreviewRenderer::Clock::now() - job.seen).count(); };
+  const auto since_seen = [&] {
+    return std::chrono::duration<double>(PreviewRenderer::Clock::now() - job.seen).count();
+  };
   uint64_t rays = 0;  // of the stages before this one
 
   RenderView view;

@@ -25,7 +25,8 @@ void fail_request(httplib::Response& res, int status, const std::string& why) {
 }
 
 // A number parameter in [lo, hi]; the whole text must be the number.
-std::optional<double> number_param(const httplib::Request& req, const char* key, double fallback, double lo, double hi) {
+std::optional<double> number_param(const httplib::Request& req, const char* key, double fallback, double lo,
+                                   double hi) {
   if (!req.has_param(key)) return fallback;
   const std::string text = req.get_param_value(key);
   char* end = nullptr;
@@ -166,8 +167,9 @@ void PreviewServer::routes() {
     const std::string host = req.get_header_value("Host");
     const std::string port = ":" + std::to_string(port_);
     const bool ok = host == host_ + port || host == "localhost" + port || host == "127.0.0.1" + port ||
-                    host == "[::1]" + port || (host_ == "0.0.0.0" && host.size() > port.size() &&
-                                               host.compare(host.size() - port.size(), port.size(), port) == 0);
+                    host == "[::1]" + port ||
+                    (host_ == "0.0.0.0" && host.size() > port.size() &&
+                     host.compare(host.size() - port.size(), port.size(), port) == 0);
     if (ok) return httplib::Server::HandlerResponse::Unhandled;
     fail_request(res, 403, "this server answers to " + host_ + port + " and localhost" + port + " only");
     return httplib::Server::HandlerResponse::Handled;
@@ -205,8 +207,8 @@ void PreviewServer::routes() {
     std::vector<uint8_t> exr;
     std::string error;
     if (!preview_exr(*image, exr, error)) return fail_request(res, 500, error);
-    res.set_header("Content-Disposition", "attachment; filename=\"" + download_name_ + "-" +
-                                              std::to_string(image->samples) + "spp.exr\"");
+    res.set_header("Content-Disposition",
+                   "attachment; filename=\"" + download_name_ + "-" + std::to_string(image->samples) + "spp.exr\"");
     res.set_content(reinterpret_cast<const char*>(exr.data()), exr.size(), "image/x-exr");
   });
   s.Post("/frame", [this](const httplib::Request& req, httplib::Response& res) {

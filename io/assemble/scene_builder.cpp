@@ -26,9 +26,9 @@ class Builder {
  public:
   // The scene's own materials come first, so their indices stay those of the description;
   // glTF files append theirs as they are loaded.
-  Builder(const SceneDescription& desc, const JsonDocument* source, const LoadOptions& options, Diagnostics& diags)
+  Builder(const SceneDescription& desc, PlaceFinder places, const LoadOptions& options, Diagnostics& diags)
       : desc_(desc),
-        source_(source),
+        places_(std::move(places)),
         options_(options),
         diags_(diags),
         bvh_options_{resolve_thread_count(options.threads), options.isa} {
@@ -187,7 +187,8 @@ class Builder {
   // (their nodes' pointers); empty for the light rtcli adds to a model on its own.
   std::vector<std::string> light_pointers(const SceneGraph& g) const {
     std::vector<std::string> out;
-    for (size_t i = 0; i < desc_.lights.size(); ++i) out.push_back(pointer_child("/lights", i));
+    for (size_t i = 0; i < desc_.lights.size(); ++i)
+      out.push_back(i < desc_.light_pointers.size() ? desc_.light_pointers[i] : pointer_child("/lights", i));
     for (const LightPlacement& l : file_lights_) out.push_back(pointers_[static_cast<size_t>(l.node)]);
     out.resize(g.lights.size());
     return out;
@@ -372,18 +373,18 @@ class Builder {
 
   // Reports on the scene file: at its pointers, with line:column. A model rendered on its own
   // has no scene file: its description's pointers are not the user's, so none is shown.
-  static Reporter scene_reporter(const SceneDescription& desc, const JsonDocument* source, Diagnostics& diags) {
-    if (source) return Reporter(diags, desc.path, json_places(*source));
+  static Reporter scene_reporter(const SceneDescription& desc, const PlaceFinder& places, Diagnostics& diags) {
+    if (places) return Reporter(diags, desc.path, places);
     return Reporter(diags, desc.path, {}, false);
   }
 
   const SceneDescription& desc_;
-  const JsonDocument* source_;
+  const PlaceFinder places_;
   const LoadOptions& options_;
   Diagnostics& diags_;
   const BvhBuildOptions bvh_options_;
   const size_t errors_before_ = diags_.error_count();
-  Reporter report_ = scene_reporter(desc_, source_, diags_);
+  Reporter report_ = scene_reporter(desc_, places_, diags_);
   SceneAssets assets_;
   LimitUsage usage_;
   TextureLibrary textures_{assets_.textures, options_.limits, usage_, options_.cache};
@@ -403,9 +404,9 @@ class Builder {
 
 }  // namespace
 
-std::optional<BuiltScene> build_scene(const SceneDescription& desc, const JsonDocument* source,
-                                      const LoadOptions& options, Diagnostics& diags, std::vector<std::string>* files) {
-  Builder builder(desc, source, options, diags);
+std::optional<BuiltScene> build_scene(const SceneDescription& desc, PlaceFinder places, const LoadOptions& options,
+                                      Diagnostics& diags, std::vector<std::string>* files) {
+  Builder builder(desc, std::move(places), options, diags);
   builder.add_nodes(desc.nodes, -1);
   builder.add_animation();
   // After finish(): it reads the environment image, which is an input like every other file.

@@ -13,7 +13,7 @@
 #include "core/scene_graph.h"
 #include "io/base/diagnostics.h"
 #include "io/base/load_options.h"
-#include "io/json/document.h"
+#include "io/base/reporter.h"
 #include "io/scene/description.h"
 
 namespace rt {
@@ -24,10 +24,10 @@ struct BuiltScene {
   Scene scene;    // that frame, placed; without a BVH when options.build_bvh is false
 };
 
-// `source` is the scene file the description came from, for error positions (may be null).
+// `places` finds the description's pointers in the files it came from (io/scene/scene_sources.h);
+// empty for a description the user never wrote (a model on its own): its reports show none.
 // `files`, if given, receives every file read (glTF models, their buffers, textures).
-std::optional<BuiltScene> build_scene(const SceneDescription& desc, const JsonDocument* source,
-                                      const LoadOptions& options, Diagnostics& diags,
-                                      std::vector<std::string>* files = nullptr);
+std::optional<BuiltScene> build_scene(const SceneDescription& desc, PlaceFinder places, const LoadOptions& options,
+                                      Diagnostics& diags, std::vector<std::string>* files = nullptr);
 
 }  // namespace rt

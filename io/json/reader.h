@@ -26,6 +26,9 @@ PlaceFinder json_places(const JsonDocument& doc);
 class JsonReader {
  public:
   JsonReader(const JsonDocument& doc, Diagnostics& diags) : doc_(doc), report_(diags, doc.path, json_places(doc)) {}
+  // Reports placed by `places` instead (a scene and its included files: io/scene/scene_sources.h).
+  JsonReader(const JsonDocument& doc, Diagnostics& diags, PlaceFinder places)
+      : doc_(doc), report_(diags, doc.path, std::move(places)) {}
 
   void error(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;
   void warning(const std::string& pointer, std::string message, Anchor anchor = Anchor::kValue) const;

@@ -68,8 +68,8 @@ void check_eyes(const JsonReader& r, const std::string& ptr, const CameraDescrip
 
 }  // namespace
 
-void parse_camera(const JsonReader& r, const Json& v, CameraDescription& c) {
-  ObjectReader o(r, v, "/camera");
+void parse_camera(const JsonReader& r, const Json& v, const std::string& pointer, CameraDescription& c) {
+  ObjectReader o(r, v, pointer);
   const auto position = o.vec3("position", true);
   const auto look_at = o.vec3("look_at", true);
   const auto up = o.vec3("up");

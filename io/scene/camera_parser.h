@@ -6,7 +6,7 @@
 
 namespace rt {
 
-void parse_camera(const JsonReader& r, const Json& value, CameraDescription& camera);
+void parse_camera(const JsonReader& r, const Json& value, const std::string& pointer, CameraDescription& camera);
 
 // The camera a description asks for, its defaults filled in: focus at the look-at point,
 // convergence at the focus.

@@ -109,6 +109,7 @@ struct SceneDescription {
   Vec3 ambient{0.0f};
   std::vector<MaterialDescription> materials;
   std::vector<Light> lights;
+  std::vector<std::string> light_pointers;  // per light: where it is described
   std::vector<NodeDescription> nodes;
   std::optional<AnimationDescription> animation;
   // A glTF file given alone: the camera frames the first frame's bounds, a point light sits

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,14 @@
 #include "io/scene/description.h"
 
 namespace rt {
+
+// A node under "templates", not yet parsed: it is parsed the first time a node places it, in
+// the folder of the file that defines it.
+struct TemplateSource {
+  const Json* value = nullptr;
+  std::string pointer;
+  std::string folder;
+};
 
 struct NodeParseContext {
   const JsonReader& reader;
@@ -21,6 +30,12 @@ struct NodeParseContext {
   // of those gives a material (then a shape operand may go without its own).
   int csg_depth = 0;
   bool csg_material = false;
+  // Templates by name (the last file's definition), those parsed so far (empty: it failed),
+  // and those being parsed (to refuse a template that places itself).
+  std::map<std::string, TemplateSource> templates;
+  std::map<std::string, std::optional<NodeDescription>> parsed_templates;
+  std::vector<std::string> template_stack;
+  int in_template = 0;  // > 0: parsing a template, whose shapes may take their material where placed
 };
 
 // depth: how many node levels enclose this array (0 for the top-level "nodes").

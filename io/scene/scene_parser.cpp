@@ -1,6 +1,8 @@
 #include "io/scene/scene_parser.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "io/base/input_file.h"
 #include "io/json/locate.h"
@@ -70,8 +72,9 @@ std::optional<EnvironmentReference> parse_environment(const JsonReader& r, const
   return e;
 }
 
-void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options, RenderSettings& s) {
-  ObjectReader o(r, v, "/render");
+void parse_render(const JsonReader& r, const Json& v, const std::string& ptr, const LoadOptions& options,
+                  RenderSettings& s) {
+  ObjectReader o(r, v, ptr);
   if (const auto w = o.number("width", kImageSize)) s.width = static_cast<int>(*w);
   if (const auto h = o.number("height", kImageSize)) s.height = static_cast<int>(*h);
   if (const auto d = o.number("max_depth", kMaxDepth)) s.max_depth = static_cast<int>(*d);
@@ -99,14 +102,18 @@ void parse_render(const JsonReader& r, const Json& v, const LoadOptions& options
   if (const Json* aa = o.get("antialias"))
     parse_antialias(r, *aa, o.child("antialias"), options.pixel_samplers, s.antialias);
   o.finish();
+}
+
+// The image's size once every file's render block is read: at the last one (ptr).
+void check_render_size(const JsonReader& r, const RenderSettings& s, const std::string& ptr) {
   if (pixel_count(s) > kMaxPixels) {
-    r.error("/render",
+    r.error(ptr,
             "expected at most " + std::to_string(kMaxPixels) + " pixels (width x height), found " +
                 std::to_string(s.width) + " x " + std::to_string(s.height) + " = " + std::to_string(pixel_count(s)) +
                 " (docs/errors-and-limits.md, \"Limits\")",
             Anchor::kKey);
   } else if (max_camera_rays_per_frame(s) > kCameraRaysWarning) {
-    r.warning("/render",
+    r.warning(ptr,
               "this render can trace up to " + std::to_string(max_camera_rays_per_frame(s)) +
                   " camera rays per frame (pixels x the most rays per pixel); expect it to take a long time",
               Anchor::kKey);
@@ -143,16 +150,17 @@ void parse_texture_slots(const JsonReader& r, ObjectReader& o, const std::string
   }
 }
 
-std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json& v, const std::string& folder) {
-  std::vector<MaterialDescription> out;
+// A file's materials, each replacing one of the same name from an earlier file.
+void parse_materials(const JsonReader& r, const Json& v, const std::string& ptr, const std::string& folder,
+                     std::vector<MaterialDescription>& out) {
   if (!v.is_object()) {
-    r.expected("/materials", "an object mapping material names to materials", v);
-    return out;
+    r.expected(ptr, "an object mapping material names to materials", v);
+    return;
   }
   for (const auto& item : v.items()) {
     MaterialDescription m;
     m.name = item.key();
-    ObjectReader o(r, item.value(), pointer_child("/materials", item.key()));
+    ObjectReader o(r, item.value(), pointer_child(ptr, item.key()));
     Material& mat = m.material;
     if (const auto kd = o.color("kd")) mat.kd = *kd;
     if (const auto ks = o.color("ks")) mat.ks = *ks;
@@ -182,9 +190,11 @@ std::vector<MaterialDescription> parse_materials(const JsonReader& r, const Json
     }
     parse_texture_slots(r, o, folder, m);
     o.finish();
-    out.push_back(std::move(m));
+    const auto same =
+        std::find_if(out.begin(), out.end(), [&](const MaterialDescription& d) { return d.name == m.name; });
+    if (same != out.end()) *same = std::move(m);
+    else out.push_back(std::move(m));
   }
-  return out;
 }
 
 std::optional<Attenuation> parse_attenuation(const JsonReader& r, ObjectReader& o) {
@@ -241,14 +251,17 @@ std::optional<SpotLight> parse_spot_light(const JsonReader& r, ObjectReader& o, 
   return light;
 }
 
-std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
-  std::vector<Light> out;
+// A file's lights, after those of earlier files; `pointers` gets each one's.
+void parse_lights(const JsonReader& r, const Json& v, const std::string& ptr, std::vector<Light>& out,
+                  std::vector<std::string>& pointers) {
   if (!v.is_array()) {
-    r.expected("/lights", "an array of lights", v);
-    return out;
+    r.expected(ptr, "an array of lights", v);
+    return;
   }
   for (size_t i = 0; i < v.size(); ++i) {
-    ObjectReader o(r, v[i], pointer_child("/lights", i));
+    pointers.resize(out.size());  // a light in error adds none
+    pointers.push_back(pointer_child(ptr, i));
+    ObjectReader o(r, v[i], pointer_child(ptr, i));
     std::optional<size_t> type;
     if (const Json* t = o.get("type", true, "\"point\", \"rect\", \"spot\" or \"directional\""))
       type = read_choice(r, *t, o.child("type"), {"point", "rect", "spot", "directional"});
@@ -302,45 +315,85 @@ std::vector<Light> parse_lights(const JsonReader& r, const Json& v) {
       out.emplace_back(light);
     }
   }
-  return out;
+  pointers.resize(out.size());
 }
 
 }  // namespace
 
-std::optional<SceneDescription> parse_scene(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
+std::optional<SceneDescription> parse_scene(const SceneSources& sources, const LoadOptions& options,
+                                            Diagnostics& diags) {
   const size_t errors_before = diags.error_count();
-  SceneDescription scene = parse_scene_partial(doc, options, diags);
+  SceneDescription scene = parse_scene_partial(sources, options, diags);
   if (diags.error_count() > errors_before) return std::nullopt;
   return scene;
 }
 
-SceneDescription parse_scene_partial(const JsonDocument& doc, const LoadOptions& options, Diagnostics& diags) {
-  const JsonReader r(doc, diags);
+SceneDescription parse_scene_partial(const SceneSources& sources, const LoadOptions& options, Diagnostics& diags) {
+  const JsonReader r(sources.scene().doc, diags, sources.places());
   SceneDescription scene;
-  scene.path = doc.path;
-  ObjectReader top(r, doc.root, "");
-  top.get("$schema");  // editors use it to find the schema; we don't need it
-  if (const Json* v = top.get("render")) parse_render(r, *v, options, scene.render);
-  if (const Json* v = top.get("camera", true, "an object with position, look_at, up and fov"))
-    parse_camera(r, *v, scene.camera);
-  const std::string folder = std::filesystem::path(doc.path).parent_path().string();
-  if (const Json* bg = top.get("background")) {
-    if (bg->is_object()) {
-      scene.environment = parse_environment(r, *bg, "/background", folder);
-    } else if (const auto c = read_color(r, *bg, "/background")) {
-      scene.background = *c;
+  scene.path = sources.scene().doc.path;
+  // Every file's keys but its nodes, included files first: a later file's value wins (a
+  // material or template by name, each render setting by key; lights add up).
+  std::optional<std::string> render_at, camera_at;
+  std::map<std::string, TemplateSource> templates;
+  struct NodeList {
+    const Json* nodes;
+    std::string pointer, folder;
+  };
+  std::vector<NodeList> node_lists;
+  for (const auto& file : sources.files()) {
+    const std::string& folder = file->folder;
+    ObjectReader top(r, file->doc.root, file->prefix);
+    top.get("$schema");  // editors use it to find the schema; we don't need it
+    top.get("include");  // read with the file (io/scene/scene_sources.h)
+    if (const Json* v = top.get("render")) {
+      parse_render(r, *v, top.child("render"), options, scene.render);
+      render_at = top.child("render");
     }
+    if (const Json* v = top.get("camera")) {
+      scene.camera = CameraDescription{};
+      parse_camera(r, *v, top.child("camera"), scene.camera);
+      camera_at = top.child("camera");
+    }
+    if (const Json* bg = top.get("background")) {
+      scene.environment.reset();
+      scene.background = Vec3(0.0f);
+      if (bg->is_object()) {
+        scene.environment = parse_environment(r, *bg, top.child("background"), folder);
+      } else if (const auto c = read_color(r, *bg, top.child("background"))) {
+        scene.background = *c;
+      }
+    }
+    if (const auto ambient = top.color("ambient")) scene.ambient = *ambient;
+    if (const Json* v = top.get("materials")) parse_materials(r, *v, top.child("materials"), folder, scene.materials);
+    if (const Json* v = top.get("lights")) parse_lights(r, *v, top.child("lights"), scene.lights, scene.light_pointers);
+    if (const Json* v = top.get("templates")) {
+      if (!v->is_object()) {
+        r.expected(top.child("templates"), "an object mapping template names to nodes", *v);
+      } else {
+        for (const auto& item : v->items())
+          templates[item.key()] =
+              TemplateSource{&item.value(), pointer_child(top.child("templates"), item.key()), folder};
+      }
+    }
+    if (const Json* v = top.get("nodes")) node_lists.push_back(NodeList{v, top.child("nodes"), folder});
+    if (const Json* v = top.get("animation"))
+      scene.animation = parse_animation(r, *v, top.child("animation"), options.limits.animation_keys);
+    top.finish();
   }
-  if (const auto ambient = top.color("ambient")) scene.ambient = *ambient;
-  if (const Json* v = top.get("materials")) scene.materials = parse_materials(r, *v, folder);
-  if (const Json* v = top.get("lights")) scene.lights = parse_lights(r, *v);
-  if (const Json* v = top.get("nodes", true, "an array of nodes")) {
-    NodeParseContext ctx{r, folder, scene.materials, {}, options.limits.nodes, 0};
-    scene.nodes = parse_nodes(ctx, *v, "/nodes");
+  // Required of the scene with its includes together; reported on the scene file.
+  ObjectReader scene_top(r, sources.scene().doc.root, sources.scene().prefix);
+  if (!camera_at) scene_top.get("camera", true, "an object with position, look_at, up and fov");
+  if (node_lists.empty()) scene_top.get("nodes", true, "an array of nodes");
+  check_render_size(r, scene.render, render_at.value_or(""));
+  // The nodes, once every material and template is known.
+  NodeParseContext ctx{r, "", scene.materials, {}, options.limits.nodes, 0};
+  ctx.templates = std::move(templates);
+  for (const NodeList& list : node_lists) {
+    ctx.scene_folder = list.folder;
+    std::vector<NodeDescription> nodes = parse_nodes(ctx, *list.nodes, list.pointer);
+    for (NodeDescription& n : nodes) scene.nodes.push_back(std::move(n));
   }
-  if (const Json* v = top.get("animation"))
-    scene.animation = parse_animation(r, *v, "/animation", options.limits.animation_keys);
-  top.finish();
   return scene;
 }
 

@@ -67,7 +67,8 @@ TEST_CASE("cli: a misspelt command, option or option value gets the nearest real
   // Nothing near: no guess, and the list of what there is.
   const Run far = rtcli("frobnicate");
   CHECK(far.code == 2);
-  CHECK_THAT(far.output, Catch::Contains("unknown command \"frobnicate\"; expected one of: render, validate, bench"));
+  CHECK_THAT(far.output,
+             Catch::Contains("unknown command \"frobnicate\"; expected one of: render, watch, validate, bench"));
 }
 
 TEST_CASE("cli: render writes the PNG, prints a summary and where it wrote", "[cli]") {

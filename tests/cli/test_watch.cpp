@@ -168,9 +168,10 @@ std::string page_dom(const WatchProcess& w, const std::string& screenshot = "") 
 
 }  // namespace
 
-TEST_CASE("cli: watch shows the render refining, follows edits saved by rename, shows errors located, and stops on "
-          "Ctrl-C",
-          "[cli][watch]") {
+TEST_CASE(
+    "cli: watch shows the render refining, follows edits saved by rename, shows errors located, and stops on "
+    "Ctrl-C",
+    "[cli][watch]") {
   const std::string folder = rt::test::fresh_folder("watch");
   const std::string scene = folder + "/ball.json";
   std::ofstream(scene) << watch_scene("[0.8, 0.1, 0.1]");
@@ -212,7 +213,7 @@ TEST_CASE("cli: watch shows the render refining, follows edits saved by rename, 
   CHECK_THAT(problem, Catch::Contains("^"));  // the excerpt with its caret
   CHECK(s["image"]["scene_version"] == 2);
   c = w.centre(folder);
-  CHECK(c[2] > 2 * c[0]);  // still the blue one
+  CHECK(c[2] > 2 * c[0]);                                            // still the blue one
   CHECK_THAT(w.output(), Catch::Contains("ball.json:6:43: error"));  // the terminal says it too
   const std::string error_dom = page_dom(w, folder + "/watch-3-error.png");
   if (!error_dom.empty()) {

@@ -133,9 +133,11 @@ std::string scene_json(const uint8_t* data, size_t size) {
   auto doc = parse_json_text(std::string(RTCLI_SOURCE_DIR) + "/scenes/fuzz.json",
                              std::string(reinterpret_cast<const char*>(data), size), diags);
   if (!doc) return diags.has_errors() ? "" : "a rejected document came with no error";
-  auto desc = parse_scene(*doc, options, diags);
+  // Its includes are not read (the fuzzer reads no files it did not write); the rest is the scene.
+  const SceneSources sources(std::move(*doc));
+  auto desc = parse_scene(sources, options, diags);
   if (!desc) return diags.has_errors() ? "" : "a rejected scene came with no error";
-  auto scene = build_scene(*desc, &*doc, options, diags);
+  auto scene = build_scene(*desc, sources.places(), options, diags);
   if (!scene) return diags.has_errors() ? "" : "a scene that failed to build came with no error";
   if (const std::string problem = scene->scene.bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
   for (const MeshGeometry& g : scene->graph.assets->meshes)
@@ -309,9 +311,10 @@ std::string texture_file(const uint8_t* data, size_t size) {
   Diagnostics diags;
   auto doc = parse_json_text((folder / "scene.json").string(), scene, diags);
   if (!doc) return "the texture_file target's scene does not parse";
-  auto desc = parse_scene(*doc, options, diags);
+  const SceneSources sources(std::move(*doc));
+  auto desc = parse_scene(sources, options, diags);
   if (!desc) return "the texture_file target's scene is refused";
-  auto built = build_scene(*desc, &*doc, options, diags);
+  auto built = build_scene(*desc, sources.places(), options, diags);
   if (!built) return diags.has_errors() ? "" : "a scene whose texture failed came with no error";
   RenderSettings settings = desc->render;
   settings.width = settings.height = 4;
