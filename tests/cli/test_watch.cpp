@@ -299,3 +299,39 @@ TEST_CASE("cli: watch refuses what it cannot serve", "[cli][watch]") {
   CHECK(bad.code == 1);
   CHECK_THAT(bad.output, Catch::Contains("could not listen on 203.0.113.1"));
 }
+
+TEST_CASE("cli: watch follows the files a scene includes and its textures", "[cli][watch][include]") {
+  const std::string folder = rt::test::fresh_folder("watch-include");
+  std::filesystem::copy_file(rt::test::source_path("scenes/textures/checker.png"), folder + "/paint.png");
+  std::ofstream(folder + "/paint.json") << R"({"materials": {"floor": {"kd": 0.6}, "ball": {"kd": [0.8, 0.1, 0.1]}}})";
+  const std::string scene = folder + "/ball.json";
+  std::ofstream(scene) << R"({
+  "include": ["paint.json"],
+  "render": {"width": 160, "height": 120},
+  "camera": {"position": [0, 1, 5], "look_at": [0, 0.6, 0], "fov": 40},
+  "materials": {"floor": {"texture": "paint.png"}},
+  "lights": [{"type": "point", "position": [3, 4, 3], "intensity": 1}],
+  "nodes": [
+    {"shape": "sphere", "material": "ball", "transform": {"translate": [0, 0.8, 0], "scale": 0.8}},
+    {"shape": "plane", "material": "floor", "transform": {"scale": 5}}
+  ]
+})";
+  WatchProcess w(scene, folder);
+  w.wait_for([](const Json& j) { return finished(j, 1); }, "the first render");
+  auto c = w.centre(folder);
+  CHECK(c[0] > 2 * c[2]);  // red, from the included file
+  save_by_rename(folder + "/paint.json",
+                 R"({"materials": {"floor": {"kd": 0.6}, "ball": {"kd": [0.1, 0.1, 0.8]}}})");
+  Json s = w.wait_for([](const Json& j) { return finished(j, 2); }, "the included file's change");
+  CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("paint.json changed"));
+  CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("1 file kept, 0 read"));  // the texture
+  c = w.centre(folder);
+  CHECK(c[2] > 2 * c[0]);  // blue
+  // The texture replaced: read again, the rest kept.
+  std::filesystem::copy_file(rt::test::source_path("scenes/textures/uv_grid.png"), folder + "/paint.new.png");
+  std::filesystem::rename(folder + "/paint.new.png", folder + "/paint.png");
+  s = w.wait_for([](const Json& j) { return finished(j, 3); }, "the texture's change");
+  CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("paint.png changed; loaded in"));
+  CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("0 files kept, 1 read"));
+  CHECK(w.interrupt(5.0) == 0);
+}
