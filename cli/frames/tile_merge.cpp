@@ -198,7 +198,7 @@ std::optional<ExrImage> merge_tiles(const std::vector<std::string>& paths, std::
   out.attributes[exr_key::kCrop] = "0,0," + std::to_string(first.width) + "," + std::to_string(first.height);
   out.attributes.erase(exr_key::kTile);
   for (const ExrLayer& l : first.layers)
-    out.layers.push_back(ExrLayer{l.name, l.channels, std::vector<float>(all * l.channels.size())});
+    out.layers.push_back(ExrLayer{l.name, l.channels, std::vector<float>(all * l.channels.size()), l.exact});
   for (const ExrImage& t : tiles) {
     const PixelWindow& w = t.window;
     for (size_t k = 0; k < out.layers.size(); ++k) {

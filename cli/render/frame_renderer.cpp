@@ -9,6 +9,7 @@
 #include "cli/common/interrupt.h"
 #include "cli/common/progress_bar.h"
 #include "cli/render/aov_layers.h"
+#include "cli/render/sample_state.h"
 #include "core/denoise/denoiser.h"
 #include "core/frame_scenes.h"
 #include "core/render/integrator.h"
@@ -61,9 +62,11 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       control.cancel = &interrupt.flag();
       control.time_limit = job.time_limit;
       // EXR layers come from the same pass as the colour (no stereo with EXR: checked before).
-      const RenderView view =
-          stereo.enabled() ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
-                           : RenderView{nullptr, 0, content.window, !content.aovs.empty() || denoiser != nullptr};
+      RenderView view = stereo.enabled()
+                            ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
+                            : RenderView{nullptr, 0, content.window, !content.aovs.empty() || denoiser != nullptr};
+      if (content.resume) view.resume_from = &*content.resume;
+      view.keep_sums = content.keep_sums;
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
       if (totals.last.cancelled) {
@@ -99,6 +102,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       if (denoiser) exr.layers.push_back(color_layer(film.color, "raw"));
       for (const std::string& aov : content.aovs)
         exr.layers.push_back(aov_layer(film, *find_aov(aov)));  // checked by render_plan
+      if (!film.sums.empty())
+        for (ExrLayer& l : sample_state_layers(film.sums, film.has_aovs())) exr.layers.push_back(std::move(l));
       exr.attributes = render_attributes(content.identity, frame, exr.window);
       const SignalBlock block;
       if (!sinks[0].add_exr(exr, frame, content.exr_float, error)) {

@@ -12,6 +12,7 @@
 #include "cli/render/render_job.h"
 #include "core/render/film.h"
 #include "core/render/renderer.h"
+#include "core/render/sample_sums.h"
 #include "io/scene_loader.h"
 
 namespace rt {
@@ -37,6 +38,10 @@ struct FrameContent {
   std::string denoiser;           // denoise each frame with this (an EXR keeps the raw one as "raw"); empty: no
   bool exr_float = false;         // full floats, not half
   RenderIdentity identity;        // the EXR metadata (cli/frames/render_metadata.h)
+  // The path tracer: the sums of an earlier render to go on from (--resume), and whether the
+  // EXR keeps this render's (so that it can be continued in turn).
+  std::optional<SampleState> resume;
+  bool keep_sums = false;
 };
 
 // `sinks`: one output, or two (left, right) for stereo mode "pair". An exit code if it must stop

@@ -64,6 +64,7 @@ struct RenderCommand {
   std::optional<std::string> aov;       // EXR output: layers beside the colour, any of albedo,normal,depth,variance
   bool denoise = false;                 // --denoise: the image denoised (an EXR keeps the raw one as layer "raw")
   std::optional<std::string> denoiser;  // --denoiser NAME (implies --denoise)
+  std::optional<std::string> resume;    // --resume FILE.exr: add samples to that render (cli/render/resume_plan.h)
   bool quiet = false;
 };
 

@@ -99,6 +99,11 @@ bool read_output(const RenderCommand& cmd, RenderJob& job) {
     return fail(
         "--chunk renders a share of the frames: write them as numbered files (-o NAME_####.png or "
         "NAME_####.exr), then join them with rtcli encode");
+  if (!job.resume.empty() && (stereo || job.chunk || is_sequence(job.kind) || job.kind == OutputKind::kGif))
+    return fail("--resume continues one frame's render into one image; it does not go with " +
+                std::string(stereo      ? "--stereo"
+                            : job.chunk ? "--chunk"
+                                        : "\"" + job.output + "\""));
   if ((job.crop || job.tile) && (job.aa_debug || job.samples_debug))
     return fail(std::string(job.aa_debug ? "--aa-debug" : "--samples-debug") +
                 " shows the whole image; it does not go with " + (job.crop ? "--crop" : "--tile"));
@@ -142,6 +147,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   job.stats = cmd.stats;
   job.skip_existing = cmd.skip_existing;
   job.time_limit = cmd.time.value_or(0.0);
+  job.resume = cmd.resume.value_or("");
   job.exr_float = cmd.exr_float;
   if (cmd.denoise || cmd.denoiser) job.denoiser = cmd.denoiser.value_or(std::string(denoisers().entries()[0].name));
   job.aa_debug = cmd.aa_debug;

@@ -49,6 +49,7 @@ struct RenderJob {
   // --denoise: the denoiser's name, empty for none (cli/render/render_plan.h says where it runs).
   std::string denoiser;
   double time_limit = 0.0;  // --time: seconds per frame (0: none)
+  std::string resume;       // --resume: the EXR of the render to continue; empty: none
   // Images written beside a PNG: --aa-debug's two, --samples-debug's one.
   bool aa_debug = false, samples_debug = false;
   bool dither = false;  // GIF frames: Floyd-Steinberg error diffusion

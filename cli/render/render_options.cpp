@@ -127,6 +127,9 @@ void add_render_options(CLI::App& cmd, RenderCommand& r) {
                "Denoise the image with its first hits' albedo, normal and depth and each pixel's variance "
                "(path tracer); an EXR keeps the raw image as layer \"raw\"; a --crop or --tile EXR gets the "
                "layers the denoiser needs, for rtcli merge --denoise");
+  cmd.add_option("--resume", r.resume,
+                 "Path tracer: add samples to an earlier render of the same scene and settings (its EXR, which holds "
+                 "each pixel's sums): --spp is the total; the pixels are those of one render of them all");
   cmd.add_option("--denoiser", r.denoiser, "Which denoiser --denoise uses: " + denoisers().help());
   cmd.add_option("--stats", r.stats,
                  "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");

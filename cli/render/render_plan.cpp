@@ -7,8 +7,10 @@
 #include "cli/frames/render_metadata.h"
 #include "cli/frames/render_share.h"
 #include "cli/render/aov_layers.h"
+#include "cli/render/resume_plan.h"
 #include "cli/render/settings_text.h"
 #include "core/render/band_split.h"
+#include "core/render/integrator.h"
 
 namespace rt {
 namespace {
@@ -67,7 +69,7 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
       plan.content.denoiser = job.denoiser;
     }
   }
-  if (is_exr(kind)) {
+  if (is_exr(kind) || !job.resume.empty()) {
     RenderIdentity& id = plan.content.identity;
     id.scene = job.scene;
     id.scene_hash = hash_files(loaded.inputs);
@@ -75,6 +77,17 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
     id.seed = settings.seed;
     id.display = settings.display;
     id.fps = loaded.graph.timeline.fps;
+  }
+  // The path tracer's EXR keeps each pixel's sums, for a later --resume.
+  plan.content.keep_sums = is_exr(kind) && integrator_samples_pixels(settings.integrator) && !stereo.enabled();
+  if (!job.resume.empty()) {
+    if (plan.frames.count() != 1) return fail("--resume continues one frame's render: give --frame N"), std::nullopt;
+    const PixelWindow window =
+        plan.content.window.empty() ? PixelWindow{0, 0, settings.width, settings.height} : plan.content.window;
+    const bool layers = !plan.content.aovs.empty() || !plan.content.denoiser.empty();
+    plan.content.resume =
+        resume_state(job.resume, plan.content.identity, plan.frames.frames[0], window, settings, layers);
+    if (!plan.content.resume) return std::nullopt;
   }
   if (job.skip_existing) {
     FrameList left;

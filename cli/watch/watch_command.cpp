@@ -89,9 +89,9 @@ class WatchSession {
     std::string reload;
     char buf[160];
     // Kept: what an earlier load had read from files that did not change (models with their BVHs,
-  // textures, environment images); read: those read afresh.
-  std::snprintf(buf, sizeof buf, "loaded in %.2f s: %d file%s kept, %d read", seconds_since(seen), counts.kept,
-                counts.kept == 1 ? "" : "s", counts.read);
+    // textures, environment images); read: those read afresh.
+    std::snprintf(buf, sizeof buf, "loaded in %.2f s: %d file%s kept, %d read", seconds_since(seen), counts.kept,
+                  counts.kept == 1 ? "" : "s", counts.read);
     reload = buf;
     if (!changed.empty()) {
       reload = std::filesystem::path(changed.front()).filename().string() +

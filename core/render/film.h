@@ -11,6 +11,7 @@
 
 #include "core/image.h"
 #include "core/render/aovs.h"
+#include "core/render/sample_sums.h"
 #include "core/render/tile_grid.h"
 
 namespace rt {
@@ -54,7 +55,9 @@ struct Film {
   Image albedo, normal, emission;
   std::vector<float> distance;
   std::vector<float> variance;  // FilmPixel::variance, beside the layers
-  int x0 = 0, y0 = 0;           // where the film's first pixel is in the image
+  // The path tracer's sums per pixel, when the render kept them (RenderView::keep_sums); else empty.
+  SampleState sums;
+  int x0 = 0, y0 = 0;  // where the film's first pixel is in the image
 
   Film() = default;
   Film(int width, int height) { allocate(width, height, nullptr); }
@@ -74,6 +77,7 @@ struct Film {
     emission.pixels.clear();
     distance.clear();
     variance.clear();
+    sums.clear();
     color.pixels.reserve(n);
     samples.reserve(n);
     depth.reserve(n);

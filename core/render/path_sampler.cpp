@@ -59,6 +59,31 @@ FilmPixel PathSampler::sample_pixel(int x, int y, PixelState& state, int end, Pi
                    mean_variance(state.luminance, state.luminance_squares, n)};
 }
 
+bool PathSampler::resume(SampleState state, const PixelWindow& window) {
+  if (state.size() != window.pixels()) return false;
+  window_ = window;
+  states_ = std::move(state);
+  // A pixel that one render of all the samples would have stopped where the earlier render
+  // ended (its last check came at its own last sample, which was not a check) stops now.
+  const int spp = std::max(1, settings_.samples_per_pixel);
+  for (PixelState& p : states_)
+    if (settings_.noise_threshold > 0.0f && !p.stopped && p.n >= kMinSamples && p.n < spp &&
+        pixel_relative_error(p.luminance, p.luminance_squares, p.n) < settings_.noise_threshold)
+      p.stopped = true;
+  return true;
+}
+
+int PathSampler::resumed_samples() const {
+  int fewest = 0;
+  bool any = false;
+  for (const PixelState& p : states_)
+    if (!p.stopped && p.n < settings_.samples_per_pixel) {
+      fewest = any ? std::min(fewest, p.n) : p.n;
+      any = true;
+    }
+  return fewest;
+}
+
 bool PathSampler::begin_pass(int samples_end, const PixelWindow& window) {
   if (states_.empty()) {
     window_ = window;

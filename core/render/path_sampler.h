@@ -10,6 +10,7 @@
 #pragma once
 
 #include "core/render/pixel_sampler.h"
+#include "core/render/sample_sums.h"
 
 namespace rt {
 
@@ -29,14 +30,11 @@ class PathSampler final : public PixelSampler {
   bool renders_passes() const override { return true; }
   bool begin_pass(int samples_end, const PixelWindow& window) override;
 
-  // What a pixel has gathered so far.
-  struct PixelState {
-    Vec3 sum{0.0f};
-    Aovs layers;  // summed
-    double luminance = 0.0, luminance_squares = 0.0;
-    int n = 0;
-    bool stopped = false;  // by the noise threshold
-  };
+  bool resume(SampleState state, const PixelWindow& window) override;
+  int resumed_samples() const override;
+  const SampleState* sums() const override { return states_.empty() ? nullptr : &states_; }
+
+  using PixelState = SampleSums;
 
  private:
   // Adds samples to the pixel up to `end` (fewer if the noise threshold stops it); its film value.
@@ -44,7 +42,7 @@ class PathSampler final : public PixelSampler {
 
   PathSettings settings_;
   // Passes: the pixels' states, row-major over the window, and where this pass stops.
-  std::vector<PixelState> states_;
+  SampleState states_;
   PixelWindow window_;
   int pass_end_ = 0;
 };

@@ -13,6 +13,7 @@
 #include "core/pixel_window.h"
 #include "core/render/film.h"
 #include "core/render/integrator.h"
+#include "core/render/sample_sums.h"
 #include "core/render/tile_grid.h"
 
 namespace rt {
@@ -58,6 +59,13 @@ class PixelSampler {
   // `window`. False when no pixel would take another sample.
   virtual bool renders_passes() const { return false; }
   virtual bool begin_pass(int /*samples_end*/, const PixelWindow& /*window*/) { return false; }
+  // Continuing an earlier render (RenderView::resume_from): its pixels' sums, one per pixel of
+  // `window`, from which the passes go on; false if the sampler cannot (or the sizes differ).
+  virtual bool resume(SampleState /*state*/, const PixelWindow& /*window*/) { return false; }
+  // The fewest samples a pixel of a resumed render has that will take more (0 when none was given).
+  virtual int resumed_samples() const { return 0; }
+  // The pixels' sums after the passes so far; null for a sampler that keeps none.
+  virtual const SampleState* sums() const { return nullptr; }
 };
 
 // The sampler registered under settings.antialias.mode, for an image cut into `grid` (the path

@@ -86,14 +86,20 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     });
   };
   RenderStats stats;
+  const bool resumed = view.resume_from != nullptr;
+  if ((resumed || view.keep_sums) && !sampler->renders_passes())
+    throw std::invalid_argument("this integrator keeps no sample sums to resume from");
+  if (resumed && !sampler->resume(*view.resume_from, window))
+    throw std::invalid_argument("the sample sums to resume from are not the window's");
   if ((control.time_limit > 0.0 || control.pass_done) && sampler->renders_passes()) {
     // Passes of kPassSamples samples a pixel, each finished whole and stored: the film always
     // holds the image so far. Another pass starts only if one as long as the last still ends in
     // time, so the render stops near the limit with whole passes.
-    int end = 0;
-    while (!stopped) {
+    int end = sampler->resumed_samples() / kPassSamples * kPassSamples;
+    // A resumed render's first pass runs even when no pixel takes a sample: it writes the film.
+    for (bool first = true; !stopped; first = false) {
       end += kPassSamples;
-      if (!sampler->begin_pass(end, window)) break;
+      if (!sampler->begin_pass(end, window) && !(first && resumed)) break;
       const double before = elapsed();
       run_pass();
       if (stopped) break;
@@ -103,9 +109,15 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
       if (control.time_limit > 0.0 && elapsed() + took > control.time_limit) break;
     }
     stats.time_limited = !stopped && sampler->begin_pass(end + kPassSamples, window);
+  } else if (resumed || view.keep_sums) {
+    // One pass to every sample, the sampler keeping each pixel's sums (a pixel that has all
+    // its samples already is written from its sums).
+    sampler->begin_pass(settings.path.samples_per_pixel, window);
+    run_pass();
   } else {
     run_pass();
   }
+  if (view.keep_sums && !stopped && sampler->sums()) film.sums = *sampler->sums();
 
   stats.seconds = elapsed();
   stats.threads = threads;

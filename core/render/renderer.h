@@ -12,6 +12,7 @@
 #include "core/pixel_window.h"
 #include "core/render/film.h"
 #include "core/render/ray_counters.h"
+#include "core/render/sample_sums.h"
 #include "core/render_settings.h"
 #include "core/scene.h"
 #include "core/thread_count.h"
@@ -64,6 +65,11 @@ struct RenderView {
   uint32_t eye = 0;
   PixelWindow window;
   bool aovs = false;
+  // The path tracer: go on from an earlier render's sums of the same window (render --resume),
+  // and/or keep the sums in Film::sums for a later one. A render of the same scene and
+  // settings with more samples then gives the bits one render of them all gives.
+  const SampleState* resume_from = nullptr;
+  bool keep_sums = false;
 };
 
 // Renders frame `frame` into `film` (resized to the view's window of the settings.width x

@@ -107,7 +107,6 @@ bool write_exr(const std::string& path, const ExrImage& image, bool full_float, 
                        Imath::Box2i(Imath::V2i(w.x0, w.y0), Imath::V2i(w.x1 - 1, w.y1 - 1)));
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const auto& [key, value] : image.attributes) header.insert(key, Imf::StringAttribute(value));
-    const Imf::PixelType type = full_float ? Imf::FLOAT : Imf::HALF;
     Imf::FrameBuffer frame;
     const size_t pixels = static_cast<size_t>(w.pixels());
     // Half channels are converted here (round to nearest): OpenEXR writes a slice as its own type.
@@ -119,17 +118,17 @@ bool write_exr(const std::string& path, const ExrImage& image, bool full_float, 
         error = path + ": layer \"" + layer.name + "\" has the wrong number of values";
         return false;
       }
-      if (!full_float) halves.emplace_back(layer.values.begin(), layer.values.end());
+      const bool floats = full_float || layer.exact;
+      if (!floats) halves.emplace_back(layer.values.begin(), layer.values.end());
       for (size_t c = 0; c < n; ++c) {
-        header.channels().insert(channel_name(layer, layer.channels[c]), Imf::Channel(type));
+        header.channels().insert(channel_name(layer, layer.channels[c]), Imf::Channel(floats ? Imf::FLOAT : Imf::HALF));
         // OpenEXR addresses a slice by the data window's absolute coordinates (Slice::Make).
         frame.insert(
             channel_name(layer, layer.channels[c]),
-            full_float
-                ? Imf::Slice::Make(Imf::FLOAT, layer.values.data() + c, header.dataWindow(), sizeof(float) * n,
-                                   sizeof(float) * n * static_cast<size_t>(w.width()))
-                : Imf::Slice::Make(Imf::HALF, halves.back().data() + c, header.dataWindow(), sizeof(Imath::half) * n,
-                                   sizeof(Imath::half) * n * static_cast<size_t>(w.width())));
+            floats ? Imf::Slice::Make(Imf::FLOAT, layer.values.data() + c, header.dataWindow(), sizeof(float) * n,
+                                      sizeof(float) * n * static_cast<size_t>(w.width()))
+                   : Imf::Slice::Make(Imf::HALF, halves.back().data() + c, header.dataWindow(), sizeof(Imath::half) * n,
+                                      sizeof(Imath::half) * n * static_cast<size_t>(w.width())));
       }
     }
     MemoryStream stream;
@@ -191,13 +190,15 @@ std::optional<ExrImage> read_exr(const std::string& path, uint64_t max_pixels, s
         error = path + ": channel " + full + " is subsampled; rtcli reads full-resolution channels";
         return std::nullopt;
       }
-      if (it.channel().type == Imf::FLOAT) float_channels = true;
+      const bool is_float = it.channel().type == Imf::FLOAT;
+      if (is_float) float_channels = true;
       else half_channels = true;
       ExrLayer* target = nullptr;
       for (ExrLayer& l : image.layers)
         if (l.name == layer) target = &l;
-      if (!target) target = &image.layers.emplace_back(ExrLayer{layer, {}, {}});
+      if (!target) target = &image.layers.emplace_back(ExrLayer{layer, {}, {}, true});
       target->channels.push_back(channel);
+      target->exact = target->exact && is_float;
     }
     // The colour first, its channels in R, G, B order (OpenEXR lists channels alphabetically).
     for (ExrLayer& l : image.layers) {

@@ -16,13 +16,17 @@ namespace rt {
 
 inline constexpr int kMaxExrChannels = 64;  // read_exr refuses a file of more
 // read_exr holds at most this many values (channels x pixels) a pixel of its limit: rtcli writes
-// 10 (colour, albedo, normal, depth), and room is left for an alpha and a spare layer.
-inline constexpr uint64_t kMaxExrValuesPerPixel = 12;
+// up to 36 (the colour, the raw colour, five layers, and a path-traced render's sample sums:
+// cli/render/sample_state.h), and room is left for an alpha.
+inline constexpr uint64_t kMaxExrValuesPerPixel = 40;
 
 struct ExrLayer {
   std::string name;                   // "" for the colour (R, G, B); else the channels' prefix
   std::vector<std::string> channels;  // "R", "G", "B" / "X", "Y", "Z" / "Z"
   std::vector<float> values;          // window pixels, row-major, channels interleaved
+  // Written as 32-bit floats even in a half-float file: data that must come back bit for bit (a
+  // render's sample sums: cli/render/sample_state.h). Read: every channel was a float.
+  bool exact = false;
 };
 
 struct ExrImage {

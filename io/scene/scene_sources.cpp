@@ -34,8 +34,7 @@ class IncludeReader {
       if (!list->is_array()) {
         r.expected("/include", "an array of scene file names (paths relative to this file)", *list);
       } else {
-        for (size_t i = 0; i < list->size(); ++i)
-          include(*source, (*list)[i], pointer_child("/include", i), r, chain);
+        for (size_t i = 0; i < list->size(); ++i) include(*source, (*list)[i], pointer_child("/include", i), r, chain);
       }
     }
     out_.push_back(std::move(source));
@@ -59,8 +58,8 @@ class IncludeReader {
     if (!read_.emplace(id).second)
       return r.error(at, "expected each file included once, found \"" + *name + "\" included already");
     if (chain.size() >= static_cast<size_t>(kMaxIncludeDepth))
-      return r.error(at, "expected includes nested at most " + std::to_string(kMaxIncludeDepth) +
-                             " deep, found deeper nesting");
+      return r.error(
+          at, "expected includes nested at most " + std::to_string(kMaxIncludeDepth) + " deep, found deeper nesting");
     if (read_.size() > kMaxSceneFiles)
       return r.error(at, "expected at most " + std::to_string(kMaxSceneFiles) + " scene files, found more");
     Diagnostics found;
@@ -118,7 +117,8 @@ PlaceFinder SceneSources::places() const {
     const SceneSource* in = nullptr;
     for (const auto& f : files_) {
       const std::string& p = f->prefix;
-      const bool starts = pointer.compare(0, p.size(), p) == 0 && (pointer.size() == p.size() || pointer[p.size()] == '/');
+      const bool starts =
+          pointer.compare(0, p.size(), p) == 0 && (pointer.size() == p.size() || pointer[p.size()] == '/');
       if (starts && (!in || p.size() > in->prefix.size())) in = f.get();
     }
     if (!in) return;

@@ -320,8 +320,7 @@ TEST_CASE("cli: watch follows the files a scene includes and its textures", "[cl
   w.wait_for([](const Json& j) { return finished(j, 1); }, "the first render");
   auto c = w.centre(folder);
   CHECK(c[0] > 2 * c[2]);  // red, from the included file
-  save_by_rename(folder + "/paint.json",
-                 R"({"materials": {"floor": {"kd": 0.6}, "ball": {"kd": [0.1, 0.1, 0.8]}}})");
+  save_by_rename(folder + "/paint.json", R"({"materials": {"floor": {"kd": 0.6}, "ball": {"kd": [0.1, 0.1, 0.8]}}})");
   Json s = w.wait_for([](const Json& j) { return finished(j, 2); }, "the included file's change");
   CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("paint.json changed"));
   CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("1 file kept, 0 read"));  // the texture

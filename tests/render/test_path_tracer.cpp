@@ -350,3 +350,42 @@ TEST_CASE("progressive passes: with time enough, the same film as one render; ou
   CHECK(c.time_limited);
   for (const uint16_t n : first.samples) REQUIRE(n == kPassSamples);
 }
+
+TEST_CASE("resumed renders: 16 samples, then 24 more from the sums kept, give the bits of 40 at once",
+          "[path][progressive][resume]") {
+  const LoadedScene s = rt::test::load_scene_text("resume.json", kTwoLights);
+  RenderSettings settings = s.settings;
+  settings.path.noise_threshold = 0.05f;
+  RenderView view;
+  view.aovs = true;
+  settings.path.samples_per_pixel = 40;
+  Film once;
+  render(s.scene, settings, once, {}, 0, view);
+  // The first part keeps its sums; the second starts from them.
+  settings.path.samples_per_pixel = 16;
+  view.keep_sums = true;
+  Film part;
+  render(s.scene, settings, part, {}, 0, view);
+  REQUIRE(part.sums.size() == part.color.pixels.size());
+  for (const SampleSums& p : part.sums) REQUIRE(p.n == 16);  // no pixel stops at its last sample
+  settings.path.samples_per_pixel = 40;
+  view.resume_from = &part.sums;
+  Film resumed;
+  const RenderStats stats = render(s.scene, settings, resumed, {}, 0, view);
+  CHECK(resumed.color.pixels == once.color.pixels);
+  CHECK(resumed.samples == once.samples);
+  CHECK(resumed.albedo.pixels == once.albedo.pixels);
+  CHECK(resumed.variance == once.variance);
+  CHECK(stats.rays[RayKind::kCamera] < 40u * once.color.pixels.size());  // only the new samples were traced
+  // In passes too (a time limit), and to the same end again: nothing more to trace, the same film.
+  RenderControl control;
+  control.time_limit = 1e6;
+  Film passes;
+  render(s.scene, settings, passes, control, 0, view);
+  CHECK(passes.color.pixels == once.color.pixels);
+  view.resume_from = &resumed.sums;
+  Film again;
+  const RenderStats none = render(s.scene, settings, again, {}, 0, view);
+  CHECK(again.color.pixels == once.color.pixels);
+  CHECK(none.rays.total() == 0);
+}

@@ -130,7 +130,8 @@ TEST_CASE("includes: problems in an included file are reported in it, at its lin
   CHECK(find_error(v, "found the string \"x\""));
 }
 
-TEST_CASE("includes: a missing file, a cycle, a repeat and a non-list are refused at the entry", "[io][include][errors]") {
+TEST_CASE("includes: a missing file, a cycle, a repeat and a non-list are refused at the entry",
+          "[io][include][errors]") {
   const std::string dir = rt::test::fresh_folder("include-refused");
   write(dir, "a.json", R"({"include": ["b.json"]})");
   write(dir, "b.json", R"({"include": ["a.json"]})");
@@ -155,15 +156,20 @@ TEST_CASE("includes: a missing file, a cycle, a repeat and a non-list are refuse
   CHECK(missing->pointer == "/include/3");
   CHECK(find_error(diags, "expected the name of a scene file (.json)"));
 
-  const std::string not_list = write(dir, "not-list.json", R"({"include": "c.json", "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "nodes": []})");
+  const std::string not_list =
+      write(dir, "not-list.json",
+            R"({"include": "c.json", "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "nodes": []})");
   CHECK(find_error(load_errors(not_list), "expected an array of scene file names"));
 }
 
 TEST_CASE("includes: a camera and nodes may come from any file, but must come from one", "[io][include]") {
   const std::string dir = rt::test::fresh_folder("include-required");
-  write(dir, "view.json", R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "lights": [{"type": "point", "position": [0, 3, 3]}]})");
+  write(
+      dir, "view.json",
+      R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "lights": [{"type": "point", "position": [0, 3, 3]}]})");
   write(dir, "things.json", R"({"materials": {"m": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "m"}]})");
-  const LoadedScene ok = rt::test::load_scene_file(write(dir, "scene.json", R"({"include": ["view.json", "things.json"]})"));
+  const LoadedScene ok =
+      rt::test::load_scene_file(write(dir, "scene.json", R"({"include": ["view.json", "things.json"]})"));
   CHECK(ok.scene.bvh.shapes().size() == 1);
   const Diagnostics none = load_errors(write(dir, "bare.json", R"({"include": ["things.json"]})"));
   INFO(all(none));
@@ -213,17 +219,20 @@ TEST_CASE("templates: unknown names, cycles, shapes left without a material and 
     chain += ", \"t" + std::to_string(i) + "\": {\"children\": [{\"template\": \"t" + std::to_string(i - 1) +
              "\"}, {\"template\": \"t" + std::to_string(i - 1) + "\"}]}";
   chain += "}";
-  const Diagnostics deep = load_errors(write(dir, "deep.json", "{" + base + chain + R"(, "nodes": [{"template": "t200"}]})"));
+  const Diagnostics deep =
+      load_errors(write(dir, "deep.json", "{" + base + chain + R"(, "nodes": [{"template": "t200"}]})"));
   CHECK(deep.has_errors());
   const std::string wide = R"("templates": {"t0": {"shape": "sphere", "material": "m"})";
   std::string fan = wide;
   for (int i = 1; i <= 40; ++i) {
     fan += ", \"t" + std::to_string(i) + "\": {\"children\": [";
-    for (int k = 0; k < 8; ++k) fan += std::string(k ? ", " : "") + "{\"template\": \"t" + std::to_string(i - 1) + "\"}";
+    for (int k = 0; k < 8; ++k)
+      fan += std::string(k ? ", " : "") + "{\"template\": \"t" + std::to_string(i - 1) + "\"}";
     fan += "]}";
   }
   fan += "}";
-  const Diagnostics many = load_errors(write(dir, "many.json", "{" + base + fan + R"(, "nodes": [{"template": "t40"}]})"));
+  const Diagnostics many =
+      load_errors(write(dir, "many.json", "{" + base + fan + R"(, "nodes": [{"template": "t40"}]})"));
   INFO(all(many));
   CHECK(find_error(many, "nodes in a scene, found more once templates are placed"));
 }
