@@ -101,8 +101,7 @@ std::vector<ExrLayer> sample_state_layers(const SampleState& state, bool layers)
 
 bool has_sample_state(const ExrImage& image) { return image.layer("state.count") != nullptr; }
 
-std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers, int most_samples,
-                                             std::string& error) {
+std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers, int most_samples, std::string& error) {
   const std::vector<std::string> rgb = {"R", "G", "B"}, xyz = {"X", "Y", "Z"}, parts = {"A", "B", "C", "D"};
   const Channels sum = find(image, "state.sum", rgb), count = find(image, "state.count", {"N"}),
                  lum = find(image, "state.luminance", parts), squares = find(image, "state.squares", parts);
@@ -114,8 +113,9 @@ std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers,
                  emission = find(image, "state.emission", rgb), distance = find(image, "state.distance", {"Z"});
   const bool has_layers = albedo && normal && emission && distance;
   if (layers && !has_layers) {
-    error = "was rendered without the first hit's layers, which this render gathers (--aov or --denoise): render "
-            "the first part with them too";
+    error =
+        "was rendered without the first hit's layers, which this render gathers (--aov or --denoise): render "
+        "the first part with them too";
     return std::nullopt;
   }
   for (const Channels* c : {&sum, &count, &lum, &squares, &albedo, &normal, &emission, &distance})
@@ -130,8 +130,8 @@ std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers,
     const float n = count.at(i, 0);
     const float whole = std::fabs(n);
     if (!(whole >= 1.0f && whole <= static_cast<float>(most_samples)) || whole != std::floor(whole)) {
-      error = "pixel " + std::to_string(i) + " of its window: expected a count of 1 to " + std::to_string(most_samples) +
-              " samples, found " + format_count(n);
+      error = "pixel " + std::to_string(i) + " of its window: expected a count of 1 to " +
+              std::to_string(most_samples) + " samples, found " + format_count(n);
       return std::nullopt;
     }
     p.n = static_cast<int>(whole);

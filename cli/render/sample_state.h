@@ -28,7 +28,6 @@ bool has_sample_state(const ExrImage& image);
 // The sums an EXR holds, one per pixel of its window, checked (whole counts of at most
 // `most_samples`, finite non-negative sums, 16-bit parts); nothing, with `error`, if they are
 // missing, broken, or lack the first hit's layers when `layers` are needed.
-std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers, int most_samples,
-                                             std::string& error);
+std::optional<SampleState> read_sample_state(const ExrImage& image, bool layers, int most_samples, std::string& error);
 
 }  // namespace rt

@@ -37,8 +37,7 @@ rt::test::Run render(const std::string& args) { return rt::test::rtcli("render "
 
 }  // namespace
 
-TEST_CASE("cli: render --resume continues a render to the pixels of one render of all the samples",
-          "[cli][resume]") {
+TEST_CASE("cli: render --resume continues a render to the pixels of one render of all the samples", "[cli][resume]") {
   const std::string out = rt::test::fresh_folder("resume");
   REQUIRE(render("--spp 16 -o " + out + "/a.exr").code == 0);
   REQUIRE(render("--spp 40 -o " + out + "/once.exr").code == 0);
@@ -103,8 +102,8 @@ TEST_CASE("cli: render --resume refuses another render's file, naming what diffe
   std::filesystem::copy_file(rt::test::source_path(kScene), scene);
   REQUIRE(rt::test::rtcli("render " + scene + kSmall + "--spp 8 -o " + out + "/s.exr").code == 0);
   std::ofstream(scene, std::ios::app) << "\n";
-  const rt::test::Run changed = rt::test::rtcli("render " + scene + kSmall + "--resume " + out + "/s.exr --spp 16 -o " +
-                                                out + "/x.png");
+  const rt::test::Run changed =
+      rt::test::rtcli("render " + scene + kSmall + "--resume " + out + "/s.exr --spp 16 -o " + out + "/x.png");
   CHECK(changed.code == 2);
   CHECK_THAT(changed.output, Catch::Contains("another render's: the scene (its files have changed since"));
   // A file whose sums were tampered with (a count beyond any render's): refused, not trusted.
