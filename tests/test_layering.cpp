@@ -74,8 +74,10 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"cli/frames/", with_below({"cli/common/", "cli/frames/"})},
       {"cli/render/", with_below({"cli/common/", "cli/frames/", "cli/render/"})},
       {"cli/farm/", with_below({"cli/common/", "cli/frames/", "cli/farm/"})},
+      {"cli/watch/", with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/watch/"})},
       {"cli/bench/", with_below({"cli/common/", "cli/bench/"})},
-      {"cli/", with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/farm/", "cli/bench/", "cli/"})},
+      {"cli/", with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/farm/", "cli/bench/", "cli/watch/",
+                           "cli/"})},
   };
   return table;
 }
