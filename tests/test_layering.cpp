@@ -76,8 +76,8 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"cli/farm/", with_below({"cli/common/", "cli/frames/", "cli/farm/"})},
       {"cli/watch/", with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/watch/"})},
       {"cli/bench/", with_below({"cli/common/", "cli/bench/"})},
-      {"cli/", with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/farm/", "cli/bench/", "cli/watch/",
-                           "cli/"})},
+      {"cli/",
+       with_below({"cli/common/", "cli/frames/", "cli/render/", "cli/farm/", "cli/bench/", "cli/watch/", "cli/"})},
   };
   return table;
 }

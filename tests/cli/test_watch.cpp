@@ -334,3 +334,33 @@ TEST_CASE("cli: watch follows the files a scene includes and its textures", "[cl
   CHECK_THAT(s["reload"].get<std::string>(), Catch::Contains("0 files kept, 1 read"));
   CHECK(w.interrupt(5.0) == 0);
 }
+
+TEST_CASE("cli: watch moves an animated scene to the frame the page asks for", "[cli][watch]") {
+  const std::string folder = rt::test::fresh_folder("watch-frames");
+  const std::string scene = folder + "/ball.json";
+  std::string text = watch_scene("[0.8, 0.1, 0.1]");
+  text.replace(text.rfind('}'), 1,
+               R"(, "animation": {"fps": 10, "tracks": [{"node": "ball", "property": "translate",
+    "keys": [{"frame": 0, "value": [0, 0.8, 0]}, {"frame": 20, "value": [1, 0.8, 0]}]}]}})");
+  text.replace(text.find("{\"shape\": \"sphere\""), 1, "{\"name\": \"ball\", ");
+  std::ofstream(scene) << text;
+  WatchProcess w(scene, folder);
+  Json s = w.wait_for([](const Json& j) { return finished(j, 1); }, "the first frame");
+  CHECK(s["animated"] == true);
+  CHECK(s["first_frame"] == 0);
+  CHECK(s["last_frame"] == 20);
+  CHECK(s["image"]["frame"] == 0);
+  auto c = w.client();
+  const auto moved = c.Post("/frame?n=20", "", "text/plain");
+  REQUIRE(moved);
+  CHECK(moved->status == 204);
+  s = w.wait_for([](const Json& j) { return j["image"]["frame"] == 20 && j["image"]["last"] == true; }, "frame 20");
+  const auto beyond = c.Post("/frame?n=21", "", "text/plain");
+  REQUIRE(beyond);
+  CHECK(beyond->status == 400);
+  // An edit keeps the frame shown.
+  save_by_rename(scene, text.replace(text.find("[0.8, 0.1, 0.1]"), 15, "[0.1, 0.1, 0.8]"));
+  s = w.wait_for([](const Json& j) { return finished(j, 2); }, "the edit");
+  CHECK(s["image"]["frame"] == 20);
+  CHECK(w.interrupt(5.0) == 0);
+}

@@ -185,6 +185,27 @@ SECTIONS = [
                  "Equal time against Cycles, 160x160: Cycles 32 samples (RMSE 0.0102), rtcli 36 (0.0094), "
                  "rtcli denoised (0.0042)")],
      "tables": [("docs/rendering.md", "### Clean images sooner", 1)]},
+    {"id": "live", "title": "Extra: edit a scene, see it live; scenes of parts; renders that continue",
+     "what": "rtcli watch shows a scene rendering in the browser and renders it again at every saved change, "
+             "to the scene or any file it reads; a mistake shows located above the last good picture. The cafe "
+             "is a scene of parts: its materials come from an included library, and four sets of a table and "
+             "two stools are one template placed four times. A path-traced render can be continued from its "
+             "EXR to the pixels of one longer render (render --resume).",
+     "how": "cli/watch/ (the page, served by cpp-httplib; the refining stages; io/assemble/load_cache.h keeps "
+            "what did not change), io/scene/scene_sources.h (includes), io/scene/node_parser.cpp (templates), "
+            "cli/render/resume_plan.h. The screenshots are taken by tools/watch_screenshots.sh as the browser "
+            "test takes them. docs/command-line.md (rtcli watch), docs/scene-format.md (Includes and templates).",
+     "scene": "scenes/cafe.json",
+     "renders": [("cafe", "", "A cafe: four sets of a wooden table and two stools on a checked floor",
+                  "scenes/cafe.json: one template placed four times, materials from an included library")],
+     "images": [("watch-1-first.png", "rtcli watch showing the cafe scene in the browser",
+                 "1. rtcli watch scenes/cafe.json: the page, the render done"),
+                ("watch-2-edited.png", "The same page after the library's red paint was made yellow",
+                 "2. library/materials.json saved: the stools yellow, a tenth of a second to the first picture"),
+                ("watch-3-error.png", "The page showing a located error above the last good picture",
+                 "3. A typo in library/furniture.json: the error located, the last picture kept"),
+                ("watch-4-normals.png", "The page showing the normals layer after the fix",
+                 "4. Fixed, and seen as its normals (?layer=normal)")]},
     {"id": "final", "title": "10. The final scene: toys left behind",
      "what": "Every objective in one picture: a toy box, marbles, balls, dice, jacks, cards and blocks on a table.",
      "how": "scenes/toys/toys.json, written by tools/make_toys_scene.py.",
