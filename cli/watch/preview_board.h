@@ -24,16 +24,17 @@ struct PreviewImage {
   uint64_t scene_version = 0;  // of the load it shows (PreviewStatus::scene_version)
   int width = 0;               // of the image the film previews
   int height = 0;
-  int frame = 0;             // of the scene's animation
-  int samples = 0;           // a pixel's samples so far (the path tracer's passes), or rays per pixel
-  int target_samples = 0;    // the path tracer: the most a pixel takes; else 0
-  std::string stage;         // "coarse", "draft", "final" or "pass"
-  bool last = false;         // nothing refines it further
-  double seconds = 0.0;      // since the change that made this scene version was seen
-  uint64_t rays = 0;         // traced for it, since then
-  bool radiance = true;      // false: a debug view (its values are data, never tone mapped)
-  bool path_traced = false;  // its refinement map is the samples a pixel took
-  DisplayTransform display;  // the scene's own exposure and tone map: the page's defaults
+  int frame = 0;                   // of the scene's animation
+  int samples = 0;                 // a pixel's samples so far (the path tracer's passes), or rays per pixel
+  int target_samples = 0;          // the path tracer: the most a pixel takes; else 0
+  std::string stage;               // "coarse", "draft", "final" or "pass"
+  bool last = false;               // nothing refines it further
+  double seconds = 0.0;            // since the change that made this scene version was seen
+  uint64_t rays = 0;               // traced for it, since then
+  bool radiance = true;            // false: a debug view (its values are data, never tone mapped)
+  bool path_traced = false;        // its refinement map is the samples a pixel took
+  DisplayTransform display;        // the scene's own exposure and tone map: the page's defaults
+  float yaw = 0.0f, pitch = 0.0f;  // the page's orbit of the camera (0, 0: the file's)
 };
 
 // What the page polls: everything but the pixels.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 
+#include "cli/watch/orbit.h"
 #include "core/frame_scenes.h"
 #include "core/render/integrator.h"
 #include "core/render/renderer.h"
@@ -47,7 +48,28 @@ void PreviewRenderer::start(Job job) {
 
 void PreviewRenderer::show(std::shared_ptr<const LoadedScene> scene, const RenderSettings& settings, uint64_t version,
                            int frame, Clock::time_point seen) {
-  start(Job{std::move(scene), settings, version, frame, seen});
+  Job job{std::move(scene), settings, version, frame, seen};
+  {
+    const std::lock_guard lock(mutex_);
+    if (current_) {
+      job.yaw = current_->yaw;
+      job.pitch = current_->pitch;
+    }
+  }
+  start(std::move(job));
+}
+
+void PreviewRenderer::show_orbit(float yaw, float pitch) {
+  std::optional<Job> job;
+  {
+    const std::lock_guard lock(mutex_);
+    job = current_;
+  }
+  if (!job) return;
+  job->yaw = yaw;
+  job->pitch = pitch;
+  job->seen = Clock::now();
+  start(std::move(*job));
 }
 
 void PreviewRenderer::show_frame(int frame) {
@@ -105,6 +127,8 @@ void PreviewRenderer::render_job(const Job& job) {
 
   RenderView view;
   view.aovs = true;
+  const Camera orbited = orbit(scene.camera, job.yaw, job.pitch);
+  if (job.yaw != 0.0f || job.pitch != 0.0f) view.camera = &orbited;
   const auto post = [&](const Film& film, const RenderSettings& s, const char* stage, int samples, bool last,
                         uint64_t stage_rays) {
     auto image = std::make_shared<PreviewImage>();
@@ -122,6 +146,8 @@ void PreviewRenderer::render_job(const Job& job) {
     image->radiance = radiance;
     image->path_traced = path_traced;
     image->display = settings.display;
+    image->yaw = job.yaw;
+    image->pitch = job.pitch;
     board_.post_image(std::move(image));
   };
   // Renders one stage; false when it was dropped for newer work.

@@ -39,6 +39,9 @@ class PreviewRenderer {
             Clock::time_point seen);
   // The same scene at another frame of its animation.
   void show_frame(int frame);
+  // The same scene through its camera orbited (cli/watch/orbit.h); 0, 0: the file's camera.
+  // Kept for the scenes shown after it.
+  void show_orbit(float yaw, float pitch);
   // The frame shown (or about to be).
   int frame() const;
 
@@ -49,6 +52,7 @@ class PreviewRenderer {
     uint64_t version = 0;
     int frame = 0;
     Clock::time_point seen;
+    float yaw = 0.0f, pitch = 0.0f;  // the page's orbit
   };
   void run();
   void render_job(const Job& job);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/common/report.h"
+#include "cli/watch/orbit.h"
 #include "cli/watch/preview_images.h"
 #include "io/image/png_encoder.h"
 
@@ -104,7 +105,9 @@ nlohmann::json status_json(const PreviewStatus& s) {
                   {"rays", im.rays},
                   {"scene_version", im.scene_version},
                   {"exposure", im.display.exposure},
-                  {"tone_map", std::string(kToneMaps.name(im.display.curve))}};
+                  {"tone_map", std::string(kToneMaps.name(im.display.curve))},
+                  {"yaw", im.yaw},
+                  {"pitch", im.pitch}};
   } else {
     j["image"] = nullptr;
   }
@@ -113,9 +116,11 @@ nlohmann::json status_json(const PreviewStatus& s) {
 
 }  // namespace
 
-PreviewServer::PreviewServer(PreviewBoard& board, std::function<bool(int)> show_frame, std::string download_name)
+PreviewServer::PreviewServer(PreviewBoard& board, std::function<bool(int)> show_frame,
+                             std::function<void(float, float)> show_orbit, std::string download_name)
     : board_(board),
       show_frame_(std::move(show_frame)),
+      show_orbit_(std::move(show_orbit)),
       download_name_(std::move(download_name)),
       server_(std::make_unique<httplib::Server>()) {
   routes();
@@ -216,6 +221,14 @@ void PreviewServer::routes() {
     if (!n || !std::isfinite(*n) || *n != std::floor(*n)) return fail_request(res, 400, "n: expected a frame number");
     if (!show_frame_(static_cast<int>(*n)))
       return fail_request(res, 400, "n: expected a frame of the scene's animation");
+    res.status = 204;
+  });
+  s.Post("/view", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto yaw = number_param(req, "yaw", 0.0, -360.0, 360.0);
+    const auto pitch = number_param(req, "pitch", 0.0, -kMaxOrbitPitch, kMaxOrbitPitch);
+    if (!yaw || !pitch)
+      return fail_request(res, 400, "yaw: expected degrees in [-360, 360]; pitch: degrees in [-89, 89]");
+    show_orbit_(static_cast<float>(*yaw), static_cast<float>(*pitch));
     res.status = 204;
   });
 }

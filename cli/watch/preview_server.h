@@ -22,8 +22,10 @@ namespace rt {
 
 class PreviewServer {
  public:
-  // `show_frame` moves the render to another frame of the animation; false: no such frame.
-  PreviewServer(PreviewBoard& board, std::function<bool(int)> show_frame, std::string download_name);
+  // `show_frame` moves the render to another frame of the animation (false: no such frame);
+  // `show_orbit` turns the preview's camera (degrees of yaw and pitch).
+  PreviewServer(PreviewBoard& board, std::function<bool(int)> show_frame, std::function<void(float, float)> show_orbit,
+                std::string download_name);
   ~PreviewServer();  // stops
   PreviewServer(const PreviewServer&) = delete;
   PreviewServer& operator=(const PreviewServer&) = delete;
@@ -40,6 +42,7 @@ class PreviewServer {
 
   PreviewBoard& board_;
   std::function<bool(int)> show_frame_;
+  std::function<void(float, float)> show_orbit_;
   std::string download_name_;  // the scene's name, for saved files
   std::unique_ptr<httplib::Server> server_;
   std::string host_;

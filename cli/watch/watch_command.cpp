@@ -157,7 +157,7 @@ int run_watch(const WatchCommand& cmd) {
         renderer.show_frame(frame);
         return true;
       },
-      download_name(cmd.render.scene));
+      [&](float yaw, float pitch) { renderer.show_orbit(yaw, pitch); }, download_name(cmd.render.scene));
   std::string error;
   if (!server.bind(cmd.bind, cmd.port, error)) {
     fail(error);

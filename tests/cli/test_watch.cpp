@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/watch/orbit.h"
 #include "io/image/png_file.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
@@ -163,7 +164,15 @@ std::string page_dom(const WatchProcess& w, const std::string& screenshot = "") 
   if (!screenshot.empty())
     rt::test::run_shell(chromium + "--window-size=900,560 --screenshot='" + screenshot + "' '" + w.url() +
                         "' >/dev/null 2>&1");
-  return rt::test::run_shell(chromium + "--dump-dom '" + w.url() + "' 2>/dev/null").output;
+  // The page's console messages (errors among them) go to stderr as "CONSOLE" lines: none allowed.
+  const std::string console = rt::test::output_path("watch-console.txt");
+  std::string dom =
+      rt::test::run_shell(chromium + "--enable-logging=stderr --v=0 --dump-dom '" + w.url() + "' 2>'" + console + "'")
+          .output;
+  const std::string logged = rt::test::read_file(console);
+  INFO(logged);
+  if (!dom.empty()) CHECK(logged.find("CONSOLE") == std::string::npos);
+  return dom;
 }
 
 }  // namespace
@@ -363,4 +372,48 @@ TEST_CASE("cli: watch moves an animated scene to the frame the page asks for", "
   s = w.wait_for([](const Json& j) { return finished(j, 2); }, "the edit");
   CHECK(s["image"]["frame"] == 20);
   CHECK(w.interrupt(5.0) == 0);
+}
+
+TEST_CASE("cli: watch orbits the preview's camera without touching the file", "[cli][watch]") {
+  const std::string folder = rt::test::fresh_folder("watch-orbit");
+  const std::string scene = folder + "/ball.json";
+  const std::string text = watch_scene("[0.8, 0.1, 0.1]");
+  std::ofstream(scene) << text;
+  WatchProcess w(scene, folder);
+  w.wait_for([](const Json& j) { return finished(j, 1); }, "the first render");
+  auto c = w.client();
+  const auto turned = c.Post("/view?yaw=180&pitch=0", "", "text/plain");
+  REQUIRE(turned);
+  CHECK(turned->status == 204);
+  Json s = w.wait_for([](const Json& j) { return j["image"]["yaw"] == 180.0 && j["image"]["last"] == true; },
+                      "the orbited render");
+  // From behind, the ball still sits in the middle (the orbit turns about the point looked at),
+  // its unlit side towards us: dark, not the blue-grey background.
+  auto centre = w.centre(folder);
+  CHECK(centre[0] + centre[1] + centre[2] < 60);
+  CHECK(rt::test::read_file(scene) == text);
+  const auto bad = c.Post("/view?yaw=0&pitch=95", "", "text/plain");
+  REQUIRE(bad);
+  CHECK(bad->status == 400);
+  // Reset: the file's camera again.
+  REQUIRE(c.Post("/view?yaw=0&pitch=0", "", "text/plain"));
+  s = w.wait_for([](const Json& j) { return j["image"]["yaw"] == 0.0 && j["image"]["last"] == true; }, "the reset");
+  CHECK(w.interrupt(5.0) == 0);
+}
+
+TEST_CASE("watch: the orbit turns the camera about the point it looks at, keeping its distance", "[watch][camera]") {
+  rt::Camera cam = rt::Camera::look_at(rt::Vec3(0, 1, 5), rt::Vec3(0, 1, 0), rt::Vec3(0, 1, 0), 40.0f);
+  cam.focus_distance = 5.0f;
+  const rt::Camera same = rt::orbit(cam, 0.0f, 0.0f);
+  CHECK(same.position == cam.position);
+  const rt::Camera behind = rt::orbit(cam, 180.0f, 0.0f);
+  CHECK(behind.position.x == Approx(0.0f).margin(1e-5));
+  CHECK(behind.position.y == Approx(1.0f).margin(1e-5));
+  CHECK(behind.position.z == Approx(-5.0f).margin(1e-5));
+  CHECK(behind.forward.z == Approx(1.0f).margin(1e-5));  // still looking at (0, 1, 0)
+  const rt::Camera above = rt::orbit(cam, 0.0f, 60.0f);
+  CHECK(glm::length(above.position - rt::Vec3(0, 1, 0)) == Approx(5.0f));
+  CHECK(above.position.y == Approx(1.0f + 5.0f * std::sin(rt::radians(60.0f))).margin(1e-4));  // raised
+  CHECK(glm::dot(above.forward, glm::normalize(rt::Vec3(0, 1, 0) - above.position)) == Approx(1.0f));
+  CHECK(above.vertical_fov_degrees == cam.vertical_fov_degrees);
 }
