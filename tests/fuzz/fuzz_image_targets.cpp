@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "cli/frames/exr_denoise.h"
+#include "cli/render/sample_state.h"
 #include "cli/frames/tile_merge.h"
 #include "core/lights/environment.h"
 #include "core/rng.h"
@@ -89,6 +90,13 @@ std::string exr_tile(const uint8_t* data, size_t size) {
       return "an EXR read with its data window outside its image";
     for (const ExrLayer& l : image->layers)
       if (l.values.size() != image->window.pixels() * l.channels.size()) return "an EXR layer with the wrong size";
+    // render --resume: the sample sums, with and without the first hit's layers.
+    for (const bool layers : {false, true}) {
+      std::string why;
+      const auto state = read_sample_state(*image, layers, 65535, why);
+      if (!state && why.empty()) return "read_sample_state failed without saying why";
+      if (state && state->size() != image->window.pixels()) return "sample sums of the wrong size";
+    }
   } else if (error.empty()) {
     return "read_exr failed without saying why";
   }
