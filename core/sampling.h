@@ -33,7 +33,6 @@ class SampleStream {
                SampleSequence sequence = SampleSequence::kSobol)
       : point_key_(mix64(mix64(mix64(seed) ^ frame) ^ point)),
         key_(mix64(point_key_ ^ sample)),
-        sample_(sample),
         reversed_sample_(reverse_bits(sample)),
         sequence_(sequence) {}
 
@@ -60,9 +59,8 @@ class SampleStream {
   }
 
  private:
-  uint64_t point_key_ = 0;  // (seed, frame, point)
-  uint64_t key_ = 0;        // and the sample: the independent sequence's key
-  uint32_t sample_ = 0;
+  uint64_t point_key_ = 0;        // (seed, frame, point)
+  uint64_t key_ = 0;              // and the sample: the independent sequence's key
   uint32_t reversed_sample_ = 0;  // its bits mirrored, where the Sobol points start
   SampleSequence sequence_ = SampleSequence::kSobol;
 };

@@ -18,8 +18,9 @@ inline Camera orbit(const Camera& camera, float yaw_degrees, float pitch_degrees
   if (yaw_degrees == 0.0f && pitch_degrees == 0.0f) return camera;
   const float distance = std::max(camera.focus_distance, 1e-3f);
   const Vec3 target = camera.position + camera.forward * distance;
-  const glm::quat turn = glm::angleAxis(radians(yaw_degrees), camera.up) *
-                         glm::angleAxis(-radians(std::clamp(pitch_degrees, -kMaxOrbitPitch, kMaxOrbitPitch)), camera.right);
+  const glm::quat turn =
+      glm::angleAxis(radians(yaw_degrees), camera.up) *
+      glm::angleAxis(-radians(std::clamp(pitch_degrees, -kMaxOrbitPitch, kMaxOrbitPitch)), camera.right);
   Camera c = camera;
   c.aim(target + turn * (camera.position - target), target, turn * camera.up);
   return c;

@@ -38,9 +38,18 @@ struct NodeParseContext {
   int in_template = 0;  // > 0: parsing a template, whose shapes may take their material where placed
 };
 
+inline constexpr int kMaxNodeDepth = 128;  // deeper trees are refused rather than risking the stack
+
 // depth: how many node levels enclose this array (0 for the top-level "nodes").
 std::vector<NodeDescription> parse_nodes(NodeParseContext& ctx, const Json& value, const std::string& pointer,
                                          int depth = 0);
+
+// One node and its subtree (a template's too: io/scene/template_placement.h), at `depth` levels.
+NodeDescription parse_node(NodeParseContext& ctx, const Json& value, const std::string& pointer, int depth);
+
+// The index of the material a name names under /materials; nothing, after an error at `pointer`
+// listing the names (and the nearest), if none does.
+std::optional<uint32_t> resolve_material(NodeParseContext& ctx, const Json& value, const std::string& pointer);
 
 // A "transform" object: translate / rotate (degrees) / scale, or a 4x4 "matrix" (rows).
 // Rotations are kept as quaternions (R = Rz * Ry * Rx of the Euler angles).

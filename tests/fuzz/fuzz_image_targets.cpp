@@ -8,8 +8,8 @@
 #include <memory>
 
 #include "cli/frames/exr_denoise.h"
-#include "cli/render/sample_state.h"
 #include "cli/frames/tile_merge.h"
+#include "cli/render/sample_state.h"
 #include "core/lights/environment.h"
 #include "core/rng.h"
 #include "io/image/environment_file.h"
