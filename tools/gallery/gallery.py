@@ -27,9 +27,35 @@ from tables import tables_html  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
+def load_scene(path):
+    """A scene file as rtcli reads it: JSON that may hold // and /* */ comments (outside strings)."""
+    with open(path) as f:
+        text = f.read()
+    out, i, in_string = [], 0, False
+    while i < len(text):
+        c = text[i]
+        if in_string:
+            out.append(text[i:i + 2] if c == "\\" else c)
+            i += 2 if c == "\\" else 1
+            in_string = c != '"'
+        elif c == '"':
+            out.append(c)
+            in_string = True
+            i += 1
+        elif text.startswith("//", i):
+            end = text.find("\n", i)
+            i = len(text) if end < 0 else end
+        elif text.startswith("/*", i):
+            end = text.find("*/", i + 2)
+            i = len(text) if end < 0 else end + 2
+        else:
+            out.append(c)
+            i += 1
+    return json.loads("".join(out))
+
+
 def scene_size(scene):
-    with open(os.path.join(ROOT, scene)) as f:
-        render = json.load(f).get("render", {})
+    render = load_scene(os.path.join(ROOT, scene)).get("render", {})
     return render.get("width", 640), render.get("height", 480)
 
 
