@@ -84,6 +84,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       totals.pixels_per_pass = static_cast<uint64_t>(film.width()) * static_cast<uint64_t>(film.height());
       for (const uint8_t d : film.depth) totals.refined += d > 0;
       for (const uint16_t n : film.samples) totals.samples += n;
+      if (content.resume)
+        for (const SampleSums& p : *content.resume) totals.resumed_samples += static_cast<uint64_t>(p.n);
       totals.time_passes = totals.last.passes;
       totals.time_limited = totals.time_limited || totals.last.time_limited;
       if (pass == 0 && totals.passes == 2) left = film.color;

@@ -24,6 +24,7 @@ struct RenderTotals {
   double place_seconds = 0.0;    // placing animated frames (top-level BVHs)
   size_t refined = 0;            // pixels refined by adaptive anti-aliasing, all frames and eyes
   uint64_t samples = 0;          // camera samples the pixels average, all frames and eyes
+  uint64_t resumed_samples = 0;  // of those, the ones --resume's file had (not traced here)
   int passes = 1;                // renders per frame: 2 in stereo
   uint64_t pixels_per_pass = 0;  // what each render computed: the image, or the window of it
   int time_passes = 0;           // --time: the last render's whole passes

@@ -1,5 +1,6 @@
 #include "cli/render/render_summary.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cli/common/progress_bar.h"
@@ -33,13 +34,17 @@ void print_summary(const RenderJob& job, const RenderSettings& settings, const F
                  100.0 * static_cast<double>(t.refined) / pixels, settings.antialias.mode.c_str());
   } else {
     const double samples = static_cast<double>(t.samples);
+    const double traced = static_cast<double>(t.samples - std::min(t.resumed_samples, t.samples));  // here
     std::fprintf(stderr,
                  "  path tracing: %.2f rays per pixel, %.1f samples per pixel (at most %d%s), %.3f Msamples/s, %.2f "
                  "rays per sample\n",
                  static_cast<double>(t.rays.total()) / pixels, samples / pixels, settings.path.samples_per_pixel,
                  settings.path.noise_threshold > 0.0f ? ", adaptive" : "",
-                 t.seconds > 0 ? samples / t.seconds / 1e6 : 0.0,
-                 samples > 0 ? static_cast<double>(t.rays.total()) / samples : 0.0);
+                 t.seconds > 0 ? traced / t.seconds / 1e6 : 0.0,
+                 traced > 0 ? static_cast<double>(t.rays.total()) / traced : 0.0);
+    if (!job.resume.empty())
+      std::fprintf(stderr, "  --resume %s: %.1f samples per pixel were there, %.1f added\n", job.resume.c_str(),
+                   static_cast<double>(t.resumed_samples) / pixels, traced / pixels);
     if (job.time_limit > 0.0)
       std::fprintf(stderr, "  --time %g s: %s after %d pass%s of %d samples: %.0f samples per pixel%s\n",
                    job.time_limit, t.time_limited ? "stopped" : "finished", t.time_passes,

@@ -47,6 +47,11 @@ TEST_CASE("cli: render --resume continues a render to the pixels of one render o
   REQUIRE(resumed.code == 0);
   REQUIRE(render("--resume " + out + "/a.exr --spp 40 -o " + out + "/b.png").code == 0);
   CHECK(rt::test::read_file(out + "/b.png") == rt::test::read_file(out + "/once.png"));  // byte-identical
+  // The summary tells the samples kept from those added.
+  const rt::test::Run told = rt::test::rtcli("render " + kScene + " --width 48 --height 36 --resume " + out +
+                                             "/a.exr --spp 40 -o " + out + "/told.png");
+  CHECK_THAT(told.output, Catch::Contains("40.0 samples per pixel (at most 40)") &&
+                              Catch::Contains("/a.exr: 16.0 samples per pixel were there, 24.0 added"));
   const rt::ExrImage once = read(out + "/once.exr"), b = read(out + "/b.exr");
   check_same_layers(once, b);  // the colour and the sums
   CHECK(b.layer("state.count"));
