@@ -195,13 +195,10 @@ int run_render(const RenderCommand& cmd) {
   const auto load_start = std::chrono::steady_clock::now();
   const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli");
   if (!isa) return kExitBadInput;
-  LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files, *isa);
+  std::optional<LoadOptions> asked = scene_load_options(cmd, *isa);
+  if (!asked) return kExitBadInput;
+  LoadOptions& options = *asked;
   if (job->frames_given) options.frame = job->frames.first();
-  options.animation = cmd.animation;
-  options.fps = cmd.fps;
-  options.integrator = cmd.integrator;
-  if (cmd.background) options.background = parse_color(*cmd.background);
-  if (cmd.ambient) options.ambient = parse_color(*cmd.ambient);
   Diagnostics diags;
   const std::optional<LoadedScene> loaded = load_scene(job->scene, options, diags);
   print_diagnostics(stderr, diags);

@@ -4,7 +4,8 @@
 //   [--exposure STOPS] [--tone-map clamp|filmic] [--spp N] [--noise-threshold T] [--clamp C]
 //   [--samples-debug] [--aa MODE] [--aa-samples N] [--aa-threshold T] [--aa-depth D]
 //   [--aa-positions corners|centres] [--aa-debug] [--frame N | --frames LIST] [--camera NAME]
-//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B] [--stereo MODE]
+//   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B]
+//   [--environment FILE [--environment-intensity K] [--environment-rotate DEG]] [--stereo MODE]
 //   [--dither] [--allow-outside-files] [--stats FILE.json] [--crop x0,y0,x1,y1 | --tile I/N|auto]
 //   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--denoise] [--quiet]`
 // (cli/main.cpp declares them, with their help). RenderCommand holds the options as given; the
@@ -53,6 +54,8 @@ struct RenderCommand {
   std::optional<std::string> animation;            // a model on its own: one of its animations, by name or index
   std::optional<float> fps;                        // a model on its own: its timeline's frame rate (default 24)
   std::optional<std::string> background, ambient;  // "R,G,B" or one number: replace the scene's
+  std::optional<std::string> environment;          // an HDR or EXR image around the scene (replaces its background)
+  std::optional<float> environment_intensity, environment_rotate;
   std::optional<std::string> stereo;  // none, anaglyph, side_by_side, top_bottom, pair: replaces the camera's
   bool dither = false;                // GIF frames: Floyd-Steinberg error diffusion
   bool allow_outside_files = false;   // glTF files may read images and buffers outside their folder

@@ -158,6 +158,9 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   c.camera = cmd.camera.value_or("");
   c.background = cmd.background.value_or("");
   c.ambient = cmd.ambient.value_or("");
+  if (cmd.environment)
+    c.environment = *cmd.environment + "," + std::to_string(cmd.environment_intensity.value_or(1.0f)) + "," +
+                    std::to_string(cmd.environment_rotate.value_or(0.0f));
   c.animation = cmd.animation.value_or("");
   c.fps = cmd.fps;
   if (cmd.stereo) c.stereo = kStereoModes.parse(*cmd.stereo);  // checked by check_names

@@ -25,6 +25,7 @@ struct PixelChoices {
   std::string camera;      // a glTF camera by name
   std::string background;  // "R,G,B" or one number, as given
   std::string ambient;
+  std::string environment;           // "FILE,intensity,rotate" as given
   std::string animation;             // a model on its own: one of its animations
   std::optional<float> fps;          // a model on its own: its timeline's rate
   std::optional<StereoMode> stereo;  // replacing the camera's mode

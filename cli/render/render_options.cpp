@@ -84,6 +84,16 @@ void add_scene_options(CLI::App& cmd, RenderCommand& r) {
   cmd.add_option("--ambient", r.ambient,
                  "Ambient light, linear R,G,B or one number (overrides the scene; a glTF file has none)")
       ->check(color_value());
+  cmd.add_option("--environment", r.environment,
+                 "An equirectangular Radiance .hdr or OpenEXR .exr image around the scene, lighting it (path "
+                 "tracer) and seen behind it: replaces the scene's background (a glTF model lit without a scene "
+                 "file)");
+  cmd.add_option("--environment-intensity", r.environment_intensity,
+                 "--environment: multiplies the image's radiance (default 1)")
+      ->check(real_number(0.0, 1e6));
+  cmd.add_option("--environment-rotate", r.environment_rotate,
+                 "--environment: turns the image about +Y, in degrees (default 0)")
+      ->check(real_number(-360.0, 360.0));
   cmd.add_flag("--allow-outside-files", r.allow_outside_files, kOutsideFilesHelp);
   cmd.add_option("--isa", r.isa, isa_help());
 }

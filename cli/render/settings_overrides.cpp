@@ -1,5 +1,8 @@
 #include "cli/render/settings_overrides.h"
 
+#include "cli/common/number_checks.h"
+#include "cli/common/report.h"
+#include "cli/common/scene_loading.h"
 #include "core/render/integrator.h"
 
 namespace rt {
@@ -35,6 +38,25 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   // A debug view's values are data (a normal, a depth): shown as they are, never tone mapped.
   if (!integrator_shows_radiance(s.integrator)) s.display = DisplayTransform{};
   return s;
+}
+
+std::optional<LoadOptions> scene_load_options(const RenderCommand& cmd, Isa isa) {
+  if (cmd.environment && cmd.background)
+    return fail("--environment and --background both replace the scene's background: give one"), std::nullopt;
+  if (!cmd.environment && (cmd.environment_intensity || cmd.environment_rotate))
+    return fail(std::string(cmd.environment_intensity ? "--environment-intensity" : "--environment-rotate") +
+                " applies to --environment's image: give --environment FILE.hdr|.exr"),
+           std::nullopt;
+  LoadOptions options = cli_load_options(cmd.threads.value_or(0), cmd.camera, cmd.allow_outside_files, isa);
+  options.animation = cmd.animation;
+  options.fps = cmd.fps;
+  options.integrator = cmd.integrator;
+  if (cmd.background) options.background = parse_color(*cmd.background);
+  if (cmd.ambient) options.ambient = parse_color(*cmd.ambient);
+  if (cmd.environment)
+    options.environment = LoadOptions::EnvironmentChoice{*cmd.environment, cmd.environment_intensity.value_or(1.0f),
+                                                         cmd.environment_rotate.value_or(0.0f)};
+  return options;
 }
 
 }  // namespace rt

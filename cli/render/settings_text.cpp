@@ -28,6 +28,7 @@ std::string settings_text(const RenderSettings& s, const PixelChoices& c, Stereo
   add("camera", c.camera);
   add("background", c.background);
   add("ambient", c.ambient);
+  if (!c.environment.empty()) add("environment", c.environment);
   add("animation", c.animation);
   add("fps", c.fps ? float_text(*c.fps) : "");
   return t;

@@ -138,18 +138,13 @@ class WatchSession {
 int run_watch(const WatchCommand& cmd) {
   const std::optional<Isa> isa = choose_isa(cmd.render.isa, "rtcli watch");
   if (!isa) return kExitBadInput;
-  LoadOptions options =
-      cli_load_options(cmd.render.threads.value_or(0), cmd.render.camera, cmd.render.allow_outside_files, *isa);
-  options.frame = cmd.frame;
-  options.animation = cmd.render.animation;
-  options.fps = cmd.render.fps;
-  options.integrator = cmd.render.integrator;
-  if (cmd.render.background) options.background = parse_color(*cmd.render.background);
-  if (cmd.render.ambient) options.ambient = parse_color(*cmd.render.ambient);
+  std::optional<LoadOptions> options = scene_load_options(cmd.render, *isa);
+  if (!options) return kExitBadInput;
+  options->frame = cmd.frame;
 
   PreviewBoard board(cmd.render.scene);
   PreviewRenderer renderer(board);
-  WatchSession session(cmd, options, board, renderer);
+  WatchSession session(cmd, *options, board, renderer);
   PreviewServer server(
       board,
       [&](int frame) {

@@ -109,27 +109,18 @@ class Builder {
       return c ? Vec3((*c)[0], (*c)[1], (*c)[2]) : otherwise;
     };
     g.background = Environment(color(options_.background, desc_.background));
-    if (desc_.environment && !options_.background) {  // --background replaces an image too
+    if (options_.environment) {  // --environment replaces the scene's background, colour or image
+      const LoadOptions::EnvironmentChoice& e = *options_.environment;
+      std::string why;
+      if (auto image = environment_image(e.path, why))
+        g.background = Environment(std::move(image), e.intensity, e.rotate);
+      else diags_.file_error(e.path, "--environment: " + why);
+    } else if (desc_.environment && !options_.background) {  // --background replaces an image too
       const EnvironmentReference& e = *desc_.environment;
       std::string why;
-      std::shared_ptr<const EnvironmentImage> image;
-      const LoadCache::Environment* kept =
-          options_.cache ? options_.cache->environment(e.resolved_path, usage_, options_.limits) : nullptr;
-      if (kept) {
-        image = kept->image;
-        usage_.texels += kept->texels;
-      } else {
-        const FileStamps stamps = FileStamps::of({e.resolved_path});  // before reading: a later change shows
-        const uint64_t before = usage_.texels;
-        image = load_environment_image(e.resolved_path, options_.limits, usage_, why);
-        if (image && options_.cache)
-          options_.cache->keep(e.resolved_path, LoadCache::Environment{stamps, image, usage_.texels - before});
-      }
-      if (!image) error(e.pointer, why);
-      else {
-        files_.push_back(e.resolved_path);
+      if (auto image = environment_image(e.resolved_path, why))
         g.background = Environment(std::move(image), e.intensity, e.rotate);
-      }
+      else error(e.pointer, why);
     }
     g.ambient = color(options_.ambient, desc_.ambient);
     set_timeline(g);
@@ -364,6 +355,26 @@ class Builder {
       }
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
+  }
+
+  // An environment image: kept from an earlier load (watch) or read; counted against the texel
+  // budget and recorded as an input either way. Null, with `why`, if it cannot be used.
+  std::shared_ptr<const EnvironmentImage> environment_image(const std::string& path, std::string& why) {
+    std::shared_ptr<const EnvironmentImage> image;
+    const LoadCache::Environment* kept =
+        options_.cache ? options_.cache->environment(path, usage_, options_.limits) : nullptr;
+    if (kept) {
+      image = kept->image;
+      usage_.texels += kept->texels;
+    } else {
+      const FileStamps stamps = FileStamps::of({path});  // before reading: a later change shows
+      const uint64_t before = usage_.texels;
+      image = load_environment_image(path, options_.limits, usage_, why);
+      if (image && options_.cache)
+        options_.cache->keep(path, LoadCache::Environment{stamps, image, usage_.texels - before});
+    }
+    if (image) files_.push_back(path);
+    return image;
   }
 
   void limit_error(const std::string& pointer, const std::string& message) { report_.over_limit(pointer, message); }

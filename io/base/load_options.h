@@ -66,6 +66,14 @@ struct LoadOptions {
   std::optional<std::string> integrator;
   // The scene's background and ambient colours replaced (--background, --ambient), linear RGB.
   std::optional<std::array<float, 3>> background, ambient;
+  // An environment image around the scene, replacing its background (--environment): a glTF
+  // model lit by an HDR image without a scene file.
+  struct EnvironmentChoice {
+    std::string path;
+    float intensity = 1.0f;
+    float rotate = 0.0f;  // degrees about +Y
+  };
+  std::optional<EnvironmentChoice> environment;
   // What earlier loads of the scene read and still hold, while their files are unchanged
   // (rtcli watch); null: read everything.
   LoadCache* cache = nullptr;
