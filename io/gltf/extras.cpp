@@ -1,11 +1,15 @@
 #include "io/gltf/extras.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <tiny_gltf.h>
 
 #include "io/gltf/images.h"
 #include "io/gltf/values.h"
+#include "io/json/locate.h"
+#include "io/json/reader.h"
 
 namespace rt {
 namespace {
@@ -17,10 +21,32 @@ bool flag(const tinygltf::Value& object, const char* key) {
   return v.IsBool() ? v.Get<bool>() : (v.IsNumber() && v.GetNumberAsDouble() != 0.0);
 }
 
+// Other exporters' lights in extras (objects under `rt_area_light`, `area_light`, `lamp`, ...): rtcli reads
+// only its own key, so each key that looks like a light is named in a warning rather than dropped
+// without a word (the model would get the default lamp instead).
+void warn_unknown_light_extras(const tinygltf::Value& extras, const std::string& where, const std::string& at,
+                               Reporter& report) {
+  for (const std::string& key : extras.Keys()) {
+    std::string lower = key;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    // A light is an object of its own ("lightmap_scale": 2 is not one).
+    if (key == "rtcli_area_light" || !extras.Get(key).IsObject() ||
+        (lower.find("light") == std::string::npos && lower.find("lamp") == std::string::npos))
+      continue;
+    std::string message = where + ": extras key \"" + key +
+                          "\" looks like a light, which rtcli does not read: no light is made from it (rtcli reads "
+                          "\"rtcli_area_light\": {shape, size, color, power, two_sided}, as tools/blender_export.py "
+                          "writes it)";
+    if (closest_match(key, {"rtcli_area_light"})) message += " (did you mean \"rtcli_area_light\"?)";
+    report.warning(pointer_child(at + "/extras", key), message, Anchor::kKey);
+  }
+}
+
 }  // namespace
 
 std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, const std::string& where,
                                                 const std::string& at, Reporter& report) {
+  if (extras.IsObject()) warn_unknown_light_extras(extras, where, at, report);
   if (!extras.IsObject() || !extras.Has("rtcli_area_light")) return std::nullopt;
   const tinygltf::Value& a = extras.Get("rtcli_area_light");
   const auto size = gltf_numbers(a, "size", 2);

@@ -28,17 +28,19 @@ TEST_CASE("cli: --environment lights a glTF model with an HDR image, no scene fi
   REQUIRE(rt::test::rtcli("render " + model + "-o " + out + "/plain.png").code == 0);
   REQUIRE(rt::test::rtcli("render " + model + "--environment scenes/textures/sky.hdr -o " + out + "/sky.png").code ==
           0);
-  REQUIRE(rt::test::rtcli("render " + model +
-                          "--environment scenes/textures/sky.hdr --environment-intensity 4 --environment-rotate 90 -o " +
-                          out + "/bright.png")
-              .code == 0);
+  REQUIRE(
+      rt::test::rtcli("render " + model +
+                      "--environment scenes/textures/sky.hdr --environment-intensity 4 --environment-rotate 90 -o " +
+                      out + "/bright.png")
+          .code == 0);
   // Blender's dark grey world becomes the sky, seen behind the model and lighting it; 4x brighter.
   const double plain = mean_level(out + "/plain.png"), sky = mean_level(out + "/sky.png"),
                bright = mean_level(out + "/bright.png");
   CHECK(sky > plain + 20.0);
   CHECK(bright > sky + 20.0);
   // The image is an input of the render: named in an EXR's settings, hashed with the scene's files.
-  REQUIRE(rt::test::rtcli("render " + model + "--environment scenes/textures/sky.hdr -o " + out + "/sky.exr").code == 0);
+  REQUIRE(rt::test::rtcli("render " + model + "--environment scenes/textures/sky.hdr -o " + out + "/sky.exr").code ==
+          0);
   std::string error;
   const auto exr = rt::read_exr(out + "/sky.exr", 1u << 20, error);
   REQUIRE(exr);
@@ -48,8 +50,10 @@ TEST_CASE("cli: --environment lights a glTF model with an HDR image, no scene fi
 TEST_CASE("cli: --environment refusals", "[cli][environment][errors]") {
   rt::test::Run r = rt::test::rtcli_bounded("render scenes/models/knot.glb --environment missing.hdr -o /tmp/x.png");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("missing.hdr: error: --environment: cannot read \"missing.hdr\": file not found"));
-  r = rt::test::rtcli_bounded("render scenes/models/knot.glb --environment scenes/textures/sky.hdr --background 1 -o /tmp/x.png");
+  CHECK_THAT(r.output,
+             Catch::Contains("missing.hdr: error: --environment: cannot read \"missing.hdr\": file not found"));
+  r = rt::test::rtcli_bounded(
+      "render scenes/models/knot.glb --environment scenes/textures/sky.hdr --background 1 -o /tmp/x.png");
   CHECK(r.code == 2);
   CHECK_THAT(r.output, Catch::Contains("--environment and --background both replace the scene's background"));
   r = rt::test::rtcli_bounded("render scenes/models/knot.glb --environment-intensity 2 -o /tmp/x.png");

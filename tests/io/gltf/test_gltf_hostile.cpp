@@ -315,3 +315,21 @@ TEST_CASE("glTF hostile: each refusal names its JSON pointer in the file, and a 
                         {"samplers", {{{"input", 0}, {"output", 0}, {"interpolation", "SMOOTH"}}}}}};
   check("pointer-interpolation.gltf", doc, "/animations/0/samplers/0/interpolation");
 }
+
+TEST_CASE("glTF extras: another exporter's light is named in a warning, not dropped without a word",
+          "[io][gltf][extras]") {
+  Json doc = triangle();
+  doc["nodes"][0]["name"] = "Lamp";
+  doc["nodes"][0]["extras"] = {{"rt_area_light", {{"size", {1, 1}}, {"power", 100}}},
+                               {"lightmap_scale", 2},  // a number: not a light
+                               {"notes", {{"light", "no"}}}};
+  rt::test::ImportProblems problems;
+  REQUIRE(import_gltf(write_gltf("other-light.gltf", square_positions(), doc), std::nullopt, {}, problems));
+  REQUIRE(problems.warnings.size() == 1);
+  CHECK_THAT(problems.warnings[0], Catch::Contains("node \"Lamp\": extras key \"rt_area_light\" looks like a light, "
+                                                   "which rtcli does not read") &&
+                                       Catch::Contains("(did you mean \"rtcli_area_light\"?)"));
+  const Diagnostic& d = problems.found.all().front();
+  CHECK(d.pointer == "/nodes/0/extras/rt_area_light");
+  CHECK(d.line > 0);
+}
