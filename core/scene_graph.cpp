@@ -1,6 +1,7 @@
 #include "core/scene_graph.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rt {
 namespace {
@@ -121,6 +122,21 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.light_selection =
       LightSelection(light_powers(scene.lights, scene.emitters, scene.background, scene.bvh.bounds()));
   return scene;
+}
+
+bool SceneGraph::ends_where_it_starts() const {
+  if (!animated || timeline.last_frame <= timeline.first_frame) return false;
+  const Pose first = pose(timeline.first_frame), last = pose(timeline.last_frame);
+  for (size_t n = 0; n < first.world.size(); ++n)
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) {
+        // Within rounding of the transform's own size (a 360-degree turn comes back to ~1e-7).
+        const float a = first.world[n][c][r], b = last.world[n][c][r];
+        if (!(std::fabs(a - b) <= 1e-5f * std::max(1.0f, std::max(std::fabs(a), std::fabs(b))))) return false;
+      }
+  const Camera a = camera_at(first), b = camera_at(last);
+  return glm::length(a.position - b.position) <= 1e-5f * std::max(1.0f, glm::length(a.position)) &&
+         glm::length(a.forward - b.forward) <= 1e-5f;
 }
 
 }  // namespace rt

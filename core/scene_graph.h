@@ -89,6 +89,9 @@ struct SceneGraph {
   // The tree at frame `frame` of the timeline (time frame / fps), or at any time.
   Pose pose(int frame) const { return pose_at(timeline.seconds(frame)); }
   Pose pose_at(float seconds) const;
+  // Whether the timeline's last frame shows its first again (every node where it started, as a
+  // turntable's 360 degrees do): a loop then plays one frame fewer, or the start shows twice.
+  bool ends_where_it_starts() const;
   // The shapes, mesh instances and CSG solids where the pose puts them (what at() builds its BVH over).
   // Geometry whose world transform is singular (animated to a zero scale: glTF's way of hiding
   // a part) or that reaches beyond the float range is left out, and said in `issues` when given.

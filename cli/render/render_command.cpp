@@ -46,7 +46,13 @@ struct RenderOutputs {
 FrameList frames_to_render(const RenderJob& job, const LoadedScene& loaded) {
   if (job.frames_given) return job.frames;
   const Timeline& t = loaded.graph.timeline;
-  if (!is_single_image(job.kind) && loaded.graph.animated) return FrameList::range(t.first_frame, t.last_frame);
+  if (!is_single_image(job.kind) && loaded.graph.animated) {
+    // A looping GIF whose last frame shows the first again (Blender's 0-120 turntable) ends one
+    // frame before it: the loop's start is shown once.
+    if (job.kind == OutputKind::kGif && loaded.graph.ends_where_it_starts())
+      return FrameList::range(t.first_frame, t.last_frame - 1);
+    return FrameList::range(t.first_frame, t.last_frame);
+  }
   return FrameList::range(loaded.frame, loaded.frame);
 }
 

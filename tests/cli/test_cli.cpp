@@ -378,3 +378,28 @@ TEST_CASE("cli: --time stops the path tracer after whole passes; with time enoug
   CHECK_THAT(r.output, Catch::Contains("--time stops the path tracer between passes"));
   CHECK_FALSE(std::filesystem::exists(dir + "/w.png"));
 }
+
+TEST_CASE("cli: a looping GIF whose last frame shows the first again ends one frame before it", "[cli][animation]") {
+  const std::string out = rt::test::fresh_folder("gif-loop");
+  const auto scene = [&](int degrees) {
+    return rt::test::write_file("gif-loop/turn" + std::to_string(degrees) + ".json",
+                                R"({"render": {"width": 16, "height": 12},
+ "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0]},
+ "materials": {"m": {"kd": [0.8, 0.2, 0.2]}},
+ "lights": [{"type": "point", "position": [2, 4, 3]}],
+ "nodes": [{"name": "box", "shape": "cube", "material": "m"}],
+ "animation": {"fps": 12, "tracks": [{"node": "box", "property": "rotate",
+   "keys": [{"frame": 0, "value": {"axis": [0, 1, 0], "degrees": 0}},
+            {"frame": 12, "value": {"axis": [0, 1, 0], "degrees": )" +
+                                    std::to_string(degrees) + "}}]}]}}");
+  };
+  const auto frames = [&](const std::string& path, const std::string& output) {
+    const std::string stats = out + "/stats.json";
+    REQUIRE(rt::test::rtcli("render '" + path + "' -q -o '" + out + "/" + output + "' --stats '" + stats + "'").code ==
+            0);
+    return rt::Json::parse(rt::test::read_file(stats))["frame_list"].get<std::string>();
+  };
+  CHECK(frames(scene(360), "loop.gif") == "0-11");       // frame 12 is frame 0 again: 12 frames
+  CHECK(frames(scene(360), "loop_####.png") == "0-12");  // numbered frames: every one
+  CHECK(frames(scene(270), "quarter.gif") == "0-12");    // not a loop: every frame
+}
