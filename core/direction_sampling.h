@@ -56,6 +56,18 @@ struct ShadingFrame {
 
   ShadingFrame() = default;
   explicit ShadingFrame(Vec3 normal) : n(normal) { orthonormal_basis(normal, t, b); }
+  // x along `tangent` made perpendicular to the unit normal (an anisotropic lobe's direction);
+  // any frame when the tangent is (nearly) along the normal.
+  ShadingFrame(Vec3 normal, Vec3 tangent) : n(normal) {
+    const Vec3 along = tangent - normal * glm::dot(normal, tangent);
+    const float length2 = glm::dot(along, along);
+    if (!(length2 > 1e-12f)) {
+      orthonormal_basis(normal, t, b);
+      return;
+    }
+    t = along / std::sqrt(length2);
+    b = glm::cross(normal, t);
+  }
   Vec3 to_local(Vec3 v) const { return Vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)); }
   Vec3 to_world(Vec3 v) const { return v.x * t + v.y * b + v.z * n; }
 };

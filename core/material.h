@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "core/material_layers.h"
 #include "core/math.h"
 #include "core/texture/texture_slot.h"
 
@@ -17,6 +18,7 @@ struct MetallicRoughness {
   float metallic = 1.0f;
   float roughness = 1.0f;
   TextureSlot texture;  // glTF's metallicRoughnessTexture: G scales roughness, B metallic (linear)
+  PbrLayers layers;     // clearcoat, sheen, specular, anisotropy, iridescence, dispersion
 };
 
 // glTF's alphaMode MASK: the surface is not there where coverage < cutoff, for every ray
@@ -67,9 +69,26 @@ struct Material {
   AlphaCutoutParams cutout;
 
   // Every texture slot, for whoever renumbers textures (a glTF file's, added to a scene's).
-  std::array<TextureSlot*, 8> texture_slots() {
-    return {&texture,          &specular_texture, &bump.height,    &normal_map.map,
-            &emission_texture, &pbr.texture,      &cutout.texture, &transmission_texture};
+  std::array<TextureSlot*, 18> texture_slots() {
+    PbrLayers& l = pbr.layers;
+    return {&texture,
+            &specular_texture,
+            &bump.height,
+            &normal_map.map,
+            &emission_texture,
+            &pbr.texture,
+            &cutout.texture,
+            &transmission_texture,
+            &l.clearcoat.texture,
+            &l.clearcoat.roughness_texture,
+            &l.clearcoat.normal_map.map,
+            &l.sheen.color_texture,
+            &l.sheen.roughness_texture,
+            &l.specular.texture,
+            &l.specular.color_texture,
+            &l.anisotropy.texture,
+            &l.iridescence.texture,
+            &l.iridescence.thickness_texture};
   }
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }

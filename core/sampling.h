@@ -20,7 +20,7 @@
 
 namespace rt {
 
-enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy, kBsdf, kRoulette };
+enum class SamplePurpose : uint32_t { kPixel = 1, kLens, kLight, kGlossy, kBsdf, kRoulette, kWavelength };
 
 // render.sampler: how a pixel's samples draw their numbers (names in core/render_settings.h).
 enum class SampleSequence { kSobol, kIndependent };

@@ -5,10 +5,6 @@
 namespace rt {
 namespace {
 
-// Below this alpha (roughness ~0.03) GGX is a mirror for any purpose, and its density too sharp
-// for float: the lobe becomes a delta.
-constexpr float kSmoothAlpha = 1e-3f;
-
 float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
 // The Phong lobe about the mirror direction r (local), as f: (n + 1) / (2 pi) cos^n(alpha) /
@@ -33,40 +29,19 @@ Vec3 sample_phong(Vec3 r, float exponent, Vec2 u) {
 
 Vec3 mirror_local(Vec3 wo) { return Vec3(-wo.x, -wo.y, wo.z); }
 
-// glTF's dielectric Fresnel term for the diffuse layer (F0 = 0.04).
-float dielectric_schlick(float cos_theta) {
-  const float m = std::clamp(1.0f - cos_theta, 0.0f, 1.0f);
-  return 0.04f + 0.96f * (m * m) * (m * m) * m;
+// The frame of the lobes: about the shading normal, its x axis along an anisotropic lobe's direction.
+ShadingFrame lobe_frame(const EvaluatedSurface& s) {
+  return s.pbr && s.layers.anisotropy > 0.0f ? ShadingFrame(s.n, s.layers.anisotropy_direction) : ShadingFrame(s.n);
 }
 
 }  // namespace
 
-Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(eta) {
+Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(lobe_frame(s)), ng_(s.ng), eta_(eta) {
   wo_local_ = frame_.to_local(s.wo);
   const float cos_o = std::max(wo_local_.z, 0.0f);
   float weight[kLobeCount] = {};
   if (s.pbr) {
-    pbr_ = true;
-    // s.transmission is already tinted by the base colour and none through metal; the opaque
-    // layer keeps what the dielectric does not take.
-    layer_ = 1.0f - std::clamp(s.transmission_factor, 0.0f, 1.0f);
-    base_diffuse_ = (1.0f - s.metallic) * layer_ * s.base_color;
-    f0_ = glm::mix(Vec3(0.04f), s.base_color, s.metallic);
-    ggx_.alpha = s.roughness * s.roughness;
-    const Vec3 fresnel = layer_ * schlick_fresnel(f0_, cos_o);
-    weight[kDiffuse] = average(base_diffuse_) * (1.0f - dielectric_schlick(cos_o));
-    if (ggx_.alpha < kSmoothAlpha) {
-      mirror_ = fresnel;
-      weight[kMirror] = average(mirror_);
-    } else {
-      weight[kSpecular] = average(fresnel);
-    }
-    glass_reflect_ = Vec3(1.0f - layer_);
-    glass_refract_ = s.transmission;
-    // Rough transmission is a GGX dielectric of the same roughness; a smooth one a delta, and so
-    // is an interface of equal indices (BLEND's coverage), through which light passes straight.
-    const bool smooth_glass = ggx_.alpha < kSmoothAlpha || eta_ == 1.0f;
-    weight[smooth_glass ? kGlass : kRoughGlass] = average(glass_reflect_ + glass_refract_) * 0.5f;
+    init_gltf(s, cos_o, weight);
   } else {
     // The transmitted share T goes to the dielectric; the opaque lobes share what is left.
     const Vec3 opaque = Vec3(1.0f) - s.transmission;
@@ -102,7 +77,8 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(s.n), ng_(s.ng), eta_(
   if (sum > 0.0f)
     for (int i = 0; i < kLobeCount; ++i) probability_[i] = weight[i] / sum;
   smooth_ = probability_[kDiffuse] > 0.0f || probability_[kSpecular] > 0.0f || probability_[kGlossy] > 0.0f ||
-            probability_[kRoughGlass] > 0.0f;
+            probability_[kRoughGlass] > 0.0f || probability_[kSheen] > 0.0f ||
+            (probability_[kClearcoat] > 0.0f && !coat_mirror_);
 }
 
 // pbrt-v4's rough dielectric (DielectricBxDF), after Walter et al., "Microfacet Models for
@@ -126,10 +102,10 @@ void Bsdf::rough_glass(Vec3 wi, Vec3& f, float& pdf) const {
   const float wo_m = glm::dot(wo, wm), wi_m = glm::dot(wi, wm);
   if (wo_m <= 0.0f || wi_m * wi.z < 0.0f) return;  // a microfacet seen from behind
   const float fresnel = fresnel_dielectric(wo_m, eta_);
-  const float d = ggx_.d(wm);
+  const float d = glass_ggx_.d(wm);
   const Vec3 wi_up(wi.x, wi.y, std::fabs(wi.z));
-  const float g = ggx_.g1(wo) * ggx_.g1(wi_up);
-  const float visible = ggx_.g1(wo) * d * wo_m / wo.z;  // the density of drawing wm from wo
+  const float g = glass_ggx_.g1(wo) * glass_ggx_.g1(wi_up);
+  const float visible = glass_ggx_.g1(wo) * d * wo_m / wo.z;  // the density of drawing wm from wo
   if (reflect) {
     f = glass_reflect_ * (d * g * fresnel / (4.0f * wo.z));
     pdf = visible / (4.0f * wo_m) * fresnel;
@@ -141,22 +117,10 @@ void Bsdf::rough_glass(Vec3 wi, Vec3& f, float& pdf) const {
   }
 }
 
-Vec3 Bsdf::eval_local(Vec3 wi) const {
+Vec3 Bsdf::eval_local(Vec3 wi_world, Vec3 wi) const {
+  if (pbr_) return eval_gltf(wi_world, wi);
   const Vec3 wo = wo_local_;
-  Vec3 glass(0.0f);
-  if (probability_[kRoughGlass] > 0.0f) {
-    float unused;
-    rough_glass(wi, glass, unused);
-  }
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return glass;
-  if (pbr_) {
-    const Vec3 h = glm::normalize(wo + wi);
-    const float wo_h = std::max(glm::dot(wo, h), 0.0f);
-    Vec3 f = base_diffuse_ * ((1.0f - dielectric_schlick(wo_h)) * wi.z / kPi);
-    if (probability_[kSpecular] > 0.0f)
-      f += layer_ * schlick_fresnel(f0_, wo_h) * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
-    return f + glass;
-  }
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return Vec3(0.0f);
   const Vec3 r = mirror_local(wo);
   Vec3 f = diffuse_ * (wi.z / kPi);
   if (probability_[kSpecular] > 0.0f) f += specular_ * (phong_lobe(wi, wo, r, specular_exponent_) * wi.z);
@@ -164,24 +128,16 @@ Vec3 Bsdf::eval_local(Vec3 wi) const {
   return f;
 }
 
-float Bsdf::pdf_local(Vec3 wi) const {
+float Bsdf::pdf_local(Vec3 wi_world, Vec3 wi) const {
+  if (pbr_) return pdf_gltf(wi_world, wi);
   const Vec3 wo = wo_local_;
-  float glass = 0.0f;
-  if (probability_[kRoughGlass] > 0.0f) {
-    Vec3 unused;
-    rough_glass(wi, unused, glass);
-    glass *= probability_[kRoughGlass];
-  }
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return glass;
-  float p = probability_[kDiffuse] * wi.z / kPi;
-  if (pbr_) {
-    if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
-    return p + glass;
-  }
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
+  const float p = probability_[kDiffuse] * wi.z / kPi;
   const Vec3 r = mirror_local(wo);
-  if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * phong_pdf(wi, r, specular_exponent_);
-  if (probability_[kGlossy] > 0.0f) p += probability_[kGlossy] * phong_pdf(wi, r, glossy_exponent_);
-  return p;
+  float lobes = p;
+  if (probability_[kSpecular] > 0.0f) lobes += probability_[kSpecular] * phong_pdf(wi, r, specular_exponent_);
+  if (probability_[kGlossy] > 0.0f) lobes += probability_[kGlossy] * phong_pdf(wi, r, glossy_exponent_);
+  return lobes;
 }
 
 // wi must be on the same side of the geometric surface as of the shading one: a shading normal
@@ -196,13 +152,13 @@ bool Bsdf::sides_agree(Vec3 wi, Vec3 wi_local) const {
 Vec3 Bsdf::eval(Vec3 wi) const {
   if (!smooth_) return Vec3(0.0f);
   const Vec3 local = frame_.to_local(wi);
-  return sides_agree(wi, local) ? eval_local(local) : Vec3(0.0f);
+  return sides_agree(wi, local) ? eval_local(wi, local) : Vec3(0.0f);
 }
 
 float Bsdf::pdf(Vec3 wi) const {
   if (!smooth_) return 0.0f;
   const Vec3 local = frame_.to_local(wi);
-  return sides_agree(wi, local) ? pdf_local(local) : 0.0f;
+  return sides_agree(wi, local) ? pdf_local(wi, local) : 0.0f;
 }
 
 bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
@@ -216,6 +172,15 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
   if (p <= 0.0f) return false;
   const Vec3 wo = frame_.to_world(wo_local_);
   out = BsdfSample{};
+  if (lobe == kClearcoat && coat_mirror_) {  // a smooth coat: the mirror about its own normal
+    Vec3 mirror = reflect(-wo, coat_frame_.n);
+    if (glm::dot(mirror, ng_) <= 0.0f) mirror = reflect(-wo, ng_);
+    out.delta = true;
+    out.wi = mirror;
+    out.weight = Vec3(coat_ * schlick_fresnel(Vec3(0.04f), coat_wo_.z).x / p);
+    out.pdf = p;
+    return true;
+  }
   if (lobe == kMirror || lobe == kGlass) {
     out.delta = true;
     Vec3 mirror = reflect(-wo, frame_.n);
@@ -246,10 +211,13 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
     out.transmitted = true;
     return true;
   }
-  Vec3 wi_local;
-  if (lobe == kRoughGlass) {
+  Vec3 wi_local, wi;
+  if (lobe == kClearcoat || lobe == kSheen) {
+    if (!sample_gltf_lobe(static_cast<Lobe>(lobe), u, wi)) return false;
+    wi_local = frame_.to_local(wi);
+  } else if (lobe == kRoughGlass) {
     if (wo_local_.z <= 0.0f) return false;
-    const Vec3 h = ggx_.sample_visible(wo_local_, u);
+    const Vec3 h = glass_ggx_.sample_visible(wo_local_, u);
     const float fresnel = fresnel_dielectric(glm::dot(wo_local_, h), eta_);
     // A reflection must stay above the surface and a refraction go below it: the other way
     // round it is a direction whose density belongs to the other branch.
@@ -269,13 +237,13 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
     const float exponent = lobe == kSpecular ? specular_exponent_ : glossy_exponent_;
     wi_local = sample_phong(mirror_local(wo_local_), exponent, u);
   }
-  const Vec3 wi = frame_.to_world(wi_local);
+  if (lobe != kClearcoat && lobe != kSheen) wi = frame_.to_world(wi_local);
   if (!sides_agree(wi, wi_local)) return false;
-  const float density = pdf_local(wi_local);
+  const float density = pdf_local(wi, wi_local);
   if (!(density > 0.0f)) return false;
   out.wi = wi;
   out.pdf = density;
-  out.weight = eval_local(wi_local) / density;
+  out.weight = eval_local(wi, wi_local) / density;
   out.transmitted = wi_local.z < 0.0f;
   return true;
 }

@@ -7,6 +7,15 @@
 //   reflectivity: a mirror (delta), or with glossy width a a Phong lobe of exponent 12 / a^2
 //   transmission T: smooth dielectric (delta), Fresnel-split into reflection and refraction;
 //                  glTF's with roughness: a rough GGX dielectric (Walter et al. 2007)
+// glTF's layered extensions (materials/bsdf_gltf.cpp; docs/rendering.md, "glTF material extensions"):
+//   specular, ior  the dielectric's F = F0 + (F90 - F0)(1 - v.h)^5, F0 and F90 given per point
+//   iridescence    F mixed with the thin film's reflectance (materials/thin_film.h) by its factor
+//   anisotropy     the GGX lobe with alpha_t along the direction and alpha across it
+//   sheen          + Charlie sheen (materials/sheen.h); the rest x (1 - max(colour) E(cos)), the
+//                  smaller of the view's and the light's
+//   clearcoat      + a GGX layer of F0 0.04 about its own normal (a mirror when smooth); the rest
+//                  x (1 - clearcoat F_coat(n_coat.v)), the smaller of the view's and the light's
+//                  (the specification attenuates by the view's alone; both keep f reciprocal)
 // A Phong material whose weights add up to more than 1 in a channel is scaled down to 1, so that
 // no surface gives back more light than it receives. No virtual calls, nothing allocated.
 #pragma once
@@ -27,7 +36,9 @@ struct BsdfSample {
 
 class Bsdf {
  public:
-  enum Lobe { kDiffuse, kSpecular, kGlossy, kMirror, kGlass, kRoughGlass, kLobeCount };
+  // (kClearcoat and kSheen come before kRoughGlass so that, without them, a lobe is picked from
+  // the same numbers as before they existed.)
+  enum Lobe { kDiffuse, kSpecular, kGlossy, kMirror, kGlass, kClearcoat, kSheen, kRoughGlass, kLobeCount };
 
   // `eta` is the index of refraction past the surface over the index on the ray's side (for
   // transmission; 1 when the surface lets nothing through).
@@ -48,8 +59,19 @@ class Bsdf {
   float lobe_probability(Lobe lobe) const { return probability_[lobe]; }
 
  private:
-  Vec3 eval_local(Vec3 wi_local) const;
-  float pdf_local(Vec3 wi_local) const;
+  // glTF's model: its lobes' weights at wo (the constructor's share).
+  void init_gltf(const EvaluatedSurface& s, float cos_o, float* weight);
+  // The specular lobe's Fresnel at cos(v.h), and the dielectric's part of it (for the diffuse
+  // layer under it).
+  Vec3 gltf_fresnel(float cos_h, Vec3& dielectric) const;
+  Vec3 eval_gltf(Vec3 wi, Vec3 wi_local) const;
+  float pdf_gltf(Vec3 wi, Vec3 wi_local) const;
+  // The clear coat's f |cos| and density at wi (world), 0 when it is a mirror.
+  Vec3 coat_f(Vec3 wi) const;
+  float coat_pdf(Vec3 wi) const;
+  bool sample_gltf_lobe(Lobe lobe, Vec2 u, Vec3& wi) const;
+  Vec3 eval_local(Vec3 wi, Vec3 wi_local) const;
+  float pdf_local(Vec3 wi, Vec3 wi_local) const;
   // The rough dielectric's f |cos| and its density (with its own reflect / refract split) at wi.
   void rough_glass(Vec3 wi, Vec3& f, float& pdf) const;
   bool sides_agree(Vec3 wi, Vec3 wi_local) const;
@@ -72,7 +94,24 @@ class Bsdf {
   Vec3 base_diffuse_{0.0f};  // (1 - metallic)(1 - transmission) base
   Vec3 f0_{0.04f};
   float layer_ = 1.0f;  // 1 - transmission: what the opaque layer keeps
-  Ggx ggx_;
+  Vec3 base_color_{0.0f};
+  float metallic_ = 0.0f;
+  Ggx ggx_;        // the specular lobe's (anisotropic with KHR_materials_anisotropy)
+  Ggx glass_ggx_;  // the rough dielectric's
+  // the layered extensions (EvaluatedLayers)
+  bool general_fresnel_ = false;  // F0, F90 or iridescence other than the core model's
+  Vec3 dielectric_f0_{0.04f};
+  float dielectric_f90_ = 1.0f;
+  float iridescence_ = 0.0f, iridescence_ior_ = 1.3f, iridescence_thickness_ = 0.0f;
+  float coat_ = 0.0f;  // the clearcoat factor
+  bool coat_mirror_ = false;
+  Vec3 coat_wo_{0.0f, 0.0f, 1.0f};  // wo in the coat's frame
+  ShadingFrame coat_frame_;
+  Ggx coat_ggx_;
+  float coat_keep_ = 1.0f;  // 1 - coat F_coat(n_coat.v): what passes to the layers below
+  Vec3 sheen_color_{0.0f};
+  float sheen_roughness_ = 0.0f, sheen_max_ = 0.0f;
+  float sheen_keep_o_ = 1.0f;  // 1 - max(colour) E(n.v)
   float probability_[kLobeCount] = {};
   bool smooth_ = false;
 };

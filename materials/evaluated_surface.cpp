@@ -1,24 +1,13 @@
 #include "materials/evaluated_surface.h"
 
+#include "materials/evaluated_layers.h"
 #include "materials/map_point.h"
 #include "materials/pbr_to_phong.h"
+#include "materials/slot_lookup.h"
 #include "materials/surface_detail.h"
 
 namespace rt {
 namespace {
-
-Vec3 sample(const TextureSlot& slot, const std::vector<Texture>& textures, Vec2 uv, const UvFootprint& footprint,
-            SurfaceDetailSwitches detail) {
-  const TextureFilter filter = detail.override_filter ? detail.filter : slot.mapping.filter;
-  return textures[slot.texture].sample(uv, slot.mapping.wrap, filter, footprint);
-}
-
-// A colour slot at the hit: its mapping, mip level from the ray cone's footprint, and filter.
-Vec3 sample_at(const TextureSlot& slot, const SurfaceInteraction& si, const std::vector<Texture>& textures,
-               Vec3 direction, float cone_width, SurfaceDetailSwitches detail) {
-  const MappedPoint p = map_point(slot.mapping, si);
-  return sample(slot, textures, p.uv, uv_footprint(p, si.geometric_normal, direction, cone_width), detail);
-}
 
 // The outward shading normal after the material's normal map, then its bump map.
 Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direction,
@@ -26,7 +15,7 @@ Vec3 detailed_normal(const Material& m, const SurfaceInteraction& si, Vec3 direc
   Vec3 n = si.shading_normal;
   if (m.normal_map.map.present()) {
     const MappedPoint p = map_point(m.normal_map.map.mapping, si);
-    const Vec3 texel = sample(m.normal_map.map, textures, p.uv, uv_footprint(p, n, direction, cone_width), detail);
+    const Vec3 texel = slot_sample(m.normal_map.map, textures, p.uv, uv_footprint(p, n, direction, cone_width), detail);
     // The file's own tangents (glTF TANGENT) belong to its first texture coordinates, unmoved.
     const TextureMapping& mapping = m.normal_map.map.mapping;
     const bool file_tangents = si.tangent.w != 0.0f && mapping.projection == Projection::kUv && mapping.uv_set == 0 &&
@@ -51,7 +40,7 @@ Vec3 own_emission(const Material& m, const SurfaceInteraction& si, const std::ve
                   float cone_width, SurfaceDetailSwitches detail) {
   Vec3 e = m.emission;
   if (m.emission_texture.present() && detail.textures && e != Vec3(0.0f))
-    e *= sample_at(m.emission_texture, si, textures, direction, cone_width, detail);
+    e *= slot_at(m.emission_texture, si, textures, direction, cone_width, detail);
   return e;
 }
 
@@ -59,7 +48,7 @@ Vec3 own_emission(const Material& m, const SurfaceInteraction& si, const std::ve
 Vec3 base_color_at(const Material& m, const SurfaceInteraction& si, const std::vector<Texture>& textures,
                    Vec3 direction, float cone_width, SurfaceDetailSwitches detail) {
   Vec3 kd = m.kd * Vec3(si.color);
-  if (detail.textures && m.texture.present()) kd *= sample_at(m.texture, si, textures, direction, cone_width, detail);
+  if (detail.textures && m.texture.present()) kd *= slot_at(m.texture, si, textures, direction, cone_width, detail);
   return kd;
 }
 
@@ -98,11 +87,11 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
   const Vec3 kd = base_color_at(m, si, textures, -s.wo, cone_width, detail);
   Vec3 transmission = m.transmission;
   if (detail.textures && m.transmission_texture.present() && m.transmissive())
-    transmission *= sample_at(m.transmission_texture, si, textures, -s.wo, cone_width, detail).x;
+    transmission *= slot_at(m.transmission_texture, si, textures, -s.wo, cone_width, detail).x;
   if (m.pbr.enabled) {  // glTF's model, converted here so that its texture can vary it
     float metallic = m.pbr.metallic, roughness = m.pbr.roughness;
     if (detail.textures && m.pbr.texture.present()) {
-      const Vec3 t = sample_at(m.pbr.texture, si, textures, -s.wo, cone_width, detail);
+      const Vec3 t = slot_at(m.pbr.texture, si, textures, -s.wo, cone_width, detail);
       roughness *= t.y;
       metallic *= t.z;
     }
@@ -110,7 +99,12 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     s.base_color = kd;
     s.metallic = std::clamp(metallic, 0.0f, 1.0f);
     s.roughness = std::clamp(roughness, 0.0f, 1.0f);
-    const PhongTerms p = pbr_to_phong(kd, metallic, roughness);
+    // BLEND's see-through index 1 is not the surface's: it reflects as the core model's 1.5.
+    const float reflect_ior = m.transmission_is_coverage && m.ior == 1.0f ? 1.5f : m.ior;
+    s.layers = evaluate_layers(m.pbr.layers, reflect_ior, si, s.wo, side, textures, cone_width, detail);
+    const PhongTerms p = s.layers.any_layer() || !s.layers.default_fresnel()
+                             ? pbr_to_phong(kd, metallic, roughness, s.layers, glm::dot(s.n, s.wo))
+                             : pbr_to_phong(kd, metallic, roughness);
     // KHR_materials_transmission: metal lets nothing through; what passes is tinted by the base
     // colour and blurred by the roughness (Whitted: refracted rays spread like glossy ones).
     // (BLEND's transmission is coverage: what the surface does not cover passes untinted.)
@@ -128,7 +122,7 @@ EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& s
     s.diffuse = kd * (Vec3(1.0f) - transmission);
     s.specular = m.ks;
     if (detail.textures && m.specular_texture.present())
-      s.specular *= sample_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
+      s.specular *= slot_at(m.specular_texture, si, textures, -s.wo, cone_width, detail);
     s.shininess = m.shininess;
     s.reflectivity = m.reflectivity;
     s.glossy = m.glossy;

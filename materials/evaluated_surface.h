@@ -10,6 +10,7 @@
 #include "core/material.h"
 #include "core/render_settings.h"
 #include "core/texture/texture.h"
+#include "materials/evaluated_layers.h"
 
 namespace rt {
 
@@ -42,6 +43,7 @@ struct EvaluatedSurface {
   Vec3 base_color{0.0f};  // textured, times COLOR_0
   float metallic = 0.0f;
   float roughness = 1.0f;
+  EvaluatedLayers layers;  // clearcoat, sheen, specular, anisotropy, iridescence, dispersion
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };

@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include "core/math.h"
+#include "materials/evaluated_layers.h"
 
 namespace rt {
 
@@ -38,5 +39,18 @@ inline PhongTerms pbr_to_phong(Vec3 base_color, float metallic, float roughness)
   p.glossy = 2.0f * r2;
   return p;
 }
+
+// The same with glTF's layered extensions, as Whitted approximates them (docs/rendering.md,
+// "glTF material extensions"), seen at `cos_view` from the shading normal:
+//   specular, ior   F0 = mix(the dielectric's F0 (x F90 when it is the grazing limit), base, metallic)
+//   iridescence     F0 mixed with the thin film's reflectance at the viewing angle, by its factor
+//   anisotropy      one isotropic lobe of the geometric mean width, sqrt(alpha_t alpha_b)
+//   sheen           kd, ks, reflectivity x (1 - max(colour) E(view)); kd + colour E(view)
+//   clearcoat       all x (1 - c F_coat(view)); ks and reflectivity + c F_coat(view) with the
+//                   coat's sharpness, glossy width and exponent mixed by the two reflections' shares
+//                   (the coat shares the base's normal)
+//   dispersion      none: one index for every colour
+PhongTerms pbr_to_phong(Vec3 base_color, float metallic, float roughness, const EvaluatedLayers& layers,
+                        float cos_view);
 
 }  // namespace rt

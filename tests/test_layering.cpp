@@ -23,7 +23,7 @@ namespace {
 // The top-level files above the basics are named here one by one.
 const std::set<std::string> kCore{
     "core/",       "core/texture/",     "core/shapes/",      "core/animation/",        "core/csg/",
-    "core/accel/", "core/scene_assets", "core/material.h",   "core/render_settings.h", "core/lights/",
+    "core/accel/", "core/scene_assets", "core/material",     "core/render_settings.h", "core/lights/",
     "core/scene.", "core/scene_graph",  "core/csg_template", "core/frame_scenes",      "core/denoise/"};
 
 // `own` and the given layers.
@@ -50,11 +50,11 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"core/csg/", {"core/", "core/shapes/", "core/csg/"}},
       {"core/accel/", {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/"}},
       {"core/scene_assets",
-       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h", "core/scene_assets"}},
-      {"core/material.h", {"core/", "core/texture/"}},
+       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material", "core/scene_assets"}},
+      {"core/material", {"core/", "core/texture/", "core/material"}},
       {"core/render_settings.h", {"core/", "core/texture/"}},
       {"core/lights/",
-       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material.h", "core/scene_assets",
+       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material", "core/scene_assets",
         "core/lights/"}},
       {"core/scene.", kCore},
       {"core/scene_graph", kCore},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/material.h"
+#include "materials/dispersion.h"
 
 namespace rt {
 
@@ -57,16 +58,24 @@ struct MediumCrossing {
   float n_before = 1.0f, n_after = 1.0f;
 };
 
-inline float medium_index(const MediumStack& media, const std::vector<Material>& materials) {
-  return media.empty() ? 1.0f : materials[media.innermost()].ior;
+// A material's index; at `wavelength_nm` (> 0: a path that carries one) its dispersed index
+// (KHR_materials_dispersion).
+inline float material_index(const Material& m, float wavelength_nm) {
+  return wavelength_nm > 0.0f ? dispersed_ior(m.ior, m.pbr.layers.dispersion, wavelength_nm) : m.ior;
+}
+
+inline float medium_index(const MediumStack& media, const std::vector<Material>& materials,
+                          float wavelength_nm = 0.0f) {
+  return media.empty() ? 1.0f : material_index(materials[media.innermost()], wavelength_nm);
 }
 
 inline MediumCrossing cross_medium(const MediumStack& media, uint32_t medium, bool entering,
-                                   const std::vector<Material>& materials) {
+                                   const std::vector<Material>& materials, float wavelength_nm = 0.0f) {
   MediumCrossing c;
   c.beyond = entering ? media.entered(medium) : media.left(medium);
-  c.n_before = entering ? medium_index(media, materials) : materials[medium].ior;
-  c.n_after = medium_index(c.beyond, materials);
+  c.n_before =
+      entering ? medium_index(media, materials, wavelength_nm) : material_index(materials[medium], wavelength_nm);
+  c.n_after = medium_index(c.beyond, materials, wavelength_nm);
   return c;
 }
 

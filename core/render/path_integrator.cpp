@@ -79,7 +79,8 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
   bool delta = true;      // the last bounce was a delta lobe (or the camera): what it meets counts fully
   float bsdf_pdf = 0.0f;  // the density of the last bounce's direction, for MIS where it meets a light
   float cone_width = ctx.pixel_footprint, cone_spread = ctx.pixel_spread;
-  float travelled = 0.0f;  // along the path before this segment: the layers' distance (record below)
+  float travelled = 0.0f;   // along the path before this segment: the layers' distance (record below)
+  float wavelength = 0.0f;  // > 0 once the path has met dispersive glass (materials/dispersion.h)
   for (int bounce = 0;; ++bounce) {
     const float length = glm::length(ray.direction);
     const Vec3 dir = ray.direction / length;
@@ -142,7 +143,12 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     float eta = 1.0f;
     MediumStack beyond = media;
     if (s.transmissive()) {
-      const MediumCrossing crossing = cross_medium(media, s.medium, s.entering, scene.materials());
+      if (wavelength == 0.0f && scene.materials()[s.medium].pbr.layers.dispersion > 0.0f) {
+        // Dispersive glass: the path goes on at one wavelength, weighted by its colour.
+        wavelength = wavelength_from(ctx.samples.get1(SamplePurpose::kWavelength, 0, 0));
+        beta *= wavelength_weight(wavelength);
+      }
+      const MediumCrossing crossing = cross_medium(media, s.medium, s.entering, scene.materials(), wavelength);
       beyond = crossing.beyond;
       eta = crossing.n_after / crossing.n_before;
     }

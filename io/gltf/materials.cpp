@@ -20,6 +20,101 @@ GltfTextureRef texture_ref(int index, int texcoord, const tinygltf::ExtensionMap
 }
 
 Vec3 clamped01(Vec3 v) { return glm::clamp(v, Vec3(0.0f), Vec3(1.0f)); }
+float clamped01(float v) { return std::clamp(v, 0.0f, 1.0f); }
+
+// A textureInfo inside a material extension (tinygltf parses only the core ones): its index,
+// texCoord and own extensions (KHR_texture_transform). No slot when absent.
+TextureSlot extension_texture(const tinygltf::Value& ext, const char* key, const char* extension_name,
+                              ImageDecoder& images, TextureEncoding encoding, const std::string& where,
+                              const std::string& at) {
+  const tinygltf::Value& info = ext.Get(key);
+  const auto index = info.IsObject() ? gltf_number(info, "index") : std::nullopt;
+  if (!index || *index < 0) return {};
+  const auto texcoord = gltf_number(info, "texCoord");
+  tinygltf::ExtensionMap extensions;
+  const tinygltf::Value& own = info.Get("extensions");
+  if (own.IsObject())
+    for (const std::string& name : own.Keys()) extensions[name] = own.Get(name);
+  return images.slot(texture_ref(static_cast<int>(*index), texcoord ? static_cast<int>(*texcoord) : 0, extensions,
+                                 at + "/extensions/" + extension_name + "/" + key),
+                     encoding, where + " " + key);
+}
+
+Vec3 color_of(const tinygltf::Value& ext, const char* key, Vec3 otherwise) {
+  const auto given = gltf_numbers(ext, key, 3);
+  return given ? clamped01(Vec3((*given)[0], (*given)[1], (*given)[2])) : otherwise;
+}
+
+// The layered extensions (core/material_layers.h), each factor clamped to what the specification allows.
+void import_layers(const tinygltf::ExtensionMap& extensions, ImageDecoder& images, const std::string& where,
+                   const std::string& at, PbrLayers& out) {
+  const auto texture = [&](const tinygltf::Value& ext, const char* key, const char* name, TextureEncoding e) {
+    return extension_texture(ext, key, name, images, e, where, at);
+  };
+  constexpr auto kLinear = TextureEncoding::kLinear;
+  if (const auto* e = extension(extensions, "KHR_materials_clearcoat")) {
+    const char* name = "KHR_materials_clearcoat";
+    ClearcoatLayer& c = out.clearcoat;
+    c.factor = clamped01(gltf_number(*e, "clearcoatFactor").value_or(0.0f));
+    c.roughness = clamped01(gltf_number(*e, "clearcoatRoughnessFactor").value_or(0.0f));
+    if (c.factor > 0.0f) {
+      c.texture = texture(*e, "clearcoatTexture", name, kLinear);
+      c.roughness_texture = texture(*e, "clearcoatRoughnessTexture", name, kLinear);
+      c.normal_map.map = texture(*e, "clearcoatNormalTexture", name, kLinear);
+      const tinygltf::Value& info = e->Get("clearcoatNormalTexture");
+      if (info.IsObject()) c.normal_map.scale = gltf_number(info, "scale").value_or(1.0f);
+    }
+  }
+  if (const auto* e = extension(extensions, "KHR_materials_sheen")) {
+    const char* name = "KHR_materials_sheen";
+    SheenLayer& s = out.sheen;
+    s.color = color_of(*e, "sheenColorFactor", Vec3(0.0f));
+    s.roughness = clamped01(gltf_number(*e, "sheenRoughnessFactor").value_or(0.0f));
+    if (s.color != Vec3(0.0f)) {
+      s.color_texture = texture(*e, "sheenColorTexture", name, TextureEncoding::kSrgb);
+      s.roughness_texture = texture(*e, "sheenRoughnessTexture", name, TextureEncoding::kAlpha);
+    }
+  }
+  if (const auto* e = extension(extensions, "KHR_materials_specular")) {
+    const char* name = "KHR_materials_specular";
+    SpecularLayer& s = out.specular;
+    s.factor = clamped01(gltf_number(*e, "specularFactor").value_or(1.0f));
+    // The colour may exceed 1 (F0 is clamped after the ior's reflectance scales it).
+    const auto given = gltf_numbers(*e, "specularColorFactor", 3);
+    if (given) s.color = glm::clamp(Vec3((*given)[0], (*given)[1], (*given)[2]), Vec3(0.0f), Vec3(1e3f));
+    if (!is_finite(s.color)) s.color = Vec3(1.0f);
+    s.texture = texture(*e, "specularTexture", name, TextureEncoding::kAlpha);
+    s.color_texture = texture(*e, "specularColorTexture", name, TextureEncoding::kSrgb);
+  }
+  if (const auto* e = extension(extensions, "KHR_materials_anisotropy")) {
+    AnisotropyLayer& a = out.anisotropy;
+    a.strength = clamped01(gltf_number(*e, "anisotropyStrength").value_or(0.0f));
+    const float rotation = gltf_number(*e, "anisotropyRotation").value_or(0.0f);
+    a.rotation = std::isfinite(rotation) ? std::remainder(rotation, 2.0f * kPi) : 0.0f;
+    if (a.strength > 0.0f) a.texture = texture(*e, "anisotropyTexture", "KHR_materials_anisotropy", kLinear);
+  }
+  if (const auto* e = extension(extensions, "KHR_materials_iridescence")) {
+    const char* name = "KHR_materials_iridescence";
+    IridescenceLayer& i = out.iridescence;
+    i.factor = clamped01(gltf_number(*e, "iridescenceFactor").value_or(0.0f));
+    const float ior = gltf_number(*e, "iridescenceIor").value_or(1.3f);
+    i.ior = std::isfinite(ior) && ior >= 1.0f ? std::min(ior, 10.0f) : 1.3f;
+    const auto thickness = [&](const char* key, float otherwise) {
+      const float t = gltf_number(*e, key).value_or(otherwise);
+      return std::isfinite(t) ? std::clamp(t, 0.0f, 1e5f) : otherwise;
+    };
+    i.thickness_min = thickness("iridescenceThicknessMinimum", 100.0f);
+    i.thickness_max = thickness("iridescenceThicknessMaximum", 400.0f);
+    if (i.factor > 0.0f) {
+      i.texture = texture(*e, "iridescenceTexture", name, kLinear);
+      i.thickness_texture = texture(*e, "iridescenceThicknessTexture", name, kLinear);
+    }
+  }
+  if (const auto* e = extension(extensions, "KHR_materials_dispersion")) {
+    const float d = gltf_number(*e, "dispersion").value_or(0.0f);
+    out.dispersion = std::isfinite(d) ? std::clamp(d, 0.0f, 100.0f) : 0.0f;
+  }
+}
 
 }  // namespace
 
@@ -80,19 +175,9 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
   if (const auto* t = extension(m.extensions, "KHR_materials_transmission")) {
     out.transmission = Vec3(std::clamp(gltf_number(*t, "transmissionFactor").value_or(0.0f), 0.0f, 1.0f));
     // transmissionTexture: a textureInfo whose red channel scales the factor (linear data).
-    const tinygltf::Value& info = t->Get("transmissionTexture");
-    const auto index = info.IsObject() ? gltf_number(info, "index") : std::nullopt;
-    if (index && *index >= 0 && out.transmissive()) {
-      const auto texcoord = gltf_number(info, "texCoord");
-      tinygltf::ExtensionMap extensions;
-      const tinygltf::Value& ext = info.Get("extensions");
-      if (ext.IsObject())
-        for (const std::string& key : ext.Keys()) extensions[key] = ext.Get(key);
-      out.transmission_texture =
-          images.slot(texture_ref(static_cast<int>(*index), texcoord ? static_cast<int>(*texcoord) : 0, extensions,
-                                  at + "/extensions/KHR_materials_transmission/transmissionTexture"),
-                      TextureEncoding::kLinear, where + " transmissionTexture");
-    }
+    if (out.transmissive())
+      out.transmission_texture = extension_texture(*t, "transmissionTexture", "KHR_materials_transmission", images,
+                                                   TextureEncoding::kLinear, where, at);
   }
   if (const auto* v = extension(m.extensions, "KHR_materials_volume")) {
     const float distance = gltf_number(*v, "attenuationDistance").value_or(kInfinity);
@@ -121,6 +206,7 @@ Material import_material(const tinygltf::Material& m, ImageDecoder& images, cons
     }
   }
 
+  import_layers(m.extensions, images, where, at, out.pbr.layers);
   if (extension(m.extensions, "KHR_materials_unlit")) out.unlit = true;
   out.single_sided = !m.doubleSided;  // glTF's default: single-sided
   return out;

@@ -14,6 +14,8 @@
 //   KHR_materials_ior                                    -> ior (default 1.5)
 //   KHR_materials_volume attenuation                     -> absorption = -ln(colour) / distance
 //   KHR_materials_unlit                                  -> unlit
+//   KHR_materials_clearcoat, _sheen, _specular, _anisotropy, _iridescence, _dispersion
+//                                                        -> pbr.layers (core/material_layers.h)
 //   doubleSided false                                    -> single_sided: back faces let rays through
 #pragma once
 
