@@ -39,9 +39,9 @@ struct SpecularLayer {
 // KHR_materials_anisotropy: the GGX lobe stretched along a direction in the tangent plane,
 // alpha_t = mix(alpha, 1, strength^2) along it and alpha across.
 struct AnisotropyLayer {
-  float strength = 0.0f;        // x texture B
-  float rotation = 0.0f;        // radians, counter-clockwise from the tangent
-  TextureSlot texture;          // RG: the direction in tangent space, as (x + 1) / 2; B strength
+  float strength = 0.0f;  // x texture B
+  float rotation = 0.0f;  // radians, counter-clockwise from the tangent
+  TextureSlot texture;    // RG: the direction in tangent space, as (x + 1) / 2; B strength
 };
 
 // KHR_materials_iridescence: a thin film on the surface (Belcour and Barla 2017), whose Fresnel
@@ -49,9 +49,9 @@ struct AnisotropyLayer {
 struct IridescenceLayer {
   float factor = 0.0f;  // x texture R
   TextureSlot texture;
-  float ior = 1.3f;               // the film's index
-  float thickness_min = 100.0f;   // nanometres, where the thickness texture's G is 0
-  float thickness_max = 400.0f;   // and where it is 1 (or everywhere without the texture)
+  float ior = 1.3f;              // the film's index
+  float thickness_min = 100.0f;  // nanometres, where the thickness texture's G is 0
+  float thickness_max = 400.0f;  // and where it is 1 (or everywhere without the texture)
   TextureSlot thickness_texture;
 };
 

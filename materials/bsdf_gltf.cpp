@@ -122,12 +122,13 @@ Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi) const {
   Vec3 dielectric;
   const Vec3 fresnel = gltf_fresnel(wo_h, dielectric);
   Vec3 base = base_diffuse_ * (Vec3(1.0f) - dielectric) * (wi.z / kPi);
-  if (probability_[kSpecular] > 0.0f) base += layer_ * fresnel * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
+  if (probability_[kSpecular] > 0.0f)
+    base += layer_ * fresnel * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
   if (sheen_max_ > 0.0f) {
     // The base keeps what the sheen leaves on the way in and out (the smaller share: reciprocal).
     base *= std::min(sheen_keep_o_, 1.0f - sheen_max_ * sheen_albedo(wi.z, sheen_roughness_));
-    base += sheen_color_ * (sheen_distribution(sheen_roughness_, h.z) * sheen_visibility(wi.z, wo.z, sheen_roughness_) *
-                            wi.z);
+    base += sheen_color_ *
+            (sheen_distribution(sheen_roughness_, h.z) * sheen_visibility(wi.z, wo.z, sheen_roughness_) * wi.z);
   }
   float keep = coat_keep_;  // likewise under the coat
   if (coat_ > 0.0f)

@@ -96,9 +96,9 @@ EvaluatedLayers evaluate_layers(const PbrLayers& l, float reflect_ior, const Sur
     e.iridescence_thickness = l.iridescence.thickness_max;
     if (textured && l.iridescence.texture.present()) e.iridescence *= at(l.iridescence.texture).x;
     if (textured && l.iridescence.thickness_texture.present())
-      e.iridescence_thickness = l.iridescence.thickness_min +
-                                (l.iridescence.thickness_max - l.iridescence.thickness_min) *
-                                    at(l.iridescence.thickness_texture).y;
+      e.iridescence_thickness =
+          l.iridescence.thickness_min +
+          (l.iridescence.thickness_max - l.iridescence.thickness_min) * at(l.iridescence.thickness_texture).y;
   }
   e.dispersion = l.dispersion;
   return e;

@@ -22,7 +22,7 @@ struct EvaluatedLayers {
   Vec3 clearcoat_n{0.0f, 0.0f, 1.0f};  // unit, on the ray's side, facing it
   Vec3 sheen_color{0.0f};
   float sheen_roughness = 0.0f;
-  float anisotropy = 0.0f;                 // strength in [0, 1]
+  float anisotropy = 0.0f;                      // strength in [0, 1]
   Vec3 anisotropy_direction{1.0f, 0.0f, 0.0f};  // world, along the surface (made perpendicular to n by the BSDF)
   float iridescence = 0.0f;
   float iridescence_ior = 1.3f;

@@ -24,8 +24,9 @@ PhongTerms pbr_to_phong(Vec3 base_color, float metallic, float roughness, const 
   const float smooth = 1.0f - roughness;
   Vec3 dielectric = l.dielectric_f0, metal = base_color;
   if (l.iridescence > 0.0f) {
-    dielectric = glm::mix(dielectric, thin_film_fresnel(1.0f, l.iridescence_ior, cos_view, l.iridescence_thickness, dielectric),
-                          l.iridescence);
+    dielectric =
+        glm::mix(dielectric, thin_film_fresnel(1.0f, l.iridescence_ior, cos_view, l.iridescence_thickness, dielectric),
+                 l.iridescence);
     metal = glm::mix(metal, thin_film_fresnel(1.0f, l.iridescence_ior, cos_view, l.iridescence_thickness, metal),
                      l.iridescence);
   }
@@ -44,7 +45,8 @@ PhongTerms pbr_to_phong(Vec3 base_color, float metallic, float roughness, const 
     const float coat_smooth = 1.0f - std::clamp(l.clearcoat_roughness, 0.0f, 1.0f);
     const PhongTerms c = pbr_to_phong(Vec3(1.0f), 0.0f, l.clearcoat_roughness);
     const Vec3 coat_reflect(coat * coat_smooth * coat_smooth);
-    const float share = average(coat_reflect) / std::max(average(coat_reflect) + average(p.reflectivity) * (1.0f - coat), 1e-6f);
+    const float share =
+        average(coat_reflect) / std::max(average(coat_reflect) + average(p.reflectivity) * (1.0f - coat), 1e-6f);
     p.kd *= 1.0f - coat;
     p.ks = p.ks * (1.0f - coat) + Vec3(coat * coat_smooth);
     p.reflectivity = p.reflectivity * (1.0f - coat) + coat_reflect;
