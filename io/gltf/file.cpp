@@ -7,6 +7,7 @@
 
 #include "io/base/input_file.h"
 #include "io/gltf/accessor.h"
+#include "io/gltf/compressed_geometry.h"
 #include "io/gltf/supported_extensions.h"
 #include "io/json/document.h"
 #include "io/json/reader.h"
@@ -89,6 +90,81 @@ uint32_t read_u32(const unsigned char* p) {
   return v;
 }
 
+void append_u32(std::vector<unsigned char>& out, uint32_t v) {
+  unsigned char b[4];
+  std::memcpy(b, &v, 4);
+  out.insert(out.end(), b, b + 4);
+}
+
+// A .glb with another JSON chunk and the original's chunks after its JSON (the BIN chunk).
+std::vector<unsigned char> glb_with_json(const std::string& json, const std::vector<unsigned char>& glb) {
+  std::string padded = json;
+  while (padded.size() % 4) padded.push_back(' ');
+  const size_t rest = 20 + read_u32(glb.data() + 12);
+  std::vector<unsigned char> out;
+  out.insert(out.end(), glb.begin(), glb.begin() + 8);
+  append_u32(out, 0);  // total length, below
+  append_u32(out, static_cast<uint32_t>(padded.size()));
+  append_u32(out, 0x4E4F534Au);  // "JSON"
+  out.insert(out.end(), padded.begin(), padded.end());
+  out.insert(out.end(), glb.begin() + static_cast<std::ptrdiff_t>(rest), glb.end());
+  const auto total = static_cast<uint32_t>(out.size());
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
+}
+
+bool load_model(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& err, std::string& warn, bool binary,
+                const std::vector<unsigned char>& bytes, std::string_view json, const std::string& base_dir) {
+  try {
+    return binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                static_cast<unsigned int>(bytes.size()), base_dir)
+                  : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
+                                               base_dir);
+  } catch (const std::bad_alloc&) {
+    throw;  // the caller reports memory exhaustion
+  } catch (const std::exception& e) {
+    err = e.what();
+    return false;
+  }
+}
+
+// KHR_draco_mesh_compression and EXT_meshopt_compression (io/gltf/compressed_geometry.h): the
+// document rewritten with its geometry decoded, in `rewritten` (a .glb's bytes or the JSON text);
+// false when that failed (reported). Nothing to do leaves `rewritten` empty.
+bool decode_compressed(std::string_view json, bool binary, const std::vector<unsigned char>& bytes, FileAccess access,
+                       Reporter& report, std::vector<unsigned char>& rewritten) {
+  if (json.find("KHR_draco_mesh_compression") == std::string_view::npos &&
+      json.find("meshopt_compression") == std::string_view::npos)
+    return true;
+  Json doc = Json::parse(json, nullptr, /*allow_exceptions=*/false, /*ignore_comments=*/false);
+  if (!doc.is_object() || !uses_compressed_geometry(doc)) return true;
+  // The buffers, loaded by tinygltf through the same file access (with its own copy of the
+  // budget) from a document of nothing else; meshopt's fallback buffers have no data to load.
+  Json buffers = doc.contains("buffers") && doc["buffers"].is_array() ? doc["buffers"] : Json::array();
+  for (size_t i = 0; i < buffers.size(); ++i)
+    if (buffers[i].is_object() && !buffers[i].contains("uri") && !(binary && i == 0))
+      buffers[i] = embedded_buffer({0, 0, 0, 0});
+  const Json stripped = {{"asset", {{"version", "2.0"}}}, {"buffers", buffers}};
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});
+  std::string err, warn;
+  const std::string stripped_text = stripped.dump();
+  const bool ok =
+      binary ? load_model(loader, model, err, warn, true, glb_with_json(stripped_text, bytes), {}, access.base_dir)
+             : load_model(loader, model, err, warn, false, {}, stripped_text, access.base_dir);
+  if (!ok) {
+    report.error("/buffers", err.empty() ? "its buffers could not be read" : clean(err));
+    return false;
+  }
+  std::vector<std::vector<unsigned char>> data;
+  for (tinygltf::Buffer& b : model.buffers) data.push_back(std::move(b.data));
+  if (!decompress_geometry(doc, data, access.budget, report)) return false;
+  const std::string text = doc.dump();
+  rewritten = binary ? glb_with_json(text, bytes) : std::vector<unsigned char>(text.begin(), text.end());
+  return true;
+}
+
 }  // namespace
 
 std::string outside_folder_message(const std::string& uri, const std::string& base_dir) {
@@ -158,23 +234,20 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
                     limits.outside_files,
                     limits.gltf_total_bytes - std::min<uint64_t>(limits.gltf_total_bytes, bytes.size()),
                     {}};
+  // Compressed geometry is decoded first, into a rewritten document read below in its place.
+  if (!binary) report.find_places_with(json_places(std::make_shared<const std::string>(json)));
+  std::vector<unsigned char> rewritten;
+  if (!decode_compressed(json, binary, bytes, access, report, rewritten)) return result;
+  const std::vector<unsigned char>& input = rewritten.empty() ? bytes : rewritten;
+  const std::string_view input_json =
+      rewritten.empty() || binary ? json
+                                  : std::string_view(reinterpret_cast<const char*>(rewritten.data()), rewritten.size());
   auto model = std::make_shared<tinygltf::Model>();
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &read_file, &write_file, &access});
   loader.SetImageLoader(&keep_encoded_image, nullptr);
   std::string err, warn;
-  bool ok = false;
-  try {
-    ok = binary ? loader.LoadBinaryFromMemory(model.get(), &err, &warn, bytes.data(),
-                                              static_cast<unsigned int>(bytes.size()), base_dir)
-                : loader.LoadASCIIFromString(model.get(), &err, &warn, json.data(),
-                                             static_cast<unsigned int>(json.size()), base_dir);
-  } catch (const std::bad_alloc&) {
-    throw;  // the caller reports memory exhaustion
-  } catch (const std::exception& e) {
-    ok = false;
-    err = e.what();
-  }
+  const bool ok = load_model(loader, *model, err, warn, binary, input, input_json, base_dir);
   result.files = std::move(access.files);
   if (!warn.empty()) report.warning("", clean(warn));
   if (!ok) {

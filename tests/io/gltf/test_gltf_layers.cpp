@@ -63,8 +63,9 @@ TEST_CASE("glTF layered extensions: each factor lands in the material", "[gltf][
 }
 
 TEST_CASE("glTF layered extensions: the Khronos samples import without ignoring them", "[gltf][layers]") {
-  for (const char* sample : {"ClearcoatWicker/glTF/ClearcoatWicker.gltf", "IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb",
-                             "AnisotropyRotationTest/glTF-Binary/AnisotropyRotationTest.glb"}) {
+  for (const char* sample :
+       {"ClearcoatWicker/glTF/ClearcoatWicker.gltf", "IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb",
+        "AnisotropyRotationTest/glTF-Binary/AnisotropyRotationTest.glb"}) {
     const std::string path = rt::test::sample_model(sample);
     INFO(path);
     const ImportedModel model = import_clean(path);
@@ -84,9 +85,9 @@ TEST_CASE("cli: a file whose extensionsRequired names the six layered extensions
   CHECK(validated.code == 0);
   CHECK(validated.output.find("warning") == std::string::npos);
   for (const char* integrator : {"path", "whitted"}) {
-    const auto rendered = rt::test::rtcli(std::string("render scenes/material_extensions.json --integrator ") +
-                                          integrator + " --width 48 --height 30 --spp 4 -q -o " + out + "/" +
-                                          integrator + ".png");
+    const auto rendered =
+        rt::test::rtcli(std::string("render scenes/material_extensions.json --integrator ") + integrator +
+                        " --width 48 --height 30 --spp 4 -q -o " + out + "/" + integrator + ".png");
     INFO(rendered.output);
     CHECK(rendered.code == 0);
   }
