@@ -1,5 +1,6 @@
 #include "core/render/shadow_transmittance.h"
 
+#include "materials/evaluated_surface.h"
 #include "materials/optics.h"
 
 namespace rt {
@@ -17,10 +18,16 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
     const Material& m = scene.materials()[scene.material_of(hit)];
     if (!m.transmissive()) return true;  // opaque: the common case, and the end of the search
     // What passes the interface: transmission times (1 - F0), the interface taken between the
-    // material and air (shadow rays do not track nested media).
-    through *= m.transmittance() * (1.0f - schlick_reflectance(1.0f, 1.0f, m.ior));
-    if (m.absorbing()) {
-      const SurfaceInteraction si = scene.surface(ray, hit);  // which way it crosses
+    // material and air (shadow rays do not track nested media). Where a texture varies it (the
+    // base colour, glTF's metallic or transmission map), the shading stage's value at the hit,
+    // as the camera sees it; else the material's own.
+    const bool textured =
+        m.transmission_texture.present() || (m.pbr.enabled && (m.texture.present() || m.pbr.texture.present()));
+    const SurfaceInteraction si = textured || m.absorbing() ? scene.surface(ray, hit) : SurfaceInteraction{};
+    const Vec3 passed =
+        textured ? evaluate_surface(m, si, ray.direction, scene.textures()).transmission : m.transmittance();
+    through *= passed * (1.0f - schlick_reflectance(1.0f, 1.0f, m.ior));
+    if (m.absorbing()) {  // (si: which way it crosses)
       depth += (si.front_face ? -hit.t : hit.t) * glm::length(ray.direction) * m.absorption;
       absorbed = true;
     }

@@ -21,7 +21,8 @@ std::string base64(const std::vector<unsigned char>& bytes) {
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0, c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0,
+                   c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
     const uint32_t v = (a << 16) | (b << 8) | c;
     out.push_back(kDigits[(v >> 18) & 63]);
     out.push_back(kDigits[(v >> 12) & 63]);
@@ -125,7 +126,9 @@ class Decoder {
       if (!view.is_object()) continue;
       const Json* extensions = object_at(view, "extensions");
       if (!extensions) continue;
-      const char* name = object_at(*extensions, kMeshopt) ? kMeshopt : object_at(*extensions, kMeshoptKhr) ? kMeshoptKhr : nullptr;
+      const char* name = object_at(*extensions, kMeshopt)      ? kMeshopt
+                         : object_at(*extensions, kMeshoptKhr) ? kMeshoptKhr
+                                                               : nullptr;
       if (!name) continue;
       const Json ext = (*extensions)[name];
       const std::string at = "/bufferViews/" + std::to_string(v) + "/extensions/" + name;
@@ -153,22 +156,17 @@ class Decoder {
       }
       std::vector<unsigned char> out(static_cast<size_t>(count * stride));
       int result = -1;
-      if (attributes)
-        result = meshopt_decodeVertexBuffer(out.data(), count, stride, src, length);
-      else if (mode == "TRIANGLES")
-        result = meshopt_decodeIndexBuffer(out.data(), count, stride, src, length);
-      else
-        result = meshopt_decodeIndexSequence(out.data(), count, stride, src, length);
+      if (attributes) result = meshopt_decodeVertexBuffer(out.data(), count, stride, src, length);
+      else if (mode == "TRIANGLES") result = meshopt_decodeIndexBuffer(out.data(), count, stride, src, length);
+      else result = meshopt_decodeIndexSequence(out.data(), count, stride, src, length);
       if (result != 0) {
-        report_.error(at, "its compressed data could not be decoded (meshoptimizer error " + std::to_string(result) + ")");
+        report_.error(at,
+                      "its compressed data could not be decoded (meshoptimizer error " + std::to_string(result) + ")");
         return false;
       }
-      if (filter == "OCTAHEDRAL" && (stride == 4 || stride == 8))
-        meshopt_decodeFilterOct(out.data(), count, stride);
-      else if (filter == "QUATERNION" && stride == 8)
-        meshopt_decodeFilterQuat(out.data(), count, stride);
-      else if (filter == "EXPONENTIAL")
-        meshopt_decodeFilterExp(out.data(), count, stride);
+      if (filter == "OCTAHEDRAL" && (stride == 4 || stride == 8)) meshopt_decodeFilterOct(out.data(), count, stride);
+      else if (filter == "QUATERNION" && stride == 8) meshopt_decodeFilterQuat(out.data(), count, stride);
+      else if (filter == "EXPONENTIAL") meshopt_decodeFilterExp(out.data(), count, stride);
       else if (filter != "NONE") {
         report_.error(at + "/filter", "expected NONE, OCTAHEDRAL (byteStride 4 or 8), QUATERNION (8) or EXPONENTIAL");
         return false;
@@ -206,7 +204,8 @@ class Decoder {
         const Json* extensions = primitive.is_object() ? object_at(primitive, "extensions") : nullptr;
         const Json* draco = extensions ? object_at(*extensions, kDraco) : nullptr;
         if (!draco) continue;
-        const std::string at = "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) + "/extensions/" + kDraco;
+        const std::string at =
+            "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) + "/extensions/" + kDraco;
         if (accessors == doc_.end() || !accessors->is_array()) {
           report_.error(at, "expected the file's accessors for the decoded data");
           return false;
@@ -221,9 +220,11 @@ class Decoder {
 
   bool decode_primitive(Json& primitive, const Json& draco, Json& accessors, const std::string& at) {
     const auto views_it = doc_.find("bufferViews");
-    const int64_t v = views_it != doc_.end() && views_it->is_array() ? index_at(draco, "bufferView", views_it->size()) : -1;
+    const int64_t v =
+        views_it != doc_.end() && views_it->is_array() ? index_at(draco, "bufferView", views_it->size()) : -1;
     uint64_t length = 0;
-    const unsigned char* src = v >= 0 ? view_bytes(doc_, buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
+    const unsigned char* src =
+        v >= 0 ? view_bytes(doc_, buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
     if (!src) {
       report_.error(at + "/bufferView", "expected a buffer view inside its buffer's data");
       return false;

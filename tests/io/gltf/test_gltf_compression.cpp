@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include <catch2/catch.hpp>
 #include <meshoptimizer.h>
+#include <catch2/catch.hpp>
 
 #include "io/gltf/loader.h"
 #include "io/image/png_file.h"
@@ -60,7 +60,8 @@ TEST_CASE("KHR_draco_mesh_compression: the Draco samples import as their origina
     INFO(name);
     rt::test::ImportProblems plain_problems, draco_problems;
     const auto plain = import(rt::test::sample_model(std::string(name) + "/glTF/" + name + ".gltf"), plain_problems);
-    const auto draco = import(rt::test::sample_model(std::string(name) + "/glTF-Draco/" + name + ".gltf"), draco_problems);
+    const auto draco =
+        import(rt::test::sample_model(std::string(name) + "/glTF-Draco/" + name + ".gltf"), draco_problems);
     INFO(draco_problems.message);
     REQUIRE(plain);
     REQUIRE(draco);
@@ -128,38 +129,46 @@ TEST_CASE("EXT_meshopt_compression: encoded buffer views decode to the bytes enc
   const size_t index_offset = buffer.size();
   buffer.append(index_bytes.begin(), index_bytes.end());
   const auto data_uri = "data:application/octet-stream;base64," + rt::test::base64(buffer);
-  const Json doc = {
-      {"asset", {{"version", "2.0"}}},
-      {"extensionsUsed", {"EXT_meshopt_compression"}},
-      {"extensionsRequired", {"EXT_meshopt_compression"}},
-      {"scene", 0},
-      {"scenes", {{{"nodes", {0}}}}},
-      {"nodes", {{{"mesh", 0}}}},
-      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
-      {"accessors",
-       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-        {{"bufferView", 1}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}}}},
-      {"bufferViews",
-       {{{"buffer", 0},
-         {"byteLength", 48},
-         {"byteStride", 12},
-         {"extensions",
-          {{"EXT_meshopt_compression",
-            {{"buffer", 1}, {"byteLength", vertices.size()}, {"byteStride", 12}, {"count", 4}, {"mode", "ATTRIBUTES"}}}}}},
-        {{"buffer", 0},
-         {"byteOffset", 48},
-         {"byteLength", 24},
-         {"extensions",
-          {{"EXT_meshopt_compression",
-            {{"buffer", 1},
-             {"byteOffset", index_offset},
-             {"byteLength", index_bytes.size()},
-             {"byteStride", 4},
-             {"count", 6},
-             {"mode", "TRIANGLES"}}}}}}}},
-      {"buffers",
-       {{{"byteLength", 72}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}},
-        {{"byteLength", buffer.size()}, {"uri", data_uri}}}}};
+  const Json doc = {{"asset", {{"version", "2.0"}}},
+                    {"extensionsUsed", {"EXT_meshopt_compression"}},
+                    {"extensionsRequired", {"EXT_meshopt_compression"}},
+                    {"scene", 0},
+                    {"scenes", {{{"nodes", {0}}}}},
+                    {"nodes", {{{"mesh", 0}}}},
+                    {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+                    {"accessors",
+                     {{{"bufferView", 0},
+                       {"componentType", 5126},
+                       {"count", 4},
+                       {"type", "VEC3"},
+                       {"min", {0, 0, 0}},
+                       {"max", {1, 1, 0}}},
+                      {{"bufferView", 1}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}}}},
+                    {"bufferViews",
+                     {{{"buffer", 0},
+                       {"byteLength", 48},
+                       {"byteStride", 12},
+                       {"extensions",
+                        {{"EXT_meshopt_compression",
+                          {{"buffer", 1},
+                           {"byteLength", vertices.size()},
+                           {"byteStride", 12},
+                           {"count", 4},
+                           {"mode", "ATTRIBUTES"}}}}}},
+                      {{"buffer", 0},
+                       {"byteOffset", 48},
+                       {"byteLength", 24},
+                       {"extensions",
+                        {{"EXT_meshopt_compression",
+                          {{"buffer", 1},
+                           {"byteOffset", index_offset},
+                           {"byteLength", index_bytes.size()},
+                           {"byteStride", 4},
+                           {"count", 6},
+                           {"mode", "TRIANGLES"}}}}}}}},
+                    {"buffers",
+                     {{{"byteLength", 72}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}},
+                      {{"byteLength", buffer.size()}, {"uri", data_uri}}}}};
   const std::string path = rt::test::write_file("meshopt.gltf", doc.dump());
   rt::test::ImportProblems problems;
   const auto model = import(path, problems);

@@ -124,7 +124,8 @@ TEST_CASE("glTF hostile: what the specification forbids is refused", "[io][gltf]
   doc["extensionsUsed"] = doc["extensionsRequired"] = {"KHR_materials_diffuse_transmission"};
   o = import_json("required.gltf", doc);
   CHECK_FALSE(o.loaded);
-  CHECK_THAT(o.error, Catch::Contains("requires the extension \"KHR_materials_diffuse_transmission\", which rtcli does not"));
+  CHECK_THAT(o.error,
+             Catch::Contains("requires the extension \"KHR_materials_diffuse_transmission\", which rtcli does not"));
   doc["extensionsUsed"] = doc["extensionsRequired"] = {"KHR_mesh_quantization"};
   CHECK(import_json("quantization.gltf", doc).loaded);  // implemented: any component type is read
   // An accessor without a bufferView (as an unsupported compression writes them) is refused by

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/render/renderer.h"
+#include "core/render/shadow_transmittance.h"
 #include "io/gltf/loader.h"
 #include "io/gltf/supported_extensions.h"
 #include "materials/evaluated_surface.h"
@@ -410,4 +411,25 @@ TEST_CASE("glTF extensions: the documented list of supported extensions is the c
     INFO(name);
     CHECK_THAT(sentence, Catch::Contains("`" + name + "`"));
   }
+}
+
+TEST_CASE("glTF materials: shadows through glass follow the textured metallic, as shading does", "[gltf][materials]") {
+  // metallicFactor 1, but the metallicRoughness texture's blue (metallic) is 0 everywhere: the
+  // quad is clear glass where the camera looks, and so for shadow rays.
+  const Json material = {{"pbrMetallicRoughness",
+                          {{"baseColorFactor", {1.0, 0.5, 1.0, 1.0}},
+                           {"metallicFactor", 1.0},
+                           {"roughnessFactor", 0.0},
+                           {"metallicRoughnessTexture", {{"index", 0}}}}},
+                         {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+  const LoadedScene loaded = quad_scene("glass-shadow.json", quad_file("glass-shadow.gltf", material));
+  const Scene& scene = loaded.scene;
+  const EvaluatedSurface s = quad_surface(scene, 0.25f, 0.5f);
+  CHECK(s.metallic == 0.0f);
+  CHECK(s.transmission.y == Approx(0.5f));
+  Ray shadow = down_z(0.25f, 0.5f);
+  shadow.tmax = 5.5f;  // from z = 5 to -0.5: through the quad, short of the wall
+  const Vec3 through = shadow_transmittance(scene, shadow);
+  CHECK(through.x > 0.9f);  // (1 - F0) of the interface
+  CHECK(through.y == Approx(through.x * 0.5f).epsilon(1e-3));
 }
