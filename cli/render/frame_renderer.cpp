@@ -117,13 +117,14 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
     const SignalBlock block;  // each temporary file is always renamed or removed
     bool ok = true;
     const DisplayTransform& display = settings.display;
+    const ViewTransform* display_view = content.view.get();
     if (!stereo.enabled()) {
-      ok = sinks[0].add(encode_srgb8(picture, display), frame, error);
+      ok = sinks[0].add(encode_display8(picture, display, display_view), frame, error);
     } else if (stereo.mode == StereoMode::kPair) {
-      ok = sinks[0].add(encode_srgb8(left, display), frame, error) &&
-           sinks[1].add(encode_srgb8(film.color, display), frame, error);
+      ok = sinks[0].add(encode_display8(left, display, display_view), frame, error) &&
+           sinks[1].add(encode_display8(film.color, display, display_view), frame, error);
     } else {
-      ok = sinks[0].add(encode_srgb8(compose_stereo(left, film.color, stereo), display), frame, error);
+      ok = sinks[0].add(encode_display8(compose_stereo(left, film.color, stereo), display, display_view), frame, error);
     }
     if (!ok) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());

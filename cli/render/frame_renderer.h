@@ -43,6 +43,7 @@ struct FrameContent {
   // EXR keeps this render's (so that it can be continued in turn).
   std::optional<SampleState> resume;
   bool keep_sums = false;
+  std::shared_ptr<const ViewTransform> view;  // PNG and GIF frames through it (--view-transform); null: the tone curve
 };
 
 // `sinks`: one output, or two (left, right) for stereo mode "pair". An exit code if it must stop

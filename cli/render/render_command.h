@@ -33,6 +33,9 @@ struct RenderCommand {
   std::optional<std::string> sampler;            // kSampleSequences
   std::optional<float> exposure;                 // stops
   std::optional<std::string> tone_map;           // "clamp" or "filmic"
+  std::optional<std::string> view_transform;     // an OpenColorIO view ("Filmic", "AgX", "Standard")
+  std::optional<std::string> look;               // and its look ("Medium High Contrast")
+  std::optional<std::string> ocio_config;        // the config (default: Blender's, where installed)
   std::optional<int> spp;                        // the path tracer's samples per pixel
   std::optional<float> noise_threshold;          // its adaptive stop (0: off)
   std::optional<double> time;                    // --time: seconds a frame may take (path tracer's passes)

@@ -110,6 +110,30 @@ bool read_output(const RenderCommand& cmd, RenderJob& job) {
   return true;
 }
 
+// --view-transform, --look, --ocio-config: the OpenColorIO view PNG and GIF frames go through.
+bool read_view(const RenderCommand& cmd, RenderJob& job) {
+  if (!cmd.view_transform) {
+    if (cmd.look || cmd.ocio_config)
+      return fail(std::string(cmd.look ? "--look" : "--ocio-config") + " goes with --view-transform NAME");
+    return true;
+  }
+  if (cmd.tone_map)
+    return fail("--view-transform replaces the tone curve; it does not go with --tone-map (choose one)");
+  const std::string config = cmd.ocio_config.value_or(ViewTransform::blender_config());
+  if (config.empty()) {
+    // Blender's Standard is the sRGB encoding of the clipped radiance: rtcli's own "clamp".
+    if (!cmd.look && (*cmd.view_transform == "standard" || *cmd.view_transform == "Standard")) return true;
+    return fail("--view-transform " + *cmd.view_transform +
+                " needs an OpenColorIO config: --ocio-config FILE (Blender's is datafiles/colormanagement/"
+                "config.ocio; none at " +
+                kBlenderConfigs[0] + ")");
+  }
+  std::string error;
+  job.view = ViewTransform::open(config, *cmd.view_transform, cmd.look.value_or(""), error);
+  if (!job.view) return fail("--view-transform " + *cmd.view_transform + " (" + config + "): " + error);
+  return true;
+}
+
 // --crop, --tile and --chunk: the part of the render asked for.
 bool read_share(const RenderCommand& cmd, const EnvironmentLookup& env, RenderJob& job) {
   std::string error;
@@ -165,7 +189,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   c.fps = cmd.fps;
   if (cmd.stereo) c.stereo = kStereoModes.parse(*cmd.stereo);  // checked by check_names
   if (cmd.aov && !parse_aovs(*cmd.aov, job.aovs)) return std::nullopt;
-  if (!read_share(cmd, env, job) || !read_output(cmd, job)) return std::nullopt;
+  if (!read_share(cmd, env, job) || !read_output(cmd, job) || !read_view(cmd, job)) return std::nullopt;
   return job;
 }
 

@@ -6,6 +6,7 @@
 // camera, are checked by the plan: cli/render/render_plan.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "cli/render/render_command.h"
 #include "core/pixel_window.h"
 #include "core/stereo.h"
+#include "io/image/view_transform.h"
 
 namespace rt {
 
@@ -56,6 +58,9 @@ struct RenderJob {
   bool dither = false;  // GIF frames: Floyd-Steinberg error diffusion
   bool quiet = false;
   PixelChoices choices;
+  // --view-transform: PNG and GIF frames through an OpenColorIO view instead of the tone curve;
+  // null: the tone curve (and for "standard" without a config, which is the same sRGB encoding).
+  std::shared_ptr<const ViewTransform> view;
 };
 
 // The job the command asks for; nothing, after printing why (exit code 2), when an option is not

@@ -104,6 +104,13 @@ void add_render_options(CLI::App& cmd, RenderCommand& r) {
                  "Output .png, .exr, .jpg, NAME_####.png, NAME_####.exr or .gif (default: <scene name>.png, or "
                  ".gif for --frames A-B)");
   add_scene_options(cmd, r);
+  // Output only (the watch page keeps the tone curve, which it changes live).
+  cmd.add_option("--view-transform", r.view_transform,
+                 "PNG and GIF output through an OpenColorIO view, as Blender shows renders: Standard, Filmic, AgX "
+                 "(the config's names; replaces the tone curve)");
+  cmd.add_option("--look", r.look, "With --view-transform: the config's look, e.g. \"Medium High Contrast\"");
+  cmd.add_option("--ocio-config", r.ocio_config,
+                 "With --view-transform: the OpenColorIO config (default: Blender's, where Blender is installed)");
   cmd.add_option("--time", r.time,
                  "Path tracer: stop after about SECONDS with the best image so far, in whole passes of 8 samples a "
                  "pixel (each frame, each eye); the summary says how many samples each pixel got")

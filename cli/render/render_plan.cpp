@@ -58,6 +58,7 @@ std::optional<RenderPlan> plan_render(const RenderJob& job, const std::vector<st
   }
   plan.content.aovs = job.aovs;
   plan.content.exr_float = job.exr_float;
+  plan.content.view = job.view;
   if (!job.denoiser.empty()) {
     // A part of the image written as EXR is denoised once the parts are merged (a filter near a
     // tile's edge needs the pixels beyond it): it carries what the denoiser reads instead.

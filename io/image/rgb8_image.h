@@ -22,4 +22,10 @@ struct Rgb8Image {
 // table).
 Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display = {});
 
+class ViewTransform;
+// The same through an OpenColorIO view when one is given (io/image/view_transform.h): the linear
+// radiance times 2^exposure, through the view (whose output is already display-encoded), rounded
+// to 256 levels; the tone curve is not applied. Without a view: encode_srgb8.
+Rgb8Image encode_display8(const Image& image, const DisplayTransform& display, const ViewTransform* view);
+
 }  // namespace rt

@@ -3,7 +3,7 @@ script has built and exported it in the same Blender session:
 
   blender -b --factory-startup --python-exit-code 1 --python tests/data/blender/make_fixture.py \
       --python tools/cycles/fixture.py -- OUT.glb [SAMPLES] [WIDTH] [HEIGHT] [ONLY_LIGHT|all] [FLOOR|-]
-      [EXPOSURE]
+      [EXPOSURE] [VIEW]
 
 writes OUT.glb (the export, for rtcli) and OUT.cycles.png: frame 1, the world the grey rtcli gives
 a model without one (0.0509, Blender's default world), CPU, a box filter one pixel wide, no
@@ -13,6 +13,7 @@ can be compared alone. FLOOR changes the floor for Cycles only, after the export
 input stays the same: "no-bump" unlinks its bump node, "diffuse" makes it a Diffuse BSDF of the
 same colour (Lambert, no bump), to measure what each part of the material contributes.
 EXPOSURE (stops, default 0; rtcli's --exposure) keeps a bright floor from clipping in the PNG.
+VIEW is the view transform (default Standard; Filmic for rtcli's --view-transform Filmic).
 """
 import importlib.util
 import os
@@ -29,6 +30,7 @@ height = int(argv[3]) if len(argv) > 3 else 180
 only = argv[4] if len(argv) > 4 and argv[4] != "all" else None
 floor_variant = argv[5] if len(argv) > 5 and argv[5] != "-" else None
 exposure = float(argv[6]) if len(argv) > 6 else 0.0
+view = argv[7] if len(argv) > 7 else "Standard"
 if only:
     for obj in bpy.data.objects:
         if obj.type == "LIGHT" and obj.name != only:
@@ -70,7 +72,7 @@ s.cycles.filter_width = 1.0
 s.render.threads_mode = "FIXED"
 s.render.threads = 2
 s.render.resolution_x, s.render.resolution_y, s.render.resolution_percentage = width, height, 100
-s.view_settings.view_transform = "Standard"
+s.view_settings.view_transform = view
 s.view_settings.look = "None"
 s.view_settings.exposure = exposure
 world = bpy.data.worlds.new("world")
