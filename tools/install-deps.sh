@@ -14,7 +14,7 @@ fi
 
 packages=(g++ cmake ninja-build pkg-config
           libtinygltf-dev nlohmann-json3-dev libglm-dev libstb-dev zlib1g-dev libcli11-dev
-          catch2 libvalijson-dev libgif-dev libjpeg-dev libopenexr-dev libcpp-httplib-dev libdraco-dev libmeshoptimizer-dev libopencolorio-dev python3 tidy "$@")
+          catch2 libvalijson-dev libgif-dev libjpeg-dev libopenexr-dev libcpp-httplib-dev libdraco-dev libmeshoptimizer-dev libopencolorio-dev libwebp-dev python3 tidy "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -30,7 +30,7 @@ uint32_t TextureLibrary::load(const TextureFileReference& ref, Reporter& report,
   } else {
     const bool says_expected = error.message.rfind("expected", 0) == 0;
     report.error(ref.pointer,
-                 says_expected ? error.message : "expected a readable PNG or JPEG image; " + error.message);
+                 says_expected ? error.message : "expected a readable PNG, JPEG or WebP image; " + error.message);
   }
   indices_.emplace(key, index);
   return index;

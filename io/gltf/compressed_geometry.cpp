@@ -7,6 +7,7 @@
 #include <draco/core/decoder_buffer.h>
 #include <meshoptimizer.h>
 
+#include "io/base/base64.h"
 #include "io/json/locate.h"
 
 namespace rt {
@@ -15,22 +16,6 @@ namespace {
 constexpr const char* kDraco = "KHR_draco_mesh_compression";
 constexpr const char* kMeshopt = "EXT_meshopt_compression";
 constexpr const char* kMeshoptKhr = "KHR_meshopt_compression";  // the same scheme under its later name
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0,
-                   c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
-    const uint32_t v = (a << 16) | (b << 8) | c;
-    out.push_back(kDigits[(v >> 18) & 63]);
-    out.push_back(kDigits[(v >> 12) & 63]);
-    out.push_back(i + 1 < bytes.size() ? kDigits[(v >> 6) & 63] : '=');
-    out.push_back(i + 2 < bytes.size() ? kDigits[v & 63] : '=');
-  }
-  return out;
-}
 
 const Json* object_at(const Json& parent, const char* key) {
   const auto it = parent.find(key);
@@ -344,7 +329,7 @@ bool decompress_geometry(Json& document, const std::vector<std::vector<unsigned 
 }
 
 Json embedded_buffer(const std::vector<unsigned char>& bytes) {
-  return {{"uri", "data:application/octet-stream;base64," + base64(bytes)}, {"byteLength", bytes.size()}};
+  return {{"uri", "data:application/octet-stream;base64," + base64_encode(bytes)}, {"byteLength", bytes.size()}};
 }
 
 }  // namespace rt

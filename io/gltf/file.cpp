@@ -5,6 +5,7 @@
 
 #include <tiny_gltf.h>
 
+#include "io/base/base64.h"
 #include "io/base/input_file.h"
 #include "io/gltf/accessor.h"
 #include "io/gltf/compressed_geometry.h"
@@ -165,6 +166,21 @@ bool decode_compressed(std::string_view json, bool binary, const std::vector<uns
   return true;
 }
 
+// Images in data URIs of types tinygltf does not know (image/webp: EXT_texture_webp) are left as
+// URIs by it: their bytes are taken here, as it takes a PNG's, for the decoder to identify. One
+// that is not base64 stays a URI, and is reported as unreadable when a material uses it.
+void embedded_images(tinygltf::Model& model) {
+  for (tinygltf::Image& image : model.images) {
+    if (!image.image.empty() || image.bufferView >= 0 || image.uri.rfind("data:", 0) != 0) continue;
+    const size_t comma = image.uri.find(',');
+    if (comma == std::string::npos || comma < 12 || image.uri.compare(comma - 7, 7, ";base64") != 0) continue;
+    auto bytes = base64_decode(std::string_view(image.uri).substr(comma + 1));
+    if (!bytes || bytes->empty()) continue;
+    image.image = std::move(*bytes);
+    image.uri.clear();
+  }
+}
+
 }  // namespace
 
 std::string outside_folder_message(const std::string& uri, const std::string& base_dir) {
@@ -279,6 +295,7 @@ GltfFile parse_gltf(const std::vector<unsigned char>& bytes, const std::string& 
                      "it uses the extension \"" + name + "\", which rtcli ignores (extensionsUsed)");
   }
   if (!check_buffer_views(*model, report)) return result;
+  embedded_images(*model);
   result.model = std::move(model);
   return result;
 }

@@ -33,6 +33,21 @@ std::string percent_decoded(const std::string& uri) {
   return out;
 }
 
+namespace {
+
+// The image a texture shows: EXT_texture_webp's source where the texture names one (rtcli decodes
+// WebP), else the core `source` (the fallback a file without the extension's support reads).
+int texture_source(const tinygltf::Texture& texture) {
+  const auto it = texture.extensions.find("EXT_texture_webp");
+  if (it != texture.extensions.end() && it->second.IsObject()) {
+    const tinygltf::Value& source = it->second.Get("source");
+    if (source.IsInt()) return source.Get<int>();
+  }
+  return texture.source;
+}
+
+}  // namespace
+
 ImageDecoder::ImageDecoder(const tinygltf::Model& model, const std::string& base_dir, const LoadLimits& limits,
                            LimitUsage& usage, ImportedModel& out, Reporter& report)
     : model_(model), base_dir_(base_dir), limits_(limits), usage_(usage), out_(out), report_(report) {}
@@ -55,12 +70,13 @@ TextureSlot ImageDecoder::slot(const GltfTextureRef& ref, TextureEncoding encodi
   }
   const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(ref.index)];
   read_sampler(texture.sampler, slot.mapping);
-  if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) {
+  const int source = texture_source(texture);
+  if (source < 0 || static_cast<size_t>(source) >= model_.images.size()) {
     report_.warning("/textures/" + to_string(ref.index) + "/source",
                     where + ": texture " + to_string(ref.index) + " has no image; ignored");
     return slot;
   }
-  slot.texture = decode(source_of(static_cast<size_t>(texture.source)), encoding, where);
+  slot.texture = decode(source_of(static_cast<size_t>(source)), encoding, where);
   return slot;
 }
 
@@ -131,8 +147,9 @@ bool ImageDecoder::fit_in_budget() {
   uint64_t needed = 0;
   size_t counted = 0;
   for (const tinygltf::Texture& texture : model_.textures) {
-    if (texture.source < 0 || static_cast<size_t>(texture.source) >= model_.images.size()) continue;
-    const Source source = source_of(static_cast<size_t>(texture.source));
+    const int index = texture_source(texture);
+    if (index < 0 || static_cast<size_t>(index) >= model_.images.size()) continue;
+    const Source source = source_of(static_cast<size_t>(index));
     if (source.key.empty() || !seen.insert(source.key).second) continue;
     std::optional<std::vector<unsigned char>> file;
     std::span<const unsigned char> bytes = source.bytes;

@@ -14,7 +14,8 @@ const std::vector<std::string>& supported_gltf_extensions() {
                                               "KHR_materials_specular",     "KHR_materials_anisotropy",
                                               "KHR_materials_iridescence",  "KHR_materials_dispersion",
                                               "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                              "KHR_meshopt_compression",    "KHR_texture_transform"};
+                                              "KHR_meshopt_compression",    "EXT_texture_webp",
+                                              "KHR_texture_transform"};
   return names;
 }
 

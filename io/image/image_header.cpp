@@ -1,3 +1,5 @@
+#include <webp/decode.h>
+
 #include "io/image/image_header.h"
 
 #include <cstdio>
@@ -207,13 +209,33 @@ const char* image_format_name(const unsigned char* b, size_t size) {
   return nullptr;
 }
 
+// A WebP's size from its RIFF header, by libwebp's parser (which reads no pixel data). Animated
+// WebP is refused: a texture is one picture.
+std::optional<ImageHeader> webp_header(const unsigned char* b, size_t size, std::string& error) {
+  WebPBitstreamFeatures features;
+  if (WebPGetFeatures(b, size, &features) != VP8_STATUS_OK || features.width <= 0 || features.height <= 0) {
+    error = "expected a WebP image whose header can be read, found a damaged or truncated one";
+    return std::nullopt;
+  }
+  if (features.has_animation) {
+    error = "expected a still WebP image, found an animated one";
+    return std::nullopt;
+  }
+  ImageHeader h;
+  h.format = ImageFormat::kWebp;
+  h.width = static_cast<uint32_t>(features.width);
+  h.height = static_cast<uint32_t>(features.height);
+  return h;
+}
+
 std::optional<ImageHeader> read_image_header(const unsigned char* bytes, size_t size, std::string& error) {
   const char* format = image_format_name(bytes, size);
   if (format && std::strcmp(format, "PNG") == 0) return png_header(bytes, size, error);
   if (format && std::strcmp(format, "JPEG") == 0) return jpeg_header(bytes, size, error);
-  error = format ? std::string("expected a PNG or JPEG image, found a") +
+  if (format && std::strcmp(format, "WebP") == 0) return webp_header(bytes, size, error);
+  error = format ? std::string("expected a PNG, JPEG or WebP image, found a") +
                        (std::strchr("AEIOU", format[0]) ? "n " : " ") + format + " image"
-                 : "expected a PNG or JPEG image, found neither (" + first_bytes(bytes, size) + ")";
+                 : "expected a PNG, JPEG or WebP image, found neither (" + first_bytes(bytes, size) + ")";
   return std::nullopt;
 }
 

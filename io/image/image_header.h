@@ -19,7 +19,7 @@ namespace rt {
 // passes over the image.
 inline constexpr uint32_t kMaxJpegScans = 64;
 
-enum class ImageFormat { kPng, kJpeg };
+enum class ImageFormat { kPng, kJpeg, kWebp };
 
 struct ImageHeader {
   ImageFormat format = ImageFormat::kPng;
@@ -49,9 +49,9 @@ void for_each_png_chunk(const unsigned char* b, size_t size, const Visit& visit)
 // when they match none rtcli knows.
 const char* image_format_name(const unsigned char* bytes, size_t size);
 
-// The header of a PNG or JPEG image: its size and, for a JPEG, its scans (at most
-// kMaxJpegScans). Anything else, a truncated header, a zero size or an unsupported coding gives
-// nullopt and `error` completing "cannot read FILE as an image: ...".
+// The header of a PNG, JPEG or still WebP image (libwebp's own header parser): its size and, for a JPEG, its scans (at
+// most kMaxJpegScans). Anything else, a truncated header, a zero size or an unsupported coding gives nullopt and
+// `error` completing "cannot read FILE as an image: ...".
 std::optional<ImageHeader> read_image_header(const unsigned char* bytes, size_t size, std::string& error);
 
 }  // namespace rt

@@ -1,4 +1,4 @@
-// PNG and JPEG decoding. PNG by Debian's stb_image, compiled here with every other format left
+// PNG, JPEG and WebP decoding. PNG by Debian's stb_image, compiled here with every other format left
 // out (io/image/stb_image_impl.cpp); JPEG by Debian's libjpeg-turbo (io/image/jpeg_decoder.cpp), because
 // stb_image 2.27's JPEG decoder reads out of bounds on broken Huffman data (fuzzing found it;
 // fixed upstream in 2.28, not in Debian 12). No other decoder is reachable, whatever a file
@@ -44,6 +44,9 @@ std::optional<DecodedImage> decode_png_jpeg(const unsigned char* bytes, size_t s
 std::optional<DecodedImage> decode_png(const unsigned char* bytes, size_t size, const ImageHeader& header, int channels,
                                        std::string& error);
 std::optional<DecodedImage> decode_jpeg(const unsigned char* bytes, size_t size, const ImageHeader& header,
+                                        int channels, std::string& error);
+// WebP (glTF's EXT_texture_webp) by Debian's libwebp (BSD-3-Clause), io/image/webp_decoder.cpp.
+std::optional<DecodedImage> decode_webp(const unsigned char* bytes, size_t size, const ImageHeader& header,
                                         int channels, std::string& error);
 
 }  // namespace rt

@@ -1,4 +1,4 @@
-// Texture image files, PNG or JPEG (io/image/image_header.h says why no other format): 8- or 16-bit,
+// Texture image files, PNG, JPEG or WebP (io/image/image_header.h says why no other format): 8- or 16-bit,
 // grey, grey + alpha, RGB or RGBA, decoded to linear RGB. Colour textures are stored
 // sRGB-encoded and decoded; height and normal maps hold data, not colour, and are read as they
 // are; kAlpha reads the alpha channel (1 where there is none) into all three channels, for glTF's
@@ -27,7 +27,7 @@ struct TextureError {
   bool over_budget = false;  // the image is fine, but the scene's texel budget has no room for it
 };
 
-// A file that is missing, unreadable, not a PNG or JPEG, broken, or too big for what is left of
+// A file that is missing, unreadable, not a PNG, JPEG or WebP, broken, or too big for what is left of
 // the limits (LoadLimits::texture_texels for the image, scene_texels after usage.texels for it
 // and its mip levels, checked from its header) gives nullopt and an error that names `path` and
 // says what was found. A texture made adds its texels to usage.texels.

@@ -52,7 +52,7 @@ std::string ViewTransform::blender_config() {
 }
 
 std::shared_ptr<const ViewTransform> ViewTransform::open(const std::string& config_path, const std::string& view,
-                                                        const std::string& looks, std::string& error) {
+                                                         const std::string& looks, std::string& error) {
   // Read as any input (a regular file, bounded), so that a FIFO or a device is refused, not waited on.
   const auto text = read_input_text(config_path, kMaxConfigBytes, error);
   if (!text) return nullptr;

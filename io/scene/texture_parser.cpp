@@ -69,7 +69,7 @@ std::optional<TextureFileReference> file_reference(const JsonReader& r, const Js
   const auto file = read_string(r, v, ptr);
   if (!file) return std::nullopt;
   if (file->empty()) {
-    r.expected(ptr, "the path of a PNG or JPEG image", v);
+    r.expected(ptr, "the path of a PNG, JPEG or WebP image", v);
     return std::nullopt;
   }
   return TextureFileReference{*file, resolve_path(folder, *file), encoding, ptr};
@@ -87,7 +87,7 @@ std::optional<TextureFileReference> parse_texture_slot(const JsonReader& r, cons
     return std::nullopt;
   }
   ObjectReader o(r, value, ptr);
-  const Json* file = o.get("file", true, "the path of a PNG or JPEG image");
+  const Json* file = o.get("file", true, "the path of a PNG, JPEG or WebP image");
   parse_mapping(r, o, mapping);
   if (extra) extra(o);
   o.finish();

@@ -87,8 +87,8 @@ TEST_CASE("cli: --view-transform puts PNG output through an OpenColorIO view and
     CHECK(both.code == 2);
     CHECK_THAT(both.output, Catch::Contains("does not go with --tone-map"));
     const std::string junk = rt::test::write_file("view-transform/junk.ocio", "ocio_profile_version: [\n\"");
-    const auto bad = rt::test::rtcli("render " + scene + " --view-transform half --ocio-config " + junk + " -o " +
-                                     dir + "/x.png");
+    const auto bad =
+        rt::test::rtcli("render " + scene + " --view-transform half --ocio-config " + junk + " -o " + dir + "/x.png");
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("not a usable OpenColorIO config"));
     const auto fifo_made = rt::test::run_shell("mkfifo " + dir + "/fifo.ocio");

@@ -83,7 +83,7 @@ TEST_CASE("image formats: every other format is refused by name, before decoding
     const Loaded l = load(name);
     CHECK_FALSE(l.texture);
     CHECK_THAT(l.error.message,
-               Catch::Contains(std::string("expected a PNG or JPEG image, found ") + what + " in \"") &&
+               Catch::Contains(std::string("expected a PNG, JPEG or WebP image, found ") + what + " in \"") &&
                    Catch::Contains(name));
     CHECK(l.seconds < 1.0);
   }

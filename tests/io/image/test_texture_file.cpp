@@ -125,7 +125,7 @@ TEST_CASE("texture files: missing, not an image, zero-sized or too large are err
              Catch::Contains("no_such_texture.png") && Catch::Contains("file not found"));
 
   const std::string text = rt::test::write_file("not_an_image.png", "hello, I am text");
-  CHECK_THAT(load_error(text), Catch::Contains("expected a PNG or JPEG image, found neither (it starts with the "
+  CHECK_THAT(load_error(text), Catch::Contains("expected a PNG, JPEG or WebP image, found neither (it starts with the "
                                                "bytes 68 65 6c 6c) in \"" +
                                                text + "\""));
 
