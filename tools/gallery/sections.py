@@ -185,6 +185,23 @@ SECTIONS = [
                  "Equal time against Cycles, 160x160: Cycles 32 samples (RMSE 0.0102), rtcli 36 (0.0094), "
                  "rtcli denoised (0.0042)")],
      "tables": [("docs/rendering.md", "### Clean images sooner", 1)]},
+    {"id": "gltf-materials", "title": "Extra: glTF materials as the Khronos viewer shows them",
+     "what": "The ratified PBR extensions, one sphere each: clearcoat, sheen, specular (back row); anisotropy, "
+             "iridescence, dispersion (front row). Path traced as the glTF specification defines each lobe; "
+             "Whitted shows its documented approximation. Draco- and meshopt-compressed meshes and WebP textures "
+             "load too, and --view-transform Filmic shows a render as Blender's Filmic does.",
+     "how": "materials/bsdf_gltf.cpp (clearcoat GGX layer, Charlie sheen, F0/F90, anisotropic GGX, thin-film "
+            "Fresnel, one wavelength per path through dispersive glass), materials/pbr_to_phong.cpp (Whitted), "
+            "io/gltf/compressed_geometry.cpp, io/image/view_transform.h. docs/rendering.md, \"glTF material "
+            "extensions\".",
+     "scene": "scenes/material_extensions.json",
+     "renders": [("extensions-path", "", "Six spheres on a checked floor under a sky: a red clear-coated ball, a "
+                  "purple velvet one, a gold-tinted specular one, a brushed metal one with a stretched highlight, "
+                  "a dark iridescent one and a glass one splitting light into colours",
+                  "Path traced, 64 samples a pixel"),
+                 ("extensions-whitted", "--integrator whitted", "The same six spheres by Whitted ray tracing",
+                  "Whitted's approximation")],
+     "compare": ("extensions-whitted", "extensions-path")},
     {"id": "live", "title": "Extra: edit a scene, see it live; scenes of parts; renders that continue",
      "what": "rtcli watch shows a scene rendering in the browser and renders it again at every saved change, "
              "to the scene or any file it reads; a mistake shows located above the last good picture. The cafe "
