@@ -56,14 +56,13 @@ void drop_extension_name(Json& document, const char* name) {
 }
 
 // The bytes of a buffer view (bounds checked), or null.
-const unsigned char* view_bytes(const Json& document, const std::vector<std::vector<unsigned char>>& buffers,
-                                const Json& view, uint64_t& length) {
+const unsigned char* view_bytes(const std::vector<std::vector<unsigned char>>& buffers, const Json& view,
+                                uint64_t& length) {
   const int64_t buffer = index_at(view, "buffer", buffers.size());
   if (buffer < 0) return nullptr;
   const uint64_t offset = size_at(view, "byteOffset"), size = size_at(view, "byteLength");
   const auto& data = buffers[static_cast<size_t>(buffer)];
   if (offset > data.size() || size > data.size() - offset) return nullptr;
-  (void)document;
   length = size;
   return data.data() + offset;
 }
@@ -118,7 +117,7 @@ class Decoder {
       const Json ext = (*extensions)[name];
       const std::string at = "/bufferViews/" + std::to_string(v) + "/extensions/" + name;
       uint64_t length = 0;
-      const unsigned char* src = view_bytes(doc_, buffers_, ext, length);
+      const unsigned char* src = view_bytes(buffers_, ext, length);
       const uint64_t count = size_at(ext, "count"), stride = size_at(ext, "byteStride");
       const std::string mode = ext.value("mode", std::string());
       const std::string filter = ext.value("filter", std::string("NONE"));
@@ -209,7 +208,7 @@ class Decoder {
         views_it != doc_.end() && views_it->is_array() ? index_at(draco, "bufferView", views_it->size()) : -1;
     uint64_t length = 0;
     const unsigned char* src =
-        v >= 0 ? view_bytes(doc_, buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
+        v >= 0 ? view_bytes(buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
     if (!src) {
       report_.error(at + "/bufferView", "expected a buffer view inside its buffer's data");
       return false;
