@@ -20,7 +20,8 @@ std::string base64_encode(const std::vector<unsigned char>& bytes) {
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0, c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0,
+                   c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
     const uint32_t v = (a << 16) | (b << 8) | c;
     out.push_back(kDigits[(v >> 18) & 63]);
     out.push_back(kDigits[(v >> 12) & 63]);

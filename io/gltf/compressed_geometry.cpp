@@ -207,8 +207,7 @@ class Decoder {
     const int64_t v =
         views_it != doc_.end() && views_it->is_array() ? index_at(draco, "bufferView", views_it->size()) : -1;
     uint64_t length = 0;
-    const unsigned char* src =
-        v >= 0 ? view_bytes(buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
+    const unsigned char* src = v >= 0 ? view_bytes(buffers_, (*views_it)[static_cast<size_t>(v)], length) : nullptr;
     if (!src) {
       report_.error(at + "/bufferView", "expected a buffer view inside its buffer's data");
       return false;

@@ -7,8 +7,8 @@ namespace rt {
 std::optional<DecodedImage> decode_webp(const unsigned char* bytes, size_t size, const ImageHeader& header,
                                         int channels, std::string& error) {
   int width = 0, height = 0;
-  uint8_t* pixels = channels == 4 ? WebPDecodeRGBA(bytes, size, &width, &height)
-                                  : WebPDecodeRGB(bytes, size, &width, &height);
+  uint8_t* pixels =
+      channels == 4 ? WebPDecodeRGBA(bytes, size, &width, &height) : WebPDecodeRGB(bytes, size, &width, &height);
   if (!pixels) {
     error = "its WebP data is damaged";
     return std::nullopt;

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
 #include <webp/encode.h>
+#include <catch2/catch.hpp>
 
 #include "io/gltf/loader.h"
 #include "io/image/texture_file.h"
