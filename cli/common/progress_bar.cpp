@@ -1,5 +1,6 @@
 #include "cli/common/progress_bar.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt {
@@ -36,6 +37,14 @@ void ProgressBar::update(const RenderProgress& p) {
   constexpr int kWidth = 30;
   const double fraction =
       p.pixels_total ? static_cast<double>(p.pixels_done) / static_cast<double>(p.pixels_total) : 1.0;
+  if (style_ == ProgressStyle::kLines) {
+    const int percent = static_cast<int>(std::floor(100.0 * std::clamp(fraction, 0.0, 1.0)));
+    if (percent <= last_percent_) return;
+    last_percent_ = percent;
+    std::fprintf(out_, "rtcli: progress %d%%%s%s\n", percent, label_.empty() ? "" : " ", label_.c_str());
+    std::fflush(out_);
+    return;
+  }
   const int filled = static_cast<int>(fraction * kWidth);
   std::string line = "\r[" + std::string(static_cast<size_t>(filled), '#') +
                      std::string(static_cast<size_t>(kWidth - filled), '-') + "]";

@@ -21,8 +21,11 @@ namespace rt {
 std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded, const RenderSettings& settings,
                                  const StereoSettings& stereo, const FrameList& frames, const FrameContent& content,
                                  std::vector<FrameSink>& sinks, Film& film, RenderTotals& totals) {
-  ProgressBar bar(stderr);
-  const bool show_progress = !job.quiet && ::isatty(::fileno(stderr));
+  const ProgressStyle style = job.progress != ProgressStyle::kAuto       ? job.progress
+                              : !job.quiet && ::isatty(::fileno(stderr)) ? ProgressStyle::kBar
+                                                                         : ProgressStyle::kNone;
+  ProgressBar bar(stderr, style);
+  const bool show_progress = style != ProgressStyle::kNone;
   FrameScenes scenes(loaded.graph, loaded.frame, loaded.scene,
                      BvhBuildOptions{resolve_thread_count(settings.threads), loaded.scene.bvh.isa()});
   totals.passes = stereo.enabled() ? 2 : 1;

@@ -7,7 +7,8 @@
 //   [--animation NAME|INDEX] [--fps F] [--background R,G,B] [--ambient R,G,B]
 //   [--environment FILE [--environment-intensity K] [--environment-rotate DEG]] [--stereo MODE]
 //   [--dither] [--allow-outside-files] [--stats FILE.json] [--crop x0,y0,x1,y1 | --tile I/N|auto]
-//   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--denoise] [--quiet]`
+//   [--chunk I/N|auto] [--skip-existing] [--exr-float] [--aov albedo,normal,depth] [--denoise] [--quiet]
+//   [--progress auto|bar|lines|none] [--max-depth N]`
 // (cli/main.cpp declares them, with their help). RenderCommand holds the options as given; the
 // command reads them once into a checked RenderJob (cli/render/render_job.h) and the scene's
 // settings with their overrides, and nothing below it sees this struct.
@@ -72,6 +73,8 @@ struct RenderCommand {
   std::optional<std::string> denoiser;  // --denoiser NAME (implies --denoise)
   std::optional<std::string> resume;    // --resume FILE.exr: add samples to that render (cli/render/resume_plan.h)
   bool quiet = false;
+  std::optional<std::string> progress;  // --progress auto|bar|lines|none (cli/common/progress_bar.h)
+  std::optional<int> max_depth;         // --max-depth: bounces after the camera ray
 };
 
 int run_render(const RenderCommand& cmd);

@@ -39,7 +39,8 @@ bool check_names(const RenderCommand& cmd) {
          check_name("--tone-map", "tone curve", cmd.tone_map, kToneMaps) &&
          check_name("--aa-positions", "sample position", cmd.aa_positions, kSamplePositions) &&
          check_name("--stereo", "stereo mode", cmd.stereo, kStereoModes) &&
-         check_name("--denoiser", "denoiser", cmd.denoiser, denoisers());
+         check_name("--denoiser", "denoiser", cmd.denoiser, denoisers()) &&
+         check_name("--progress", "progress style", cmd.progress, kProgressStyles);
 }
 
 // "albedo,normal,depth" in any order, each once.
@@ -178,6 +179,7 @@ std::optional<RenderJob> make_render_job(const RenderCommand& cmd, const Environ
   job.samples_debug = cmd.samples_debug;
   job.dither = cmd.dither;
   job.quiet = cmd.quiet;
+  if (cmd.progress) job.progress = *kProgressStyles.parse(*cmd.progress);  // checked by check_names
   PixelChoices& c = job.choices;
   c.camera = cmd.camera.value_or("");
   c.background = cmd.background.value_or("");

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/common/progress_bar.h"
 #include "cli/frames/frame_list.h"
 #include "cli/frames/frame_output.h"
 #include "cli/frames/render_share.h"
@@ -57,6 +58,7 @@ struct RenderJob {
   bool aa_debug = false, samples_debug = false;
   bool dither = false;  // GIF frames: Floyd-Steinberg error diffusion
   bool quiet = false;
+  ProgressStyle progress = ProgressStyle::kAuto;  // --progress (auto: the bar on a terminal unless quiet)
   PixelChoices choices;
   // --view-transform: PNG and GIF frames through an OpenColorIO view instead of the tone curve;
   // null: the tone curve (and for "standard" without a config, which is the same sRGB encoding).

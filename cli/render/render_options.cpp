@@ -1,6 +1,7 @@
 #include "cli/render/render_options.h"
 
 #include "cli/common/number_checks.h"
+#include "cli/common/progress_bar.h"
 #include "core/accel/isa.h"
 #include "core/denoise/denoiser.h"
 #include "core/render/integrator.h"
@@ -50,6 +51,10 @@ void add_scene_options(CLI::App& cmd, RenderCommand& r) {
                  "Exposure in stops: the radiance is multiplied by 2^STOPS before the tone curve (overrides the "
                  "scene)")
       ->check(real_number(-kMaxExposure, kMaxExposure));
+  cmd.add_option("--max-depth", r.max_depth,
+                 "Bounces after the camera ray: reflections and refractions (Whitted), any bounce (path tracer) "
+                 "(overrides the scene's render.max_depth)")
+      ->check(whole_number(0, kMaxRecursionDepth));
   cmd.add_option("--spp", r.spp, "Path tracer: the most samples per pixel (overrides the scene's r.samples_per_pixel)")
       ->check(whole_number(1, kMaxSamplesPerPixel));
   cmd.add_option("--noise-threshold", r.noise_threshold,
@@ -151,6 +156,7 @@ void add_render_options(CLI::App& cmd, RenderCommand& r) {
   cmd.add_option("--stats", r.stats,
                  "Also write the render's figures (time, rays by kind, rays per pixel) as JSON to this file");
   cmd.add_flag("-q,--quiet", r.quiet, "Print nothing but errors and warnings");
+  cmd.add_option("--progress", r.progress, "How progress is shown on the error stream: " + kProgressStyles.help());
 }
 
 }  // namespace rt

@@ -27,6 +27,7 @@ RenderSettings with_overrides(RenderSettings s, const RenderCommand& cmd) {
   if (cmd.secondary_shadows) s.scale_secondary_shadows = *kSecondaryShadows.parse(*cmd.secondary_shadows);
   if (cmd.exposure) s.display.exposure = *cmd.exposure;
   if (cmd.tone_map) s.display.curve = *kToneMaps.parse(*cmd.tone_map);
+  if (cmd.max_depth) s.max_depth = *cmd.max_depth;
   if (cmd.spp) s.path.samples_per_pixel = *cmd.spp;
   if (cmd.noise_threshold) s.path.noise_threshold = *cmd.noise_threshold;
   if (cmd.clamp) s.path.clamp = *cmd.clamp;
