@@ -32,13 +32,15 @@ SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit) const {
 
 namespace {
 
-// The area lights' faces, each taking the ray's place as what it meets when nearer.
-void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out) {
+// The area lights' faces, each taking the ray's place as what it meets when nearer; a camera ray
+// passes through those hidden from the camera.
+void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out, bool camera_ray) {
   out.light = nullptr;
   for (const Light& light : lights) {
     const RectLight* rect = std::get_if<RectLight>(&light);
     float t;
-    if (rect && rect->intersect(ray, t, &out.light_uv)) {  // nearer than the surface and the lights before
+    if (rect && (rect->camera_visible || !camera_ray) &&
+        rect->intersect(ray, t, &out.light_uv)) {  // nearer than the surface and the lights before
       ray.tmax = t;
       out.light = rect;
       out.surface = false;
@@ -50,7 +52,7 @@ void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out)
 
 bool Scene::intersect(Ray& ray, SceneHit& out) const {
   out.surface = bvh.intersect(ray, out.hit);
-  meet_area_lights(lights, ray, out);
+  meet_area_lights(lights, ray, out, false);
   return out.surface || out.light;
 }
 
@@ -60,7 +62,7 @@ void Scene::intersect_packet(Ray* rays, SceneHit* out, int count) const {
   for (int i = 0; i < count; ++i) {
     out[i].surface = (found >> i & 1u) != 0;
     out[i].hit = hits[i];
-    meet_area_lights(lights, rays[i], out[i]);
+    meet_area_lights(lights, rays[i], out[i], true);
   }
 }
 

@@ -51,8 +51,9 @@ struct Scene {
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
   bool intersect(Ray& ray, SceneHit& out) const;
-  // intersect(ray, out) for count <= kPacketSize rays (neighbouring camera rays), their surfaces
-  // found together (Bvh::intersect_packet): each gets what it would get alone.
+  // intersect(ray, out) for count <= kPacketSize camera rays (neighbours), their surfaces found
+  // together (Bvh::intersect_packet): each gets what it would get alone, but passes through the
+  // area lights hidden from the camera (RectLight::camera_visible).
   void intersect_packet(Ray* rays, SceneHit* out, int count) const;
   bool occluded(const Ray& ray) const { return bvh.occluded(ray); }
   unsigned occluded_packet(const Ray* rays, int count) const { return bvh.occluded_packet(rays, count); }

@@ -29,6 +29,9 @@ struct RectLight {
   Vec3 color{1.0f};         // the radiance of its face: linear RGB, already multiplied by the scene's "intensity"
   Attenuation attenuation;  // Whitted's
   bool two_sided = false;
+  // False: camera rays pass through its face (Blender's lights, which Cycles hides from the camera
+  // unless Object > Visibility > Camera is on); reflections, refractions and bounces still meet it.
+  bool camera_visible = true;
 
   // Unit normal, the side it emits towards: edge1 x edge2. (io refuses parallel or zero edges.)
   Vec3 normal() const { return glm::normalize(glm::cross(edge1, edge2)); }

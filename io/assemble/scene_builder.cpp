@@ -115,6 +115,13 @@ class Builder {
       if (auto image = environment_image(e.path, why))
         g.background = Environment(std::move(image), e.intensity, e.rotate);
       else diags_.file_error(e.path, "--environment: " + why);
+    } else if (desc_.frame_the_model && file_world_ && !options_.background) {  // a model's own world
+      const ImportedWorld& w = *file_world_;
+      std::string why;
+      if (w.image.empty()) g.background = Environment(w.color);
+      else if (auto image = environment_image(w.image, why))
+        g.background = Environment(std::move(image), w.intensity, w.rotate);
+      else diags_.file_error(w.image, "the world image of the glTF file's scene (rtcli_world): " + why);
     } else if (desc_.environment && !options_.background) {  // --background replaces an image too
       const EnvironmentReference& e = *desc_.environment;
       std::string why;
@@ -353,6 +360,7 @@ class Builder {
         l.node += base;
         file_lights_.push_back(l);
       }
+      if (model.world && !file_world_) file_world_ = *model.world;
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
   }
@@ -408,6 +416,7 @@ class Builder {
   std::vector<Track> tracks_;
   std::vector<CameraPlacement> cameras_;  // from glTF files, node indices into nodes_
   std::vector<LightPlacement> file_lights_;
+  std::optional<ImportedWorld> file_world_;  // the first glTF file's rtcli_world: a model on its own shows it
   std::vector<std::string> files_;
   ModelLibrary models_{assets_, textures_, options_, usage_, bvh_options_, files_, report_};
   uint64_t instances_ = 0;

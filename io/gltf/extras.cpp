@@ -6,6 +6,8 @@
 
 #include <tiny_gltf.h>
 
+#include "io/base/input_file.h"
+#include "io/gltf/file.h"
 #include "io/gltf/images.h"
 #include "io/gltf/values.h"
 #include "io/json/locate.h"
@@ -78,6 +80,7 @@ std::optional<RectLight> area_light_from_extras(const tinygltf::Value& extras, c
   // (core/lights/rect_light.h): head-on at 1 m it lights with P / (4 pi), as in Cycles.
   light.attenuation = radiance_attenuation(light);
   light.two_sided = flag(a, "two_sided");
+  light.camera_visible = !a.Has("camera") || flag(a, "camera");
   return light;
 }
 
@@ -95,6 +98,42 @@ void apply_material_extras(const tinygltf::Value& extras, ImageDecoder& images, 
   material.bump.epsilon = std::max(0.0f, gltf_number(b, "epsilon").value_or(0.0f));
   // Blender's exporter wrote the Bump node's height image as a normal map: not one.
   if (material.bump.height.present()) material.normal_map = NormalMap{};
+}
+
+std::optional<ImportedWorld> world_from_extras(const tinygltf::Value& extras, const std::string& base_dir,
+                                               bool outside_files, const std::string& at, Reporter& report) {
+  if (!extras.IsObject() || !extras.Has("rtcli_world")) return std::nullopt;
+  const std::string here = at + "/extras/rtcli_world";
+  const tinygltf::Value& w = extras.Get("rtcli_world");
+  const auto strength = w.IsObject() && w.Has("strength") ? gltf_number(w, "strength") : std::optional<float>(1.0f);
+  const bool has_image = w.IsObject() && w.Has("image");
+  const auto color = w.IsObject() && !has_image ? gltf_numbers(w, "color", 3) : std::nullopt;
+  const auto rotation = w.IsObject() && w.Has("rotation") ? gltf_number(w, "rotation") : std::optional<float>(0.0f);
+  const bool good_color = color && (*color)[0] >= 0.0f && (*color)[1] >= 0.0f && (*color)[2] >= 0.0f;
+  const bool good_image = has_image && w.Get("image").IsString() && !w.Get("image").Get<std::string>().empty();
+  // Bounded as --environment-intensity and --environment-rotate are.
+  if (!strength || !(*strength >= 0.0f && *strength <= 1e6f) || !rotation || !(std::fabs(*rotation) <= 360.0f) ||
+      !(good_color || good_image)) {
+    report.warning(here,
+                   "the scene's rtcli_world needs {color [r, g, b] >= 0, strength >= 0} or {image (a file name), "
+                   "strength >= 0, rotation (degrees, -360 to 360)}; ignored: the model's default world is used");
+    return std::nullopt;
+  }
+  ImportedWorld world;
+  world.intensity = *strength;
+  world.rotate = *rotation;
+  if (!good_image) {
+    world.color = Vec3((*color)[0], (*color)[1], (*color)[2]) * *strength;
+    return world;
+  }
+  const std::string uri = w.Get("image").Get<std::string>();
+  world.image = resolve_path(base_dir, percent_decoded(uri));
+  // As a texture's file: a downloaded model must not show the user's other files.
+  if (!outside_files && !is_inside_folder(world.image, base_dir)) {
+    report.error(here + "/image", "the scene's world image: " + outside_folder_message(uri, base_dir));
+    return std::nullopt;
+  }
+  return world;
 }
 
 }  // namespace rt

@@ -36,6 +36,15 @@ struct ModelPlacement {
   Mat4 to_file{1.0f};
 };
 
+// The world of the scene a file was exported from (the default scene's extras rtcli_world, as
+// tools/blender/rtcli/export.py writes Blender's world): a colour, or an environment image.
+struct ImportedWorld {
+  Vec3 color{0.0f};   // a uniform world's radiance (colour x strength)
+  std::string image;  // or an equirectangular .hdr/.exr, resolved against the file's folder ("": none)
+  float intensity = 1.0f;
+  float rotate = 0.0f;  // degrees about +Y, rtcli's convention (core/lights/environment.h)
+};
+
 struct ImportedModel {
   std::vector<std::vector<ImportedPrimitive>> meshes;  // per glTF mesh
   std::vector<ImportedNode> nodes;                     // the default scene's, parents first
@@ -47,6 +56,7 @@ struct ImportedModel {
   std::vector<std::string> material_names;  // per glTF material, as the file names them ("" if not)
   std::vector<Texture> textures;            // the images the materials use, decoded once per encoding
   std::vector<std::string> files;           // every file read: the model and its external buffers
+  std::optional<ImportedWorld> world;       // the default scene's rtcli_world extras, if any
 };
 
 // What of a file to import. The constructors let a mesh name (or nothing) stand for a selection.

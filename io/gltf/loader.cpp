@@ -344,6 +344,10 @@ std::optional<ImportedModel> import_gltf_bytes(const std::vector<unsigned char>&
       if (!importer.add_mesh_node(i)) return std::nullopt;
     return out;
   }
+  const size_t errors_before_world = report.errors();
+  out.world = world_from_extras(model.scenes[static_cast<size_t>(scene)].extras, base_dir, limits.outside_files,
+                                "/scenes/" + to_string(scene), report);
+  if (report.errors() > errors_before_world) return std::nullopt;
   std::vector<int32_t> node_map(model.nodes.size(), -1);
   if (!place_scene(model, model.scenes[static_cast<size_t>(scene)], limits, "/scenes/" + to_string(scene), importer,
                    out, node_map, report))
