@@ -3,12 +3,13 @@
 # sudo otherwise. If neither works it lists the packages to install and fails. Extra package
 # names given as arguments are installed too (tools/fuzz.sh and --sanitize add clang's).
 # With --tests first, the optional test tools (chromium, for the gallery's browser test; slurm-wlm
-# and munge, for the farm test on a one-node cluster) are tried after them; a failure to install
+# and munge, for the farm test on a one-node cluster; blender with python3-numpy, and xvfb with
+# xauth for its window, for the Blender add-on's tests) are tried after them; a failure to install
 # one is said but does not stop the build (that test then says it is skipped). tools/test.sh passes it; quickstart and the fuzzers do not need them.
 set -euo pipefail
 optional=()
 if [ "${1:-}" = "--tests" ]; then
-  optional=(chromium slurm-wlm munge)
+  optional=(chromium slurm-wlm munge blender python3-numpy xvfb xauth)
   shift
 fi
 
@@ -45,5 +46,5 @@ if ! { "${run[@]}" apt-get update -qq &&
 fi
 if [ ${#optional_missing[@]} -gt 0 ] &&
    ! DEBIAN_FRONTEND=noninteractive "${run[@]}" apt-get install -y -qq --no-install-recommends "${optional_missing[@]}"; then
-  echo "rtcli: note: could not install ${optional_missing[*]} (optional: the gallery's browser test or the Slurm farm test is skipped)" >&2
+  echo "rtcli: note: could not install ${optional_missing[*]} (optional: the gallery's browser test, the Slurm farm test or the Blender add-on's tests are skipped)" >&2
 fi

@@ -9,8 +9,10 @@
 
 TEST_CASE("cli: --progress lines prints each whole percent once, rising to 100", "[cli][progress]") {
   const std::string out = rt::test::output_path("progress-lines.png");
-  const rt::test::Run r = rt::test::rtcli("render scenes/default.json --width 320 --height 240 --integrator path "
-                                          "--spp 8 -o '" + out + "' --progress lines");
+  const rt::test::Run r = rt::test::rtcli(
+      "render scenes/default.json --width 320 --height 240 --integrator path "
+      "--spp 8 -o '" +
+      out + "' --progress lines");
   INFO(r.output);
   REQUIRE(r.code == 0);
   int last = -1, lines = 0;

@@ -29,7 +29,8 @@ def make_bpy(export):
     box['note'] = 'keep me'
     material = Block(use_nodes=False, name='Red')
     bpy = types.ModuleType('bpy')
-    bpy.context = types.SimpleNamespace(scene=types.SimpleNamespace(objects=[softbox, lamp, box]))
+    scene = Block(objects=[softbox, lamp, box], world=None)
+    bpy.context = types.SimpleNamespace(scene=scene)
     bpy.data = types.SimpleNamespace(materials=[material])
     bpy.path = types.SimpleNamespace(abspath=lambda p: p)
     bpy.ops = types.SimpleNamespace(export_scene=types.SimpleNamespace(gltf=export))
@@ -37,6 +38,8 @@ def make_bpy(export):
 
 
 def load_exporter():
+    for name in [m for m in sys.modules if m == 'rtcli' or m.startswith('rtcli.')]:
+        del sys.modules[name]  # imported again against this stand-in bpy
     spec = importlib.util.spec_from_file_location('blender_export', os.path.join(REPO, 'tools', 'blender_export.py'))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -51,12 +54,15 @@ def main():
         seen['softbox'] = dict(softbox.get('rtcli_area_light', {}))
         seen['lamp'] = 'rtcli_area_light' in lamp
         seen['extras'] = settings.get('export_extras')
+        seen['world'] = dict(sys.modules['bpy'].context.scene.get('rtcli_world', {}))
 
     bpy, softbox, lamp, box = make_bpy(export)
     sys.modules['bpy'] = bpy
     exporter = load_exporter()
     exporter.export_for_rtcli(out)
     assert seen['softbox']['power'] == 150.0 and seen['lamp'] and seen['extras'], seen
+    assert seen['world'] == {'color': [0.0, 0.0, 0.0], 'strength': 1.0}, seen  # no world: black, as Cycles
+    assert 'rtcli_world' not in bpy.context.scene, dict(bpy.context.scene)
     assert softbox['rtcli_area_light'] == {'shape': 'OLD'}, softbox  # given back
     assert 'rtcli_area_light' not in lamp, lamp  # removed
     assert dict(box) == {'note': 'keep me'}, box  # untouched

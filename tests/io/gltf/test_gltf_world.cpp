@@ -115,9 +115,9 @@ TEST_CASE("glTF world: an image outside the model's folder, a broken image and b
 
 TEST_CASE("glTF world: a scene file placing the model keeps its own background", "[gltf][world]") {
   write_model("world-placed", {{"color", {0.2, 0.3, 0.5}}});
-  const LoadedScene loaded = rt::test::load_scene_text(
-      "world-placed/scene.json",
-      R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "background": [0, 0, 0],
+  const LoadedScene loaded =
+      rt::test::load_scene_text("world-placed/scene.json",
+                                R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "background": [0, 0, 0],
           "nodes": [{"mesh": {"file": "model.gltf"}}]})");
   CHECK(loaded.scene.background.radiance(Vec3(0, 0, -1)).z == Approx(0.0f));
 }

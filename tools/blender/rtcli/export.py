@@ -1,28 +1,29 @@
 # Exports the open Blender scene as glTF 2.0 for rtcli, with what glTF alone cannot carry written
-# into `extras` (Blender exports custom properties as extras):
-#   - area lights: rtcli_area_light = {shape, size [x, y], color [r, g, b], power (W), two_sided}
-#     on the light's object (glTF has no area lights; rtcli makes them rect lights);
+# into `extras` (Blender exports custom properties as extras). The one exporter: the render engine
+# (tools/blender/rtcli) calls it for every render, tools/blender_export.py for a file by hand.
+#   - area lights: rtcli_area_light = {shape, size [x, y], color [r, g, b], power (W), two_sided,
+#     camera (Object > Visibility > Camera)} on the light's object (glTF has no area lights; rtcli
+#     makes them rect lights);
 #   - bump maps: rtcli_bump = {image, strength} on a material whose Principled BSDF normal comes
 #     from a Bump node fed by an Image Texture (glTF has no height maps); the image is copied
-#     beside the exported file.
+#     beside the exported file;
+#   - the world: rtcli_world = {color [r, g, b], strength} (a Background colour, or a world without
+#     nodes) or {image, strength, rotation} (an Environment Texture, equirectangular; its image
+#     beside the exported file as .hdr or .exr; rotation in rtcli's degrees about +Y: Blender's
+#     image centre faces +X, rtcli's -Z, so 90 plus a Mapping node's Z rotation) on the scene.
 # Settings: Y up (glTF's), cameras, punctual lights in physical units ("SPEC": W -> cd with
 # 683 lm/W), extras, animation, modifiers applied. The custom properties are set for the export
 # only: afterwards (even if the export fails) each is removed, or given back the value it had, so
 # that they are not saved into the user's .blend.
-#
-# Usage (docs/scene-format.md, "From Blender"):
-#   blender scene.blend --background --python tools/blender_export.py -- out.glb
-# or from Blender's Scripting workspace: run this file with OUTPUT set below, or call
-# export_for_rtcli("/path/out.glb") from the Python console after importing it.
+# What the export cannot carry is returned as warnings (a world's unsupported nodes), for the
+# caller to show: the render engine in Blender's report, the script on its console.
 #
 # Licence: Apache-2.0, as the rest of rtcli.
+import math
 import os
 import shutil
-import sys
 
 import bpy
-
-OUTPUT = None  # a path here is used when the script is run from Blender's text editor
 
 
 def bump_source(material):
@@ -82,6 +83,7 @@ def mark_area_lights(scene, marked):
             'color': list(light.color),
             'power': light.energy,
             'two_sided': False,
+            'camera': bool(getattr(obj, 'visible_camera', True)),  # Cycles hides lights from the camera by default
         }, marked)
         count += 1
     return count
@@ -111,15 +113,98 @@ def mark_bump_maps(scene, out_dir, marked):
     return count
 
 
-def export_for_rtcli(path):
+def write_hdr(image, target):
+    """A Blender image (packed, generated, or 8-bit) as a flat Radiance .hdr of its linear values."""
+    import numpy  # Blender's Python has it; the tests' stand-in bpy does not need it
+    width, height = image.size
+    pixels = numpy.empty(width * height * 4, numpy.float32)
+    image.pixels.foreach_get(pixels)
+    rgb = pixels.reshape(height, width, 4)[::-1, :, :3].astype(numpy.float64)  # Blender's rows start at the bottom
+    if not image.is_float and image.colorspace_settings.name in ('sRGB', 'Filmic sRGB'):
+        rgb = numpy.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    rgb = numpy.maximum(rgb, 0.0)
+    top = rgb.max(axis=2)
+    mantissa, exponent = numpy.frexp(top)
+    scale = numpy.where(top > 1e-32, mantissa * 256.0 / numpy.maximum(top, 1e-32), 0.0)
+    rgbe = numpy.zeros((height, width, 4), numpy.uint8)
+    rgbe[:, :, :3] = numpy.minimum(rgb * scale[:, :, None], 255).astype(numpy.uint8)
+    rgbe[:, :, 3] = numpy.where(top > 1e-32, exponent + 128, 0).astype(numpy.uint8)
+    with open(target, 'wb') as f:  # flat scanlines: no run-length encoding
+        f.write(b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n' % (height, width))
+        f.write(rgbe.tobytes())
+    return target
+
+
+def world_settings(scene, out_dir, warnings):
+    """The rtcli_world value for the scene's world (its image copied into out_dir)."""
+    world = scene.world
+    if world is None:
+        return {'color': [0.0, 0.0, 0.0], 'strength': 1.0}  # Cycles renders no world as black
+    if not world.use_nodes:
+        return {'color': list(world.color), 'strength': 1.0}
+    tree = world.node_tree
+    output = next((n for n in tree.nodes if n.type == 'OUTPUT_WORLD' and n.is_active_output), None)
+    output = output or next((n for n in tree.nodes if n.type == 'OUTPUT_WORLD'), None)
+    surface = output.inputs.get('Surface') if output else None
+    if surface is None or not surface.is_linked:
+        return {'color': [0.0, 0.0, 0.0], 'strength': 1.0}
+    background = surface.links[0].from_node
+    if background.type != 'BACKGROUND':
+        warnings.append('world "%s": its %s node is not a Background node; rtcli uses the world\'s viewport '
+                        'colour' % (world.name, background.bl_label))
+        return {'color': list(world.color), 'strength': 1.0}
+    strength = background.inputs['Strength'].default_value
+    if background.inputs['Strength'].is_linked:
+        warnings.append('world "%s": a linked Strength is read as 1' % world.name)
+        strength = 1.0
+    color = background.inputs['Color']
+    if not color.is_linked:
+        return {'color': list(color.default_value)[:3], 'strength': strength}
+    texture = color.links[0].from_node
+    if texture.type != 'TEX_ENVIRONMENT' or texture.image is None or texture.projection != 'EQUIRECTANGULAR':
+        warnings.append('world "%s": its Background colour comes from a %s node, which rtcli cannot represent '
+                        '(an equirectangular Environment Texture with an image can); rtcli uses the world\'s '
+                        'viewport colour' % (world.name, texture.bl_label))
+        return {'color': list(world.color), 'strength': strength}
+    rotation = 0.0
+    vector = texture.inputs.get('Vector')
+    if vector is not None and vector.is_linked:
+        mapping = vector.links[0].from_node
+        if mapping.type == 'MAPPING' and mapping.inputs.get('Rotation') is not None:
+            rotation = math.degrees(mapping.inputs['Rotation'].default_value[2])
+            if any(abs(v) > 1e-6 for v in mapping.inputs['Rotation'].default_value[:2]):
+                warnings.append('world "%s": only the Mapping node\'s Z rotation is carried over' % world.name)
+        else:
+            warnings.append('world "%s": the environment\'s %s vector is ignored' % (world.name, mapping.bl_label))
+    image = texture.image
+    source = bpy.path.abspath(image.filepath) if image.filepath else ''
+    extension = os.path.splitext(source)[1].lower()
+    if os.path.isfile(source) and extension in ('.hdr', '.exr') and not image.packed_file:
+        name = 'world' + extension
+        shutil.copyfile(source, os.path.join(out_dir, name))
+    else:  # packed, generated, or an 8-bit format rtcli's environments do not read
+        name = write_hdr(image, os.path.join(out_dir, 'world.hdr')) and 'world.hdr'
+    # Into rtcli's convention, wrapped into its range (-360, 360).
+    turn = math.fmod(90.0 + rotation, 360.0)
+    return {'image': name, 'strength': strength, 'rotation': turn}
+
+
+def mark_world(scene, out_dir, marked, warnings):
+    set_property(scene, 'rtcli_world', world_settings(scene, out_dir, warnings), marked)
+
+
+def export_for_rtcli(path, animations=True):
+    """Writes the scene to `path` (.glb or .gltf); returns the warnings on what does not carry over."""
     path = os.path.abspath(path)
     out_dir = os.path.dirname(path)
     os.makedirs(out_dir, exist_ok=True)
     scene = bpy.context.scene
     marked = []
+    warnings = []
     try:
         areas = mark_area_lights(scene, marked)
         bumps = mark_bump_maps(scene, out_dir, marked)
+        mark_world(scene, out_dir, marked, warnings)
         bpy.ops.export_scene.gltf(
             filepath=path,
             export_format='GLB' if path.lower().endswith('.glb') else 'GLTF_SEPARATE',
@@ -129,16 +214,9 @@ def export_for_rtcli(path):
             convert_lighting_mode='SPEC',
             export_extras=True,
             export_apply=True,
-            export_animations=True,
+            export_animations=animations,
         )
     finally:
-        restore(marked)  # the user's objects and materials as they were
+        restore(marked)  # the user's objects, materials and scene as they were
     print('rtcli: wrote %s (%d area lights, %d bump maps as extras)' % (path, areas, bumps))
-
-
-if __name__ == '__main__':
-    argv = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
-    target = argv[0] if argv else OUTPUT
-    if not target:
-        raise SystemExit('usage: blender scene.blend --background --python tools/blender_export.py -- out.glb')
-    export_for_rtcli(target)
+    return warnings
