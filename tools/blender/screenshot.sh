@@ -17,7 +17,8 @@ done
 rtcli=$(realpath "$rtcli")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-export BLENDER_USER_SCRIPTS="$work/scripts" TMPDIR="$work"
+mkdir -p "$work/config"
+export BLENDER_USER_SCRIPTS="$work/scripts" BLENDER_USER_CONFIG="$work/config" TMPDIR="$work"
 blender -b --factory-startup --python-exit-code 1 --python tests/data/blender/addon_test.py -- blend "$work" "$rtcli" \
   > "$work/blend.log" 2>&1 || { cat "$work/blend.log" >&2; exit 1; }
 xvfb-run -a -s "-screen 0 1280x720x24" blender --factory-startup "$work/fixture.blend" \

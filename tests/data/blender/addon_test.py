@@ -16,7 +16,8 @@ fixture scene (make_fixture.py), renders with the engine "RTCLI" and prints "add
   cycles     a portrait image (sensor fit), a unit scale of 0.01 and a world colour: rtcli through the
              add-on against Cycles, RMSE of the display values
   environment  an Environment Texture turned by a Mapping node, seen in two directions: against Cycles
-  blend      the fixture saved with the engine chosen, for ui_test.py
+  blend      the fixture saved with the engine chosen (and exported by hand), for ui_test.py and
+             `blender -b fixture.blend -E RTCLI -a`
   heavy      a render that would take hours, for cancel_test.py to cancel
 """
 import importlib.util
@@ -286,6 +287,9 @@ def blend(out, rtcli):
     scene.rtcli.samples = 32
     scene.view_settings.view_transform = 'Filmic'
     bpy.ops.wm.save_as_mainfile(filepath=os.path.join(out, 'fixture.blend'))
+    # And exported by hand, for the tests to render with rtcli directly.
+    load('blender_export', os.path.join(REPO, 'tools', 'blender_export.py')).export_with_warnings(
+        os.path.join(out, 'hand', 'scene.glb'))
     return True
 
 

@@ -38,7 +38,9 @@ def main():
     blender, rtcli, out = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
     temp = os.path.join(out, 'tmp')
     os.makedirs(temp, exist_ok=True)
-    env = dict(os.environ, BLENDER_USER_SCRIPTS=os.path.join(out, 'scripts'), TMPDIR=temp)
+    os.makedirs(os.path.join(out, 'config'), exist_ok=True)
+    env = dict(os.environ, BLENDER_USER_SCRIPTS=os.path.join(out, 'scripts'), BLENDER_USER_CONFIG=os.path.join(out, 'config'),
+               TMPDIR=temp)
     # Blender's Python looks for its packages (numpy) from the python3 first on PATH: not this
     # interpreter's folder, if a virtual environment or pyenv put it there.
     own = os.path.dirname(sys.executable)

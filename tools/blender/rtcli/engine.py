@@ -93,16 +93,25 @@ class RtcliRenderEngine(bpy.types.RenderEngine):
         exr = os.path.join(folder, 'frame.exr')
         self.update_stats('', 'rtcli: exporting the scene')
         original = scene.original  # the user's scene, not the render's evaluated copy
+        layer = original.view_layers.get(view_layer.name) or original.view_layers[0]
 
         def export_scene():
-            with bpy.context.temp_override(scene=original):
+            # `blender -b -f` renders with no window in the context, so no view layer or active
+            # object either; the glTF exporter reads all three.
+            context = {'scene': original, 'view_layer': layer, 'active_object': layer.objects.active,
+                       'object': layer.objects.active,
+                       'selected_objects': [o for o in layer.objects if o.select_get(view_layer=layer)]}
+            windows = bpy.context.window_manager.windows
+            if bpy.context.window is None and len(windows) > 0:
+                context['window'] = windows[0]
+            with bpy.context.temp_override(**context):
                 return export.export_for_rtcli(glb)
 
         try:
             export_warnings = on_main_thread(export_scene)
-        except Exception as e:  # the exporter's own failure, with its message
+        except Exception as e:  # the exporter's own failure, with its message (nothing to keep)
             self.fail('rtcli: the glTF export failed: %s' % e)
-            return True
+            return False
         if self.first_of_job(scene):
             for warning in export_warnings + material_check.warnings_for(bpy.data.materials):
                 self.report({'WARNING'}, 'rtcli: ' + warning)
