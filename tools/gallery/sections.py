@@ -223,6 +223,20 @@ SECTIONS = [
                  "3. A typo in library/furniture.json: the error located, the last picture kept"),
                 ("watch-4-normals.png", "The page showing the normals layer after the fix",
                  "4. Fixed, and seen as its normals (?layer=normal)")]},
+    {"id": "blender", "title": "Extra: rtcli inside Blender",
+     "what": "A render engine add-on: choose rtcli in Blender's Render Properties and press F12; the scene goes "
+             "through Blender's glTF exporter and rtcli's extras (area lights, bump maps, the world), and rtcli's "
+             "float render lands in the Image Editor with its depth, normal and albedo passes. A frame is bit for "
+             "bit what rtcli renders from the same scene exported by hand.",
+     "how": "tools/blender/rtcli (the engine, the one exporter, the EXR reader); tests/data/blender/addon_test.py "
+            "runs it in Blender, headless; the screenshot is taken under Xvfb by tools/blender/screenshot.sh as "
+            "the test takes it. docs/blender.md.",
+     "scene": "tests/data/blender/fixture.glb",
+     "renders": [("blender-fixture", "--integrator path --spp 64 --max-depth 12",
+                  "The Blender fixture: a red box and a glass ball on a bump-mapped floor under a softbox",
+                  "The test's Blender scene, exported by tools/blender_export.py, path traced by rtcli")],
+     "images": [("blender-addon.png", "Blender 3.4 showing an rtcli render in its Image Editor, the engine's "
+                 "settings in Render Properties", "F12 in Blender with the rtcli engine (headless, under Xvfb)")]},
     {"id": "final", "title": "10. The final scene: toys left behind",
      "what": "Every objective in one picture: a toy box, marbles, balls, dice, jacks, cards and blocks on a table.",
      "how": "scenes/toys/toys.json, written by tools/make_toys_scene.py.",
