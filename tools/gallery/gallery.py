@@ -55,6 +55,8 @@ def load_scene(path):
 
 
 def scene_size(scene):
+    if not scene.endswith(".json"):  # a glTF model rendered on its own: rtcli's default size
+        return 640, 480
     render = load_scene(os.path.join(ROOT, scene)).get("render", {})
     return render.get("width", 640), render.get("height", 480)
 
