@@ -37,12 +37,40 @@ inline uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(u
 // The first Sobol dimension: the van der Corput sequence (the index's bits mirrored).
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
 
-// The second Sobol dimension (primitive polynomial x + 1: direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1).
-inline uint32_t sobol_dimension1(uint32_t index) {
+// The second Sobol dimension (primitive polynomial x + 1: direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1),
+// bit by bit: the definition, which the tests hold the tables below to.
+inline uint32_t sobol_dimension1_bitwise(uint32_t index) {
   uint32_t result = 0;
-  // Branch-free: which bits are set is noise to a branch predictor.
   for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) result ^= v & (0u - (index & 1u));
   return result;
+}
+
+// The same, a byte of the index at a time: the sum (xor) of the direction numbers of the index's
+// set bits is linear, so four tables of each byte's sums give it in four lookups (4 KiB, in L1).
+// The shuffled index has all 32 bits in play, so the loop took 32 rounds a sample: 15% of a
+// soft-shadow render went there (docs/benchmark.md, "Speed, round two").
+struct SobolByteTables {
+  uint32_t sums[4][256];
+};
+constexpr SobolByteTables make_sobol_dimension1_tables() {
+  SobolByteTables t{};
+  uint32_t v[32] = {};
+  v[0] = 1u << 31;
+  for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+  for (int byte = 0; byte < 4; ++byte)
+    for (uint32_t b = 0; b < 256; ++b) {
+      uint32_t sum = 0;
+      for (int j = 0; j < 8; ++j)
+        if (b >> j & 1u) sum ^= v[8 * byte + j];
+      t.sums[byte][b] = sum;
+    }
+  return t;
+}
+inline constexpr SobolByteTables kSobolDimension1 = make_sobol_dimension1_tables();
+
+inline uint32_t sobol_dimension1(uint32_t index) {
+  const auto& t = kSobolDimension1.sums;
+  return t[0][index & 0xffu] ^ t[1][index >> 8 & 0xffu] ^ t[2][index >> 16 & 0xffu] ^ t[3][index >> 24];
 }
 
 // The top 24 bits as a float in [0, 1): never rounded up to 1.

@@ -66,6 +66,17 @@ TEST_CASE("Sobol's first two dimensions make a (0, 2)-sequence, scrambled or not
   }
 }
 
+TEST_CASE("Sobol's second dimension by byte tables is the bit-by-bit definition, for every bit", "[sampling]") {
+  for (uint32_t bit = 0; bit < 32; ++bit) CHECK(sobol_dimension1(1u << bit) == sobol_dimension1_bitwise(1u << bit));
+  uint32_t x = 0x9e3779b9u;
+  for (int i = 0; i < 100000; ++i) {
+    x = x * 1664525u + 1013904223u;  // every byte of the index in play
+    REQUIRE(sobol_dimension1(x) == sobol_dimension1_bitwise(x));
+  }
+  CHECK(sobol_dimension1(0xffffffffu) == sobol_dimension1_bitwise(0xffffffffu));
+  CHECK(sobol_dimension1(0) == 0u);
+}
+
 TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions; independent ones do not", "[sampling]") {
   const auto points = [](SampleSequence sequence, SamplePurpose purpose, uint64_t path, uint64_t index) {
     std::vector<Vec2> p;
