@@ -3,20 +3,30 @@
 # tests can call it with plain values.
 #
 # Licence: Apache-2.0, as the rest of rtcli.
+from dataclasses import dataclass
 
 
+@dataclass
 class RenderRequest:
     """What one frame's render needs to know, read from Blender by the engine."""
-
-    def __init__(self, scene_file, output, frame, fps, width, height, camera=None, integrator='path', samples=64,
-                 noise_threshold=0.0, max_depth=12, denoise=False, seed=0, threads=0, aa='adaptive',
-                 shadow_samples=16, glossy_samples=8, aovs=()):
-        self.scene_file, self.output = scene_file, output
-        self.frame, self.fps, self.width, self.height = frame, fps, width, height
-        self.camera, self.integrator, self.samples = camera, integrator, samples
-        self.noise_threshold, self.max_depth, self.denoise, self.seed = noise_threshold, max_depth, denoise, seed
-        self.threads, self.aa, self.shadow_samples, self.glossy_samples = threads, aa, shadow_samples, glossy_samples
-        self.aovs = tuple(aovs)
+    scene_file: str
+    output: str
+    frame: int
+    fps: float
+    width: int
+    height: int
+    camera: str = None
+    integrator: str = 'path'
+    samples: int = 64
+    noise_threshold: float = 0.0
+    max_depth: int = 12
+    denoise: bool = False
+    seed: int = 0
+    threads: int = 0  # 0: rtcli's default, every CPU
+    aa: str = 'adaptive'
+    shadow_samples: int = 16
+    glossy_samples: int = 8
+    aovs: tuple = ()
 
 
 def render_arguments(request):

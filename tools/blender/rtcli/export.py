@@ -183,7 +183,8 @@ def world_settings(scene, out_dir, warnings):
         name = 'world' + extension
         shutil.copyfile(source, os.path.join(out_dir, name))
     else:  # packed, generated, or an 8-bit format rtcli's environments do not read
-        name = write_hdr(image, os.path.join(out_dir, 'world.hdr')) and 'world.hdr'
+        name = 'world.hdr'
+        write_hdr(image, os.path.join(out_dir, name))
     # Into rtcli's convention, wrapped into its range (-360, 360).
     turn = math.fmod(90.0 + rotation, 360.0)
     return {'image': name, 'strength': strength, 'rotation': turn}

@@ -56,7 +56,8 @@ def unrepresented(material):
         return []
     found = []
     principled_fed = set()
-    for node in _upstream(output, {}).values():
+    used = _upstream(output, {}).values()
+    for node in used:
         if node.type == 'BSDF_PRINCIPLED':
             principled_fed.update(link.from_node.name for s in node.inputs for link in s.links)
             for name, off in IGNORED_INPUTS:
@@ -67,7 +68,7 @@ def unrepresented(material):
                     found.append('Principled BSDF input %s (linked)' % name)
                 elif isinstance(socket.default_value, float) and abs(socket.default_value - off) > 1e-6:
                     found.append('Principled BSDF input %s (%.3g)' % (name, socket.default_value))
-    for node in _upstream(output, {}).values():
+    for node in used:
         if node.type in MAPPED and not (node.type in PARTLY and node.name not in principled_fed):
             continue
         if node.type == 'GROUP':
