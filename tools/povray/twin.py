@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the POV-Ray 3.7 twin of an rtcli scene file, for speed and image comparisons
 (docs/benchmark.md, "Against POV-Ray"). Analytic shapes, groups, Phong materials, mirrors, glass,
-point and rect lights, the perspective camera and the anti-aliasing settings are converted;
-anything else (meshes, textures, glossy, spot and directional lights, other cameras) is refused
+CSG solids, point and rect lights, the perspective camera, the anti-aliasing settings and image
+textures on planes are converted; anything else (meshes, other textures, glossy, spot and
+directional lights, other cameras) is refused
 by name, so a twin is never silently different.
 
   twin.py SCENE.json OUT.pov [--width W] [--height H]
@@ -20,8 +21,11 @@ Conversion rules (rtcli -> POV-Ray):
 - colour = ambient kd + sum of lights (kd n.l + ks (r.v)^shininess) + reflectivity R + ...:
   pigment kd (times 1 - transmission), finish { ambient <scene ambient> diffuse 1 phong ks
   phong_size shininess reflection reflectivity }; linear colours (assumed_gamma 1, sRGB output).
-- transmission t and ior n -> pigment transmit t, interior { ior n }, reflection with fresnel and
-  conserve_energy (rtcli uses Schlick's approximation, POV-Ray the exact Fresnel terms);
+- transmission t and ior n -> pigment transmit t (coloured t with kd 0: filter, rgbf <t, 1>), interior { ior n }, reflection { R, R + t fresnel
+  on } and conserve_energy: rtcli reflects R + t F at glass, F Fresnel's reflectance (Schlick's
+  approximation; POV-Ray the exact terms). POV-Ray's fresnel scales between the two values: with
+  one value alone (`reflection { 0 fresnel on }`) glass reflects nothing but total internal
+  reflection, which made the twin trace half the rays rtcli does;
   absorption a -> interior fade_power 1001 (Beer's law) with fade_colour exp(-a).
 - point light -> light_source, colour x intensity (attenuation must be [1, 0, 0]); rect light
   (corner, edges) -> an area_light of n x n points (n = sqrt(shadow_samples)), jittered, centred
@@ -34,6 +38,7 @@ Conversion rules (rtcli -> POV-Ray):
 import argparse
 import json
 import math
+import os
 import sys
 
 
@@ -79,10 +84,29 @@ SHAPES = {
 }
 
 
-def material(name, index, m, ambient):
-    known = {"kd", "ks", "shininess", "reflectivity", "transmission", "ior", "absorption"}
+def image_pigment(name, texture, folder):
+    """A texture on a plane: its (u, v) = ((x + 1) / 2, (z + 1) / 2) times scale, the image's first
+    row at v = 0; POV-Ray's image_map lies on x, y in [0, 1] with its first row at y = 1. The matrix
+    takes the image's (X, Y, Z) to the plane's (2 X / su - 1, Z, -2 Y / sv - 1)."""
+    if isinstance(texture, str):
+        texture = {"file": texture}
+    if set(texture) - {"file", "scale", "filter"} or texture.get("projection", "uv") != "uv":
+        fail("texture of material %r: %s have no twin" % (name, sorted(set(texture) - {"file", "scale", "filter"})))
+    su, sv = texture.get("scale", [1, 1]) if isinstance(texture.get("scale", 1), list) else [texture.get("scale", 1)] * 2
+    path = os.path.abspath(os.path.join(folder, texture["file"]))
+    kind = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg"}.get(os.path.splitext(path)[1].lower())
+    if kind is None:
+        fail("texture %r: only PNG and JPEG have a twin" % texture["file"])
+    return 'pigment { image_map { %s "%s" gamma srgb interpolate 2 } matrix <%.9g, 0, 0, 0, 0, %.9g, 0, 1, 0, -1, 0, -1> }' % (
+        kind, path, 2.0 / su, -2.0 / sv)
+
+
+def material(name, index, m, ambient, folder):
+    known = {"kd", "ks", "shininess", "reflectivity", "transmission", "ior", "absorption", "texture"}
     if set(m) - known:
         fail("material %r: %s have no twin" % (name, sorted(set(m) - known)))
+    if "texture" in m and ("kd" in m or "transmission" in m):
+        fail("material %r: a texture with kd or transmission has no twin" % name)
     kd = m.get("kd", 0.8)
     kd = [kd] * 3 if isinstance(kd, (int, float)) else kd
     t = m.get("transmission", 0)
@@ -95,10 +119,17 @@ def material(name, index, m, ambient):
         refl = min(1.0, ks)
     pigment = "pigment { rgbt <%.9g, %.9g, %.9g, %.9g> }" % (
         kd[0] * (1 - t3[0]), kd[1] * (1 - t3[1]), kd[2] * (1 - t3[2]), max(t3))
+    if max(kd) == 0 and len(set(t3)) > 1:
+        # Coloured glass: POV-Ray's filter passes light times the pigment's colour.
+        pigment = "pigment { rgbf <%.9g, %.9g, %.9g, 1> }" % tuple(t3)
+    if "texture" in m:
+        pigment = image_pigment(name, m["texture"], folder)
     finish = "finish { ambient %s diffuse 1 phong %.9g phong_size %.9g" % (rgb(ambient), ks, m.get("shininess", 32))
     interior = ""
     if max(t3) > 0:
-        finish += " reflection { %s fresnel on } conserve_energy" % (rgb(refl) if refl else "0")
+        refl3 = [refl] * 3 if isinstance(refl, (int, float)) else refl
+        finish += " reflection { %s, %s fresnel on } conserve_energy" % (
+            rgb(refl3), rgb([min(1.0, r + x) for r, x in zip(refl3, t3)]))
         interior = " interior { ior %.9g" % m.get("ior", 1.5)
         a = m.get("absorption")
         if a:
@@ -111,17 +142,28 @@ def material(name, index, m, ambient):
     return "#declare M_%d = material { texture { %s %s }%s }  // %s" % (index, pigment, finish, interior, name)
 
 
-def node(n, names, depth=1):
+CSG = {"union": "union", "intersection": "intersection", "difference": "difference", "merge": "merge"}
+
+
+def node(n, names, textured, depth=1):
+    """A shape, a group (union) or a CSG solid (POV-Ray's own four operations, each operand keeping
+    its material, the cut surfaces of a difference showing the subtracted operand's, as rtcli's)."""
     pad = "  " * depth
+    material = " material { M_%d }" % names[n["material"]] if "material" in n else ""
     if "children" in n:
-        body = "\n".join(node(c, names, depth + 1) for c in n["children"])
-        return "%sunion {\n%s\n%s  %s\n%s}" % (pad, body, pad, transform(n.get("transform")), pad)
+        op = CSG.get(n.get("csg", "union"))
+        if op is None:
+            fail("csg %r has no twin" % n["csg"])
+        body = "\n".join(node(c, names, textured, depth + 1) for c in n["children"])
+        return "%s%s {\n%s\n%s %s %s\n%s}" % (pad, op, body, pad, material, transform(n.get("transform")), pad)
     if "shape" not in n:
-        fail("node %r: only analytic shapes and groups have twins (not %s)" % (
+        fail("node %r: only analytic shapes, groups and CSG have twins (not %s)" % (
             n.get("name", "?"), sorted(set(n) - {"name", "transform", "material"})))
     if n["shape"] not in SHAPES:
         fail("shape %r has no twin" % n["shape"])
-    return "%s%s material { M_%d } %s }" % (pad, SHAPES[n["shape"]], names[n["material"]], transform(n.get("transform")))
+    if n.get("material") in textured and n["shape"] != "plane":
+        fail("a texture on a %s has no twin (only on a plane)" % n["shape"])
+    return "%s%s%s %s }" % (pad, SHAPES[n["shape"]], material, transform(n.get("transform")))
 
 
 def main():
@@ -164,9 +206,11 @@ def main():
                 vec(centre), rgb(colour), vec(e1), vec(e2), n, n))
         else:
             fail("%s lights have no twin" % light["type"])
+    folder = os.path.dirname(os.path.abspath(a.scene))
     for name, m in s.get("materials", {}).items():
-        out.append(material(name, names[name], m, ambient))
-    out += [node(n, names, 0) for n in s["nodes"]]
+        out.append(material(name, names[name], m, ambient, folder))
+    textured = {name for name, m in s.get("materials", {}).items() if "texture" in m}
+    out += [node(n, names, textured, 0) for n in s["nodes"]]
     with open(a.out, "w") as f:
         f.write("\n".join(out) + "\n")
     aa = render.get("antialias", {})
