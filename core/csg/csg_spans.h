@@ -13,6 +13,7 @@
 // past it keeps its nearest spans and says so (docs/csg.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 namespace rt {
@@ -22,11 +23,13 @@ enum class CsgOp : uint8_t { kUnion, kMerge, kIntersection, kDifference };
 // Where the line crosses one operand surface: its distance, which surface of the CSG object
 // (CsgObject::surfaces), and the surface's own hit record (a shape's face, a triangle and its
 // barycentrics).
+// No default member values, here and in CsgSpan: a list's storage is left unset until a span is
+// added, as zeroing 32 spans at every CSG node a ray meets cost more than combining them.
 struct CsgBoundary {
-  float t = 0.0f;
-  uint32_t surface = 0;
-  uint32_t part = 0;
-  float b1 = 0.0f, b2 = 0.0f;
+  float t;
+  uint32_t surface;
+  uint32_t part;
+  float b1, b2;
 };
 
 // One stretch inside the solid, from `in` to `out` (in.t < out.t). `medium`: the material of the
@@ -34,12 +37,22 @@ struct CsgBoundary {
 // refraction takes as the medium behind either boundary.
 struct CsgSpan {
   CsgBoundary in, out;
-  uint32_t medium = 0;
+  uint32_t medium;
 };
 
 class CsgSpanList {
  public:
   static constexpr int kCapacity = 32;
+
+  CsgSpanList() = default;
+  // Copies the spans held, not the whole capacity (lists are copied as a tree is combined).
+  CsgSpanList(const CsgSpanList& other) { *this = other; }
+  CsgSpanList& operator=(const CsgSpanList& other) {
+    count_ = other.count_;
+    truncated_ = other.truncated_;
+    std::copy(other.spans_, other.spans_ + other.count_, spans_);
+    return *this;
+  }
 
   int size() const { return count_; }
   bool empty() const { return count_ == 0; }
