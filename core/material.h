@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <type_traits>
 
 #include "core/material_layers.h"
 #include "core/math.h"
@@ -69,16 +70,37 @@ struct Material {
   AlphaCutoutParams cutout;
 
   // Every texture slot, for whoever renumbers textures (a glTF file's, added to a scene's).
-  std::array<TextureSlot*, 18> texture_slots() {
-    PbrLayers& l = pbr.layers;
-    return {&texture,
-            &specular_texture,
-            &bump.height,
-            &normal_map.map,
-            &emission_texture,
-            &pbr.texture,
-            &cutout.texture,
-            &transmission_texture,
+  std::array<TextureSlot*, 18> texture_slots() { return slots_of(*this); }
+  std::array<const TextureSlot*, 18> texture_slots() const { return slots_of(*this); }
+
+  // Whether shading reads the surface's texture coordinates: a texture in any slot (each is
+  // placed by them or by a projection), or an anisotropy direction without a tangent (dP/du).
+  bool reads_texcoords() const {
+    for (const TextureSlot* slot : texture_slots())
+      if (slot->present()) return true;
+    return pbr.layers.anisotropy.strength > 0.0f;
+  }
+
+  bool transmissive() const { return max_component(transmission) > 0.0f; }
+  // What passes through the material, before textures: its transmission; under glTF's model
+  // tinted by the base colour factor, and none through metal (KHR_materials_transmission).
+  Vec3 transmittance() const {
+    return pbr.enabled && !transmission_is_coverage ? transmission * kd * (1.0f - pbr.metallic) : transmission;
+  }
+  bool absorbing() const { return max_component(absorption) > 0.0f; }
+
+ private:
+  template <class M>  // Material or const Material
+  static std::array<std::conditional_t<std::is_const_v<M>, const TextureSlot*, TextureSlot*>, 18> slots_of(M& m) {
+    auto& l = m.pbr.layers;
+    return {&m.texture,
+            &m.specular_texture,
+            &m.bump.height,
+            &m.normal_map.map,
+            &m.emission_texture,
+            &m.pbr.texture,
+            &m.cutout.texture,
+            &m.transmission_texture,
             &l.clearcoat.texture,
             &l.clearcoat.roughness_texture,
             &l.clearcoat.normal_map.map,
@@ -90,14 +112,6 @@ struct Material {
             &l.iridescence.texture,
             &l.iridescence.thickness_texture};
   }
-
-  bool transmissive() const { return max_component(transmission) > 0.0f; }
-  // What passes through the material, before textures: its transmission; under glTF's model
-  // tinted by the base colour factor, and none through metal (KHR_materials_transmission).
-  Vec3 transmittance() const {
-    return pbr.enabled && !transmission_is_coverage ? transmission * kd * (1.0f - pbr.metallic) : transmission;
-  }
-  bool absorbing() const { return max_component(absorption) > 0.0f; }
 };
 
 }  // namespace rt

@@ -43,6 +43,10 @@ struct Scene {
   Emitters emitters;
   // Which light the path tracer samples where there are many (core/lights/light_selection.h).
   LightSelection light_selection;
+  // Per material: whether its shading reads texture coordinates (Material::reads_texcoords). A
+  // sphere's (u, v) frame, atan2, acos and three sines, is not made for one that does not (5% of
+  // refraction.json's render, measured). Empty: every material does, the safe default.
+  std::vector<uint8_t> texcoords_read;
 
   const std::vector<Material>& materials() const { return assets->materials; }
   const std::vector<Texture>& textures() const { return assets->textures; }
@@ -60,8 +64,10 @@ struct Scene {
   // The material index at a hit of the top-level BVH (a CSG solid's differs by operand).
   uint32_t material_of(const Hit& hit) const;
 
-  // The full surface record of a hit returned by intersect().
-  SurfaceInteraction surface(const Ray& ray, const Hit& hit) const;
+  // The full surface record of a hit returned by intersect(); its texture coordinates where the
+  // material reads them (kAsRead: for shading) or always (kAlways: to show them).
+  enum class Texcoords { kAsRead, kAlways };
+  SurfaceInteraction surface(const Ray& ray, const Hit& hit, Texcoords texcoords = Texcoords::kAsRead) const;
 
   // Every placed mesh copied into world space, in instance order: for one-level reference
   // structures (tests, the ray benchmark), not for rendering.

@@ -40,7 +40,7 @@ class DebugIntegrator final : public Integrator {
       h.surface.texcoord[0].uv = met.light_uv;
       record_first_hit(ctx, Vec3(0.0f), h.surface.shading_normal, h.distance, Vec3(0.0f));
     } else {
-      h.surface = ctx.scene.surface(h.ray, met.hit);
+      h.surface = ctx.scene.surface(h.ray, met.hit, Scene::Texcoords::kAlways);  // the uv view shows them
       if (ctx.aovs) {
         const EvaluatedSurface s = evaluate_surface(ctx.scene.materials()[h.surface.material], h.surface,
                                                     h.ray.direction, ctx.scene.textures());

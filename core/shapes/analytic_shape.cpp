@@ -75,20 +75,25 @@ Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
   return float_gamma(7) * glm::abs(p);
 }
 
-SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit) {
+SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit, bool texcoords) {
   const Ray object_ray = to_object_ray(shape, ray);
   Vec3 p_object = object_ray.at(hit.t);
   // The hit point as the ray found it is only as good as t; put back on the surface it is within
   // a few ulps of it (pbrt-v4's reprojection), which keeps rays leaving it close (core/ray.h).
   const Vec3 object_error = onto_surface(shape.kind, p_object, hit.part);
-  const SurfacePatch patch = object_space_patch(shape.kind, p_object, hit.part);
+  const bool frame = texcoords || shape.kind != ShapeKind::kSphere;
+  SurfacePatch patch;
+  if (frame) patch = object_space_patch(shape.kind, p_object, hit.part);
+  else patch.normal = glm::normalize(p_object);  // as sphere_patch makes it
   SurfaceInteraction si;
   si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
   si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
   si.shading_normal = si.geometric_normal;
-  si.texcoord[0] =
-      UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu), shape.transform.vector_to_world(patch.dpdv)};
-  si.texcoord[1] = si.texcoord[0];
+  if (frame) {
+    si.texcoord[0] =
+        UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu), shape.transform.vector_to_world(patch.dpdv)};
+    si.texcoord[1] = si.texcoord[0];
+  }
   si.object_position = p_object;
   si.object_from_world = Mat3(shape.transform.to_object);
   if (shape.kind == ShapeKind::kCylinder || shape.kind == ShapeKind::kCone) {

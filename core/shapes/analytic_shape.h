@@ -48,7 +48,9 @@ inline bool intersect_shape(const AnalyticShape& shape, const Ray& ray, Hit& hit
   return false;
 }
 
-// World-space surface at a hit (the hit's t and part from intersect_shape).
-SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit);
+// World-space surface at a hit (the hit's t and part from intersect_shape). Without `texcoords`, a
+// sphere's texture coordinates and their frame are left at UvFrame's defaults (the other shapes'
+// cost little and are always made).
+SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit, bool texcoords = true);
 
 }  // namespace rt

@@ -2,7 +2,9 @@
 // faces), and their tangent frames: orthogonal, u right and v down seen from outside (so images
 // read unmirrored), and equal to finite differences of the surface position.
 #include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
+#include "core/material.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/cube.h"
@@ -97,4 +99,36 @@ TEST_CASE("natural uv: tangent frames are orthogonal, read unmirrored and match 
       CHECK(du[1 - axis] / (2.0f * e) == Approx(0.0f).margin(2e-3));
     }
   }
+}
+
+TEST_CASE("shape uv: a sphere's frame is made only where the material reads it, with the same normal", "[uv]") {
+  AnalyticShape ball;
+  ball.kind = ShapeKind::kSphere;
+  ball.transform =
+      *make_transform(glm::translate(Mat4(1.0f), Vec3(0.5f, -1.0f, 2.0f)) * glm::scale(Mat4(1.0f), Vec3(2.0f)));
+  Ray ray;
+  ray.origin = Vec3(1.3f, 0.4f, 9.0f);
+  ray.direction = glm::normalize(Vec3(0.9f, -0.2f, 2.3f) - ray.origin);
+  Hit hit;
+  REQUIRE(intersect_shape(ball, ray, hit));
+  const SurfaceInteraction with = shape_surface(ball, ray, hit, true);
+  const SurfaceInteraction without = shape_surface(ball, ray, hit, false);
+  // Everything but the texture coordinates to the bit.
+  CHECK(without.position == with.position);
+  CHECK(without.position_error == with.position_error);
+  CHECK(without.geometric_normal == with.geometric_normal);
+  CHECK(without.shading_normal == with.shading_normal);
+  CHECK(without.object_position == with.object_position);
+  CHECK(without.front_face == with.front_face);
+  CHECK(with.texcoord[0].uv != Vec2(0.0f));
+  CHECK(without.texcoord[0].uv == Vec2(0.0f));
+  // Material::reads_texcoords: a texture in any slot, or anisotropy (its direction is dP/du).
+  Material plain;
+  CHECK_FALSE(plain.reads_texcoords());
+  Material textured;
+  textured.pbr.layers.sheen.color_texture.texture = 0;
+  CHECK(textured.reads_texcoords());
+  Material brushed;
+  brushed.pbr.layers.anisotropy.strength = 0.5f;
+  CHECK(brushed.reads_texcoords());
 }
