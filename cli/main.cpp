@@ -74,6 +74,12 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--save-rays", bench.save_rays,
                         "Write the ray sets traced to FILE, for another build or tools/embree_compare to replay");
   bench_cmd->add_option("--isa", bench.isa, isa_help());
+  bench.tools_dir = std::string(RTCLI_SOURCE_DIR) + "/tools";
+  bench_cmd
+      ->add_option("--against", bench.against,
+                   "Then compare with povray (tools/povray/compare.py on --scene's twin: wall and render time) or "
+                   "cycles (tools/cycles/speed.py on --path-scene's: path-traced samples per second); repeatable")
+      ->check(CLI::IsMember({"povray", "cycles"}));
 
   MergeCommand merge;
   CLI::App* merge_cmd = app.add_subcommand(

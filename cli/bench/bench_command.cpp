@@ -6,6 +6,7 @@
 #include "cli/bench/bench_model.h"
 #include "cli/bench/ray_benchmark.h"
 #include "cli/bench/render_benchmark.h"
+#include "cli/common/child_process.h"
 #include "cli/common/exit_codes.h"
 #include "cli/common/isa_choice.h"
 #include "cli/common/progress_bar.h"
@@ -95,11 +96,66 @@ bool bench_render(const std::string& path, bool path_traced, Isa isa, const std:
   return true;
 }
 
+// The script behind a comparison --against names.
+std::string comparison_script(const std::string& against, const BenchCommand& cmd) {
+  return cmd.tools_dir + (against == "povray" ? "/povray/compare.py" : "/cycles/speed.py");
+}
+
+// Whether a comparison --against names can run: its scene given, its script there. Checked
+// before anything slow; false with the reason printed.
+bool comparison_ready(const std::string& against, const BenchCommand& cmd) {
+  const bool pov = against == "povray";
+  const std::string& scene = pov ? cmd.scene : cmd.path_scene;
+  const std::string script = comparison_script(against, cmd);
+  if (scene.empty()) {
+    std::fprintf(stderr, "rtcli bench: error: --against %s compares %s, which is '' (skipped)\n", against.c_str(),
+                 pov ? "--scene" : "--path-scene");
+    return false;
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(script, ec)) {
+    std::fprintf(stderr, "rtcli bench: error: --against %s runs %s from rtcli's source tree, which is not there\n",
+                 against.c_str(), script.c_str());
+    return false;
+  }
+  return true;
+}
+
+// One of the comparisons --against names, run as a user would run it by hand (the command is
+// printed first, to rerun), with this rtcli and the bench's threads and repeats (at most 3: each
+// run renders a full-size image with both renderers). False when it failed.
+bool run_comparison(const std::string& against, const BenchCommand& cmd, unsigned threads) {
+  const bool pov = against == "povray";
+  std::error_code ec;
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+  const std::vector<std::string> args{"python3",
+                                      comparison_script(against, cmd),
+                                      "--threads",
+                                      std::to_string(threads),
+                                      "--runs",
+                                      std::to_string(std::min(cmd.repeats, 3)),
+                                      "--rtcli",
+                                      self.empty() ? "rtcli" : self,
+                                      pov ? cmd.scene : cmd.path_scene};
+  std::printf("\nagainst %s:", pov ? "POV-Ray" : "Cycles");
+  for (const std::string& a : args) std::printf(" %s", a.c_str());
+  std::printf("\n");
+  std::fflush(stdout);
+  std::string error;
+  const int status = run_program_attached(args, error);
+  if (status == 0) return true;
+  if (status < 0) std::fprintf(stderr, "rtcli bench: error: %s\n", error.c_str());
+  else std::fprintf(stderr, "rtcli bench: error: the comparison with %s failed (exit %d)\n", against.c_str(), status);
+  return false;
+}
+
 }  // namespace
 
 int run_bench(const BenchCommand& cmd) {
   const std::optional<Isa> isa = choose_isa(cmd.isa, "rtcli bench");
   if (!isa) return kExitBadInput;
+  for (const std::string& against : cmd.against)
+    if (!comparison_ready(against, cmd)) return kExitBadInput;
   // A ray file is read first: a bad one is reported before anything slow.
   std::vector<RaySet> sets;
   std::string error;
@@ -144,6 +200,8 @@ int run_bench(const BenchCommand& cmd) {
   if (!cmd.scene.empty() && !bench_render(cmd.scene, false, *isa, thread_counts, cmd.repeats)) return kExitBadInput;
   if (!cmd.path_scene.empty() && !bench_render(cmd.path_scene, true, *isa, thread_counts, cmd.repeats))
     return kExitBadInput;
+  for (const std::string& against : cmd.against)
+    if (!run_comparison(against, cmd, all)) return kExitFailure;
   return kExitSuccess;
 }
 

@@ -1,13 +1,5 @@
 #include "cli/farm/farm_command.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli/common/child_process.h"
 #include "cli/common/exit_codes.h"
 #include "cli/common/report.h"
 #include "cli/common/scene_loading.h"
@@ -42,43 +35,6 @@ const std::set<std::string> kFarmOwned = {"-o",      "--output",        "--tile"
 
 bool write_text(const std::string& path, const std::string& text, std::string& error) {
   return write_file_atomically(path, std::vector<uint8_t>(text.begin(), text.end()), error);
-}
-
-// A program's standard output and error, and whether it exited 0. No shell: the arguments reach
-// it as they are, whatever they hold (job ids and paths from a shared folder are not trusted).
-bool run_program(const std::vector<std::string>& args, std::string& out) {
-  int fds[2];
-  if (::pipe(fds) != 0) return false;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
-  posix_spawn_file_actions_addclose(&actions, fds[0]);
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(fds[1]);
-  if (spawned != 0) {
-    ::close(fds[0]);
-    out = args[0] + ": " + std::strerror(spawned) + "\n";
-    return false;
-  }
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      break;
-    }
-    out.append(buffer, static_cast<size_t>(n));
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 // The value of a render option passed on to the tasks ("--height 90" or "--height=90"), the last

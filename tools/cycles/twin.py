@@ -3,16 +3,22 @@
   blender -b --factory-startup --python-exit-code 1 -P tools/cycles/twin.py -- SCENE.json OUT.png \
       [--samples N] [--width W --height H] [--threads T]
 
-Only what the twin needs for scenes like scenes/cornell_box.json: planes and cubes with Phong
-materials (kd: a Diffuse BSDF, which is Lambert), rect lights (a quad with an Emission shader of
-strength 1 and the light's colour: radiance, as rtcli's rect lights), a perspective camera, the
-background as the world colour. rtcli is Y-up and Blender Z-up: a point (x, y, z) goes to
+Only what the twin needs for scenes like scenes/cornell_box.json and scenes/environment.json:
+planes, cubes and spheres (a smooth UV sphere of 64 x 32 faces: Cycles traces triangles), rect
+lights (a quad with an Emission shader of strength 1 and the light's colour: radiance, as rtcli's
+rect lights), a perspective camera, the background as the world colour or an equirectangular
+environment (strength = intensity; rtcli's image centre faces -Z, Blender's +X: a Mapping node
+turns it by rotate - 90 degrees about Blender's Z). Materials: kd alone is a Diffuse BSDF (Lambert);
+transmission a Glass BSDF of the ior (sharp); reflectivity R a Glossy BSDF of colour R, mixed over
+the diffuse by R where kd is not 0, its roughness rtcli's `glossy` (the blur-square width: a
+likeness, not the same lobe). Anything else is refused. rtcli is Y-up and Blender Z-up: a point (x, y, z) goes to
 (x, -z, y), a proper rotation. Cycles runs on the CPU with a box pixel filter one pixel wide (as
 rtcli's path sampler), no denoiser, no clamping, max bounces = render.max_depth, the Standard view
 transform (linear to sRGB, as rtcli's clamp tone map). Prints the render time Cycles reports.
 """
 import json
 import math
+import os
 import sys
 import time
 
@@ -25,6 +31,25 @@ SHAPES = {
     "cube": ([(x, y, z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)],
              [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]),
 }
+
+
+def uv_sphere(segments=64, rings=32):
+    """The unit sphere as quads (triangles at the poles), wound outwards."""
+    verts = [(0, 1, 0)]
+    for r in range(1, rings):
+        theta = math.pi * r / rings
+        verts += [(math.sin(theta) * math.sin(2 * math.pi * s / segments), math.cos(theta),
+                   math.sin(theta) * math.cos(2 * math.pi * s / segments)) for s in range(segments)]
+    verts.append((0, -1, 0))
+    ring = lambda r, s: 1 + (r - 1) * segments + s % segments
+    faces = [(0, ring(1, s), ring(1, s + 1)) for s in range(segments)]
+    for r in range(1, rings - 1):
+        faces += [(ring(r, s), ring(r + 1, s), ring(r + 1, s + 1), ring(r, s + 1)) for s in range(segments)]
+    faces += [(len(verts) - 1, ring(rings - 1, s + 1), ring(rings - 1, s)) for s in range(segments)]
+    return verts, faces
+
+
+SHAPES["sphere"] = uv_sphere()
 
 
 def to_blender(p):
@@ -49,7 +74,7 @@ def trs(t):
     return m @ Matrix.Diagonal(Vector((s[0], s[1], s[2], 1)))
 
 
-def material(name, rgb=None, emission=None):
+def material(name, spec=None, emission=None):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     nodes, links = m.node_tree.nodes, m.node_tree.links
@@ -60,17 +85,46 @@ def material(name, rgb=None, emission=None):
         e.inputs["Color"].default_value = (*emission, 1)
         e.inputs["Strength"].default_value = 1.0
         links.new(e.outputs["Emission"], out.inputs["Surface"])
-    else:
-        d = nodes.new("ShaderNodeBsdfDiffuse")
-        d.inputs["Color"].default_value = (*rgb, 1)
-        d.inputs["Roughness"].default_value = 0.0  # Lambert
+        return m
+    known = {"kd", "reflectivity", "glossy", "transmission", "ior"}
+    if set(spec) - known:
+        raise SystemExit("tools/cycles/twin.py: material %r: %s have no twin" % (name, sorted(set(spec) - known)))
+    kd = colour(spec.get("kd"), [0.8] * 3)
+    transmission = colour(spec.get("transmission"), [0, 0, 0])
+    reflectivity = colour(spec.get("reflectivity"), [0, 0, 0])
+    if max(transmission) > 0:
+        g = nodes.new("ShaderNodeBsdfGlass")
+        g.distribution = "SHARP"
+        g.inputs["Color"].default_value = (*transmission, 1)
+        g.inputs["IOR"].default_value = float(spec.get("ior", 1.5))
+        links.new(g.outputs["BSDF"], out.inputs["Surface"])
+        return m
+    d = nodes.new("ShaderNodeBsdfDiffuse")
+    d.inputs["Color"].default_value = (*kd, 1)
+    d.inputs["Roughness"].default_value = 0.0  # Lambert
+    if max(reflectivity) <= 0:
         links.new(d.outputs["BSDF"], out.inputs["Surface"])
+        return m
+    g = nodes.new("ShaderNodeBsdfGlossy")
+    g.distribution = "GGX" if spec.get("glossy", 0) > 0 else "SHARP"
+    g.inputs["Roughness"].default_value = float(spec.get("glossy", 0))
+    if max(kd) <= 0:
+        g.inputs["Color"].default_value = (*reflectivity, 1)
+        links.new(g.outputs["BSDF"], out.inputs["Surface"])
+        return m
+    mix = nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = max(reflectivity)
+    links.new(d.outputs["BSDF"], mix.inputs[1])
+    links.new(g.outputs["BSDF"], mix.inputs[2])
+    links.new(mix.outputs["Shader"], out.inputs["Surface"])
     return m
 
 
-def add_mesh(name, verts, faces, mat):
+def add_mesh(name, verts, faces, mat, smooth=False):
     mesh = bpy.data.meshes.new(name)
     mesh.from_pydata([tuple(v) for v in verts], [], faces)
+    for polygon in mesh.polygons:
+        polygon.use_smooth = smooth
     mesh.update()
     obj = bpy.data.objects.new(name, mesh)
     obj.data.materials.append(mat)
@@ -114,16 +168,33 @@ def main():
 
     world = bpy.data.worlds.new("world")
     world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (*colour(scene.get("background"), [0, 0, 0]), 1)
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+    background = world.node_tree.nodes["Background"]
+    sky = scene.get("background")
+    if isinstance(sky, dict):
+        nodes, links = world.node_tree.nodes, world.node_tree.links
+        image = nodes.new("ShaderNodeTexEnvironment")
+        folder = os.path.dirname(os.path.abspath(scene_path))
+        image.image = bpy.data.images.load(os.path.join(folder, sky["environment"]))
+        mapping, coords = nodes.new("ShaderNodeMapping"), nodes.new("ShaderNodeTexCoord")
+        mapping.inputs["Rotation"].default_value[2] = math.radians(float(sky.get("rotate", 0)) - 90.0)
+        links.new(coords.outputs["Generated"], mapping.inputs["Vector"])
+        links.new(mapping.outputs["Vector"], image.inputs["Vector"])
+        links.new(image.outputs["Color"], background.inputs["Color"])
+        background.inputs["Strength"].default_value = float(sky.get("intensity", 1))
+    else:
+        background.inputs["Color"].default_value = (*colour(sky, [0, 0, 0]), 1)
+        background.inputs["Strength"].default_value = 1.0
     s.world = world
 
-    mats = {n: material(n, colour(m.get("kd"), [0.8] * 3)) for n, m in scene.get("materials", {}).items()}
+    mats = {n: material(n, m) for n, m in scene.get("materials", {}).items()}
     for node in scene.get("nodes", []):
+        if node.get("shape") not in SHAPES:
+            raise SystemExit("tools/cycles/twin.py: node %r has no twin (planes, cubes and spheres only)" %
+                             node.get("name", "?"))
         verts, faces = SHAPES[node["shape"]]
         m = trs(node.get("transform"))
         add_mesh(node.get("name", node["shape"]), [to_blender(m @ Vector(v)) for v in verts], faces,
-                 mats[node["material"]])
+                 mats[node["material"]], smooth=node["shape"] == "sphere")
     for i, light in enumerate(scene.get("lights", [])):
         if light["type"] != "rect":
             raise SystemExit("tools/cycles/twin.py: only rect lights are twinned, found " + light["type"])

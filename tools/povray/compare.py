@@ -12,6 +12,7 @@ import argparse
 import json
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -42,6 +43,8 @@ def main():
     p.add_argument("--runs", type=int, default=3)
     p.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
     a = p.parse_args()
+    if shutil.which("povray") is None:
+        sys.exit("compare.py: error: povray is not installed (Debian: apt-get install povray)")
     print("| scene | rtcli wall | POV-Ray wall | ratio | rtcli render | POV-Ray trace | ratio | RMS apart |")
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:

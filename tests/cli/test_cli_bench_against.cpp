@@ -1,0 +1,43 @@
+// rtcli bench --against: the source tree's comparisons (tools/povray/compare.py,
+// tools/cycles/speed.py) run with this rtcli after the bench, the command printed to rerun; what
+// cannot run is said before anything slow.
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "tests/support/run_rtcli.h"
+#include "tests/support/test_paths.h"
+
+TEST_CASE("cli: bench --against refuses a comparison without its scene, or one it does not know, at once",
+          "[cli][bench]") {
+  rt::test::Run r = rt::test::rtcli("bench --scene '' --against povray");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--against povray compares --scene, which is '' (skipped)"));
+  CHECK_THAT(r.output, !Catch::Contains("BVH build"));  // before the benchmark, not after it
+  r = rt::test::rtcli("bench --path-scene '' --against cycles");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--against cycles compares --path-scene, which is '' (skipped)"));
+  r = rt::test::rtcli("bench --against mitsuba");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--against") && Catch::Contains("mitsuba"));
+}
+
+TEST_CASE("cli: bench --against povray times a scene and its POV-Ray twin, and prints the command", "[cli][bench]") {
+  if (rt::test::run_shell("command -v povray >/dev/null 2>&1").code != 0) {
+    WARN("povray is not installed (tools/install-deps.sh --tests installs it): skipped");
+    return;
+  }
+  // One sphere under a point light, no anti-aliasing: a second with either renderer at 1920 x 1440.
+  const std::string scene = rt::test::write_file(
+      "against_ball.json",
+      R"({"render": {"antialias": {"mode": "none"}}, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+          "materials": {"red": {"kd": [0.8, 0.1, 0.1]}}, "lights": [{"type": "point", "position": [3, 4, 5]}],
+          "nodes": [{"shape": "sphere", "material": "red"}]})");
+  const rt::test::Run r = rt::test::rtcli("bench scenes/models/gem.gltf --scene '" + scene +
+                                          "' --path-scene '' --repeats 1 --against povray");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("against POV-Ray: python3 ") && Catch::Contains("tools/povray/compare.py") &&
+                           Catch::Contains("--runs 1 --rtcli "));
+  CHECK_THAT(r.output, Catch::Contains("| against_ball | ") && Catch::Contains("× |"));
+}
