@@ -252,10 +252,11 @@ SECTIONS = [
      "renders": [("toys-turntable", "--frames 0-119", "The toys turning on a tray, a looping GIF",
                   "A 4-second loop")]},
     {"id": "speed", "title": "Speed",
-     "what": "rtcli against POV-Ray 3.7 on like-for-like twins of the scenes above, whole process and render "
-             "time, alternating runs: today's figures. How they came to be, step by step, and rtcli's BVH "
-             "against Embree on the same rays, are in docs/benchmark.md.",
-     "how": "tools/povray/twin.py writes each twin by documented rules; compare.py times both.",
+     "what": "Today's ratios: rtcli against POV-Ray 3.7 on like-for-like twins of the scenes above (whole process "
+             "and render time), against Cycles on path-traced samples a second, and its BVH against Embree's on "
+             "the same rays. The full tables, how each came to be and the steps before are in docs/benchmark.md.",
+     "how": "tools/povray/twin.py and tools/cycles/twin.py write the twins by documented rules; "
+            "rtcli bench --against povray or cycles reruns the comparisons with your build.",
      # (file, heading, how many of its tables: the first, today's)
-     "tables": [("docs/benchmark.md", "## Against POV-Ray", 1)]},
+     "tables": [("docs/benchmark.md", "## Today's ratios", 1)]},
 ]
