@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/csg/csg_mesh_hits.h"
+#include "core/shapes/sphere.h"
 
 namespace rt {
 namespace {
@@ -156,9 +157,14 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
     // A convex shape: its two crossings of the line (a grazing ray's single one is no span).
     Ray r = to_object_ray(first.shape, line);
     Hit a, b;
-    if (!intersect_object_space(first.shape.kind, r, a)) return;
-    r.tmin = std::nextafter(a.t, kInfinity);
-    if (!intersect_object_space(first.shape.kind, r, b)) return;
+    if (first.shape.kind == ShapeKind::kSphere) {
+      // One quadratic for both crossings (a tenth of csg.json's render solved each twice).
+      if (!intersect_sphere_twice(r, a, b)) return;
+    } else {
+      if (!intersect_object_space(first.shape.kind, r, a)) return;
+      r.tmin = std::nextafter(a.t, kInfinity);
+      if (!intersect_object_space(first.shape.kind, r, b)) return;
+    }
     out.add(CsgSpan{CsgBoundary{a.t, leaf.first_surface, a.part, 0.0f, 0.0f},
                     CsgBoundary{b.t, leaf.first_surface, b.part, 0.0f, 0.0f}, medium});
     return;

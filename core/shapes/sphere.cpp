@@ -18,6 +18,24 @@ bool intersect_sphere(const Ray& ray, Hit& hit) {
   return false;
 }
 
+bool intersect_sphere_twice(const Ray& ray, Hit& first, Hit& second) {
+  const glm::dvec3 o(ray.origin), d(ray.direction);
+  double t0, t1;
+  if (!solve_quadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0, t0, t1)) return false;
+  // intersect_sphere's choice, for a given tmin: the nearer root inside the interval.
+  const auto pick = [&](float tmin, Hit& hit) {
+    for (const double t : {t0, t1}) {
+      if (t > tmin && t < ray.tmax) {
+        hit.t = static_cast<float>(t);
+        hit.part = 0;
+        return true;
+      }
+    }
+    return false;
+  };
+  return pick(ray.tmin, first) && pick(std::nextafter(first.t, kInfinity), second);
+}
+
 SurfacePatch sphere_patch(Vec3 p, uint32_t /*part*/) {
   SurfacePatch s;
   s.normal = glm::normalize(p);

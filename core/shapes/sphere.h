@@ -8,6 +8,10 @@
 namespace rt {
 
 bool intersect_sphere(const Ray& ray, Hit& hit);
+// intersect_sphere(ray, first), then intersect_sphere from just past it (ray.tmin the float after
+// first.t) into `second`: the same two hits, from one solution of the quadratic (a CSG operand's
+// two crossings of a line). False when either is missing.
+bool intersect_sphere_twice(const Ray& ray, Hit& first, Hit& second);
 SurfacePatch sphere_patch(Vec3 p, uint32_t part);
 
 }  // namespace rt

@@ -74,3 +74,42 @@ TEST_CASE("sphere under non-uniform scale: world normal is the inverse transpose
   CHECK(si.geometric_normal.y == Approx(expected.y).margin(1e-5));
   CHECK(si.front_face);
 }
+
+TEST_CASE("sphere: both crossings from one quadratic are the two intersect_sphere calls, to the bit",
+          "[shapes][sphere][csg]") {
+  // Lines through, grazing, missing and starting inside, from near and far, as CSG asks them
+  // (tmin -infinity): the first crossing, then the next past the float after it.
+  uint64_t state = 12345;
+  const auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<float>(state >> 40) * 0x1p-24f * 2.0f - 1.0f;
+  };
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float reach = i % 3 == 0 ? 1.0f : (i % 3 == 1 ? 4.0f : 1000.0f);
+    Ray ray;
+    ray.origin = Vec3(next(), next(), next()) * reach;
+    // Aimed at a point near the sphere's rim now and then, so that some lines graze it.
+    const Vec3 aim = i % 5 == 0 ? glm::normalize(Vec3(next(), next(), next())) * (1.0f + 1e-6f * next())
+                                : Vec3(next(), next(), next());
+    ray.direction = aim - ray.origin;
+    ray.tmin = -kInfinity;
+    ray.tmax = kInfinity;
+    Hit a1, b1, a2, b2;
+    bool two_calls = intersect_sphere(ray, a1);
+    if (two_calls) {
+      Ray rest = ray;
+      rest.tmin = std::nextafter(a1.t, kInfinity);
+      two_calls = intersect_sphere(rest, b1);
+    }
+    const bool one_call = intersect_sphere_twice(ray, a2, b2);
+    REQUIRE(one_call == two_calls);
+    if (!one_call) continue;
+    ++hits;
+    CHECK(a2.t == a1.t);
+    CHECK(b2.t == b1.t);
+    CHECK(a2.part == a1.part);
+    CHECK(b2.part == b1.part);
+  }
+  CHECK(hits > 5000);
+}
