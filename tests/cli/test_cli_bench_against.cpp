@@ -41,3 +41,25 @@ TEST_CASE("cli: bench --against povray times a scene and its POV-Ray twin, and p
                            Catch::Contains("--runs 1 --rtcli "));
   CHECK_THAT(r.output, Catch::Contains("| against_ball | ") && Catch::Contains("× |"));
 }
+
+TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin with spheres, glass and a sky",
+          "[cli][bench]") {
+  if (rt::test::run_shell("command -v blender >/dev/null 2>&1").code != 0) {
+    WARN("blender is not installed (tools/install-deps.sh --tests installs it): skipped");
+    return;
+  }
+  // environment.json: a chrome, a clay and a glass ball, a satin block and an HDR sky, tiny.
+  const rt::test::Run r = rt::test::run_shell("python3 '" + rt::test::source_path("tools/cycles/speed.py") +
+                                              "' --size 32 --samples 2,32 --runs 1 --rtcli '" + RTCLI_BINARY + "' '" +
+                                              rt::test::source_path("scenes/environment.json") + "' 2>&1");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("| scene | rtcli samples/s | Cycles samples/s | ratio |"));
+  CHECK_THAT(r.output, Catch::Contains("environment.json | ") && Catch::Contains("× | "));
+  // A scene it cannot twin is refused by name.
+  const rt::test::Run bad = rt::test::run_shell("python3 '" + rt::test::source_path("tools/cycles/speed.py") +
+                                                "' --size 8 --samples 1,2 --runs 1 --rtcli '" + RTCLI_BINARY + "' '" +
+                                                rt::test::source_path("scenes/csg.json") + "' 2>&1");
+  CHECK(bad.code != 0);
+  CHECK_THAT(bad.output, Catch::Contains("material 'floor': [") && Catch::Contains("] have no twin"));
+}
