@@ -4,12 +4,18 @@
 
 namespace rt {
 
-bool intersect_sphere(const Ray& ray, Hit& hit) {
+namespace {
+
+// The line's parameters where it crosses the unit sphere, t0 <= t1; false if it misses.
+bool sphere_roots(const Ray& ray, double& t0, double& t1) {
   const glm::dvec3 o(ray.origin), d(ray.direction);
-  double t0, t1;
-  if (!solve_quadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0, t0, t1)) return false;
+  return solve_quadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0, t0, t1);
+}
+
+// The nearer root inside (tmin, tmax) into `hit`; false if neither is.
+bool nearer_root(double t0, double t1, float tmin, float tmax, Hit& hit) {
   for (const double t : {t0, t1}) {
-    if (t > ray.tmin && t < ray.tmax) {
+    if (t > tmin && t < tmax) {
       hit.t = static_cast<float>(t);
       hit.part = 0;
       return true;
@@ -18,22 +24,17 @@ bool intersect_sphere(const Ray& ray, Hit& hit) {
   return false;
 }
 
-bool intersect_sphere_twice(const Ray& ray, Hit& first, Hit& second) {
-  const glm::dvec3 o(ray.origin), d(ray.direction);
+}  // namespace
+
+bool intersect_sphere(const Ray& ray, Hit& hit) {
   double t0, t1;
-  if (!solve_quadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0, t0, t1)) return false;
-  // intersect_sphere's choice, for a given tmin: the nearer root inside the interval.
-  const auto pick = [&](float tmin, Hit& hit) {
-    for (const double t : {t0, t1}) {
-      if (t > tmin && t < ray.tmax) {
-        hit.t = static_cast<float>(t);
-        hit.part = 0;
-        return true;
-      }
-    }
-    return false;
-  };
-  return pick(ray.tmin, first) && pick(std::nextafter(first.t, kInfinity), second);
+  return sphere_roots(ray, t0, t1) && nearer_root(t0, t1, ray.tmin, ray.tmax, hit);
+}
+
+bool intersect_sphere_twice(const Ray& ray, Hit& first, Hit& second) {
+  double t0, t1;
+  return sphere_roots(ray, t0, t1) && nearer_root(t0, t1, ray.tmin, ray.tmax, first) &&
+         nearer_root(t0, t1, std::nextafter(first.t, kInfinity), ray.tmax, second);
 }
 
 SurfacePatch sphere_patch(Vec3 p, uint32_t /*part*/) {

@@ -2,6 +2,7 @@
 
 #include "tests/support/geometry.h"
 
+#include "core/rng.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/shapes/sphere.h"
 
@@ -79,11 +80,8 @@ TEST_CASE("sphere: both crossings from one quadratic are the two intersect_spher
           "[shapes][sphere][csg]") {
   // Lines through, grazing, missing and starting inside, from near and far, as CSG asks them
   // (tmin -infinity): the first crossing, then the next past the float after it.
-  uint64_t state = 12345;
-  const auto next = [&] {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<float>(state >> 40) * 0x1p-24f * 2.0f - 1.0f;
-  };
+  Rng rng(12345);
+  const auto next = [&] { return 2.0f * rng.next_float() - 1.0f; };
   int hits = 0;
   for (int i = 0; i < 20000; ++i) {
     const float reach = i % 3 == 0 ? 1.0f : (i % 3 == 1 ? 4.0f : 1000.0f);
