@@ -136,6 +136,7 @@ bool run_comparison(const std::string& against, const BenchCommand& cmd, unsigne
                                       std::to_string(std::min(cmd.repeats, 3)),
                                       "--rtcli",
                                       self.empty() ? "rtcli" : self,
+                                      "--",  // a scene path that starts with '-' is still a path
                                       pov ? cmd.scene : cmd.path_scene};
   std::printf("\nagainst %s:", pov ? "POV-Ray" : "Cycles");
   for (const std::string& a : args) std::printf(" %s", a.c_str());

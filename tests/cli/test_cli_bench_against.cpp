@@ -1,6 +1,7 @@
 // rtcli bench --against: the source tree's comparisons (tools/povray/compare.py,
 // tools/cycles/speed.py) run with this rtcli after the bench, the command printed to rerun; what
 // cannot run is said before anything slow.
+#include <filesystem>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -40,6 +41,14 @@ TEST_CASE("cli: bench --against povray times a scene and its POV-Ray twin, and p
   CHECK_THAT(r.output, Catch::Contains("against POV-Ray: python3 ") && Catch::Contains("tools/povray/compare.py") &&
                            Catch::Contains("--runs 1 --rtcli "));
   CHECK_THAT(r.output, Catch::Contains("| against_ball | ") && Catch::Contains("× |"));
+  // A scene whose name starts with '-' is a path all the way down, never an option.
+  const std::string dashed = rt::test::write_file("-ball.json", rt::test::read_file(scene));
+  const rt::test::Run d = rt::test::rtcli("bench '" + rt::test::source_path("scenes/models/gem.gltf") +
+                                              "' --scene -ball.json --path-scene '' --repeats 1 --against povray",
+                                          std::filesystem::path(dashed).parent_path().string());
+  INFO(d.output);
+  CHECK(d.code == 0);
+  CHECK_THAT(d.output, Catch::Contains("| -ball | "));
 }
 
 TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin with spheres, glass and a sky",

@@ -93,6 +93,8 @@ def main():
     print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for name in a.names:
+            if name not in SCENES:
+                name = os.path.abspath(name)  # from here on, also keeps a leading '-' from reading as an option
             if name not in SCENES and not os.path.isfile(name):
                 sys.exit("speed.py: %r is neither a scene file nor cornell, environment or fixture" % name)
             glb = os.path.join(tmp, "fixture.glb")

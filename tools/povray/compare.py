@@ -49,6 +49,7 @@ def main():
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes:
+            scene = os.path.abspath(scene)  # also keeps a name starting with '-' from reading as an option
             name = os.path.splitext(os.path.basename(scene))[0]
             pov = os.path.join(tmp, name + ".pov")
             command = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
