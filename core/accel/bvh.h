@@ -70,8 +70,9 @@ struct BvhStats {
   size_t nodes = 0;  // kBvhWidth-wide nodes
   size_t leaves = 0;
   int max_depth = 0;  // of the wide tree
-  // Of the binary tree it was collapsed from, relative to one primitive test; triangles tested
-  // four at a time count one test a quad, as the builder counts them.
+  // Of the binary tree it was collapsed from, relative to one node visit; triangles tested four
+  // at a time count one visit a quad, a top-level primitive (shape, instance, CSG) two, as the
+  // builder counts them.
   double sah_cost = 0.0;
 };
 
