@@ -74,8 +74,11 @@ Bsdf::Bsdf(const EvaluatedSurface& s, float eta) : frame_(lobe_frame(s)), ng_(s.
   }
   float sum = 0.0f;
   for (const float w : weight) sum += w;
+  // Only the lobes present divide (a Phong surface has one or two of eight): an absent lobe's
+  // probability stays 0, as 0 / sum would make it.
   if (sum > 0.0f)
-    for (int i = 0; i < kLobeCount; ++i) probability_[i] = weight[i] / sum;
+    for (int i = 0; i < kLobeCount; ++i)
+      if (weight[i] != 0.0f) probability_[i] = weight[i] / sum;
   smooth_ = probability_[kDiffuse] > 0.0f || probability_[kSpecular] > 0.0f || probability_[kGlossy] > 0.0f ||
             probability_[kRoughGlass] > 0.0f || probability_[kSheen] > 0.0f ||
             (probability_[kClearcoat] > 0.0f && !coat_mirror_);

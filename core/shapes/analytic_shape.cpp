@@ -81,15 +81,14 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
   // The hit point as the ray found it is only as good as t; put back on the surface it is within
   // a few ulps of it (pbrt-v4's reprojection), which keeps rays leaving it close (core/ray.h).
   const Vec3 object_error = onto_surface(shape.kind, p_object, hit.part);
-  const bool frame = texcoords || shape.kind != ShapeKind::kSphere;
   SurfacePatch patch;
-  if (frame) patch = object_space_patch(shape.kind, p_object, hit.part);
+  if (texcoords || shape.kind != ShapeKind::kSphere) patch = object_space_patch(shape.kind, p_object, hit.part);
   else patch.normal = glm::normalize(p_object);  // as sphere_patch makes it
   SurfaceInteraction si;
   si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
   si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
   si.shading_normal = si.geometric_normal;
-  if (frame) {
+  if (texcoords) {
     si.texcoord[0] =
         UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu), shape.transform.vector_to_world(patch.dpdv)};
     si.texcoord[1] = si.texcoord[0];

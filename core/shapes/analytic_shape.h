@@ -48,9 +48,9 @@ inline bool intersect_shape(const AnalyticShape& shape, const Ray& ray, Hit& hit
   return false;
 }
 
-// World-space surface at a hit (the hit's t and part from intersect_shape). Without `texcoords`, a
-// sphere's texture coordinates and their frame are left at UvFrame's defaults (the other shapes'
-// cost little and are always made).
+// World-space surface at a hit (the hit's t and part from intersect_shape). Without `texcoords`,
+// the texture coordinates and their frame are left at UvFrame's defaults (a sphere's need atan2,
+// acos and three sines; every shape's frame two matrix products).
 SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit, bool texcoords = true);
 
 }  // namespace rt

@@ -101,27 +101,39 @@ TEST_CASE("natural uv: tangent frames are orthogonal, read unmirrored and match 
   }
 }
 
-TEST_CASE("shape uv: a sphere's frame is made only where the material reads it, with the same normal", "[uv]") {
-  AnalyticShape ball;
-  ball.kind = ShapeKind::kSphere;
-  ball.transform =
-      *make_transform(glm::translate(Mat4(1.0f), Vec3(0.5f, -1.0f, 2.0f)) * glm::scale(Mat4(1.0f), Vec3(2.0f)));
-  Ray ray;
-  ray.origin = Vec3(1.3f, 0.4f, 9.0f);
-  ray.direction = glm::normalize(Vec3(0.9f, -0.2f, 2.3f) - ray.origin);
-  Hit hit;
-  REQUIRE(intersect_shape(ball, ray, hit));
-  const SurfaceInteraction with = shape_surface(ball, ray, hit, true);
-  const SurfaceInteraction without = shape_surface(ball, ray, hit, false);
-  // Everything but the texture coordinates to the bit.
-  CHECK(without.position == with.position);
-  CHECK(without.position_error == with.position_error);
-  CHECK(without.geometric_normal == with.geometric_normal);
-  CHECK(without.shading_normal == with.shading_normal);
-  CHECK(without.object_position == with.object_position);
-  CHECK(without.front_face == with.front_face);
-  CHECK(with.texcoord[0].uv != Vec2(0.0f));
-  CHECK(without.texcoord[0].uv == Vec2(0.0f));
+TEST_CASE("shape uv: a shape's (u, v) frame is made only where the material reads it, the rest the same", "[uv]") {
+  for (const ShapeKind kind :
+       {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder, ShapeKind::kCone}) {
+    INFO("shape kind " << static_cast<int>(kind));
+    AnalyticShape shape;
+    shape.kind = kind;
+    shape.transform = *make_transform(glm::translate(Mat4(1.0f), Vec3(0.5f, -1.0f, 2.0f)) *
+                                      glm::rotate(Mat4(1.0f), 0.4f, glm::normalize(Vec3(1.0f, 2.0f, 0.5f))) *
+                                      glm::scale(Mat4(1.0f), Vec3(2.0f, 1.5f, 1.0f)));
+    // From above and in front, at a point inside the shape's box (the cone's and cylinder's z runs 0-1).
+    const Vec3 target = shape.transform.point_to_world(Vec3(0.2f, 0.0f, kind == ShapeKind::kCone ? 0.6f : 0.3f));
+    Ray ray;
+    ray.origin = target + shape.transform.vector_to_world(Vec3(0.3f, 4.0f, 0.5f));
+    ray.direction = glm::normalize(target - ray.origin);
+    Hit hit;
+    REQUIRE(intersect_shape(shape, ray, hit));
+    const SurfaceInteraction with = shape_surface(shape, ray, hit, true);
+    const SurfaceInteraction without = shape_surface(shape, ray, hit, false);
+    // Everything but the texture coordinates to the bit.
+    CHECK(without.position == with.position);
+    CHECK(without.position_error == with.position_error);
+    CHECK(without.geometric_normal == with.geometric_normal);
+    CHECK(without.shading_normal == with.shading_normal);
+    CHECK(without.object_position == with.object_position);
+    CHECK(without.object_from_world == with.object_from_world);
+    CHECK(without.shape_axis == with.shape_axis);
+    CHECK(without.material == with.material);
+    CHECK(without.front_face == with.front_face);
+    CHECK(with.texcoord[0].uv != Vec2(0.0f));
+    CHECK(with.texcoord[0].dpdu != UvFrame{}.dpdu);
+    CHECK(without.texcoord[0].uv == UvFrame{}.uv);
+    CHECK(without.texcoord[0].dpdu == UvFrame{}.dpdu);
+  }
   // Material::reads_texcoords: a texture in any slot, or anisotropy (its direction is dP/du).
   Material plain;
   CHECK_FALSE(plain.reads_texcoords());
