@@ -119,6 +119,10 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
                                   [](const Material& m) { return m.transmissive(); });
   for (const Material& m : assets->materials) scene.texcoords_read.push_back(m.reads_texcoords() ? 1 : 0);
+  for (const Light& l : scene.lights) {
+    const RectLight* rect = std::get_if<RectLight>(&l);
+    scene.rect_frames.push_back(RectFrame(rect ? *rect : RectLight{}));
+  }
   scene.emitters = Emitters(scene.bvh, *assets);
   scene.light_selection =
       LightSelection(light_powers(scene.lights, scene.emitters, scene.background, scene.bvh.bounds()));

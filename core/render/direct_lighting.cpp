@@ -87,7 +87,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
     const int count = light_sample_count(light, samples);
     const RectLight* rect = std::get_if<RectLight>(&light);
-    const RectFrame frame = rect ? RectFrame(*rect) : RectFrame(RectLight{});  // once per point, not per sample
+    const RectFrame frame = rect ? scene.rect_frame(l) : RectFrame(RectLight{});  // the scene's, not per sample
     const StratifiedGrid grid(count);
     // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
     // light of its colour would, times the light's attenuation and its cosine towards the point.

@@ -52,8 +52,12 @@ LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const Sampl
 // scene's lights: the path tracer asks once a light per bounce.
 inline LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
                              SurfaceDetailSwitches detail) {
-  if (l < scene.lights.size())
-    return sample_li(scene.lights[l], point, samples.get2(SamplePurpose::kLight, path, light_dimension(l)));
+  if (l < scene.lights.size()) {
+    const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(l));
+    if (const RectLight* rect = std::get_if<RectLight>(&scene.lights[l]))
+      return sample_li(*rect, scene.rect_frame(l), point, u);
+    return sample_li(scene.lights[l], point, u);
+  }
   return sample_area_li(scene, l, point, samples, path, detail);
 }
 
