@@ -82,7 +82,7 @@ TEST_CASE("cli: render writes the PNG, prints a summary and where it wrote", "[c
   CHECK(read_file(out).substr(1, 3) == "PNG");
 }
 
-TEST_CASE("cli: the summary counts rays by kind; --glossy-samples and --no-glossy change them", "[cli][glossy]") {
+TEST_CASE("cli: the summary counts rays by kind, --glossy-samples and --no-glossy change them", "[cli][glossy]") {
   const std::string out = output_path("cli-glossy.png");
   Run r = rtcli("render scenes/glossy.json -q -o '" + out + "' " + small());
   CHECK(r.code == 0);
@@ -91,8 +91,9 @@ TEST_CASE("cli: the summary counts rays by kind; --glossy-samples and --no-gloss
     const Run run = rtcli("render scenes/glossy.json -o '" + output_path("cli-glossy.png") + "' " + args);
     REQUIRE(run.code == 0);
     CHECK_THAT(run.output, Catch::Contains(" camera, ") && Catch::Contains(" shadow, ") &&
-                               Catch::Contains(" reflection, ") && Catch::Contains(" refraction, "));
-    const size_t end = run.output.find(" glossy)");
+                               Catch::Contains(" reflection, ") && Catch::Contains(" refraction, ") &&
+                               Catch::Contains(" bounce)"));
+    const size_t end = run.output.find(" glossy, ");
     REQUIRE(end != std::string::npos);
     const size_t start = run.output.rfind(", ", end) + 2;
     return run.output.substr(start, end - start);
@@ -102,8 +103,8 @@ TEST_CASE("cli: the summary counts rays by kind; --glossy-samples and --no-gloss
   CHECK(glossy_rays(small("--glossy-samples 1")) != glossy_rays(small("--glossy-samples 64")));
 }
 
-TEST_CASE("cli: --integrator picks a debug view; an unknown name lists the valid ones", "[cli]") {
-  for (const char* name : {"normals", "uv", "depth", "albedo", "whitted"}) {
+TEST_CASE("cli: --integrator picks a debug view, an unknown name lists the valid ones", "[cli]") {
+  for (const char* name : {"normals", "uv", "depth", "albedo", "whitted", "path"}) {
     const std::string out = output_path(std::string("cli-") + name + ".png");
     fs::remove(out);
     INFO(name);
@@ -113,8 +114,8 @@ TEST_CASE("cli: --integrator picks a debug view; an unknown name lists the valid
   }
   const Run r = rtcli("render scenes/primitives.json --integrator normal -o '" + output_path("cli-x.png") + "'");
   CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("unknown integrator \"normal\"") &&
-                           Catch::Contains("whitted, normals, uv, depth, albedo"));
+  CHECK_THAT(r.output, Catch::Contains("unknown integrator \"normal\" (did you mean \"normals\"?)") &&
+                           Catch::Contains("expected one of: whitted, path, normals, uv, depth, albedo"));
   CHECK_FALSE(fs::exists(output_path("cli-x.png")));
 }
 
@@ -202,7 +203,7 @@ TEST_CASE("cli: bench runs on a small model, and replays the rays it saved", "[c
   fs::remove(rays);
 }
 
-TEST_CASE("cli: --aa picks the anti-aliasing mode; --aa-debug writes and names the refinement images",
+TEST_CASE("cli: --aa picks the anti-aliasing mode, --aa-debug writes and names the refinement images",
           "[cli][antialias]") {
   Run r = rtcli("render scenes/default.json -o '" + output_path("cli-aa-bad.png") + "' --aa superb");
   CHECK(r.code == 2);
@@ -259,7 +260,7 @@ TEST_CASE("cli: --stats writes the render's figures as JSON", "[cli][stats]") {
   CHECK(bad.code == 2);
 }
 
-TEST_CASE("cli: -o NAME.jpg writes a JPEG of the image's size; frames need a GIF or numbered PNGs", "[cli][jpeg]") {
+TEST_CASE("cli: -o NAME.jpg writes a JPEG of the image's size, frames need a GIF or numbered PNGs", "[cli][jpeg]") {
   const std::string jpg = output_path("render.jpg");
   fs::remove(jpg);
   REQUIRE(rtcli("render scenes/primitives.json -q --width 64 --height 36 -o '" + jpg + "'").code == 0);
@@ -350,7 +351,7 @@ TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_m
   CHECK_THAT(r.output, Catch::Contains("/render/tone_map") && Catch::Contains("aces"));
 }
 
-TEST_CASE("cli: --time stops the path tracer after whole passes; with time enough the same bytes",
+TEST_CASE("cli: --time stops the path tracer after whole passes, with time enough the same bytes",
           "[cli][progressive]") {
   const std::string dir = rt::test::fresh_folder("cli-time");
   const std::string base = "render scenes/cornell_box.json --width 48 --height 48 --spp 24 -q";

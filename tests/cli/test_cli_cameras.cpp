@@ -38,7 +38,7 @@ std::pair<int, int> size_of(const std::string& png) {
 
 }  // namespace
 
-TEST_CASE("cli cameras: each stereo mode writes its layout; pair writes two files", "[cli][stereo]") {
+TEST_CASE("cli cameras: each stereo mode writes its layout, pair writes two files", "[cli][stereo]") {
   const std::string s = scene("stereo-modes.json", R"("fov": 40)");
   const std::pair<const char*, std::pair<int, int>> modes[] = {
       {"anaglyph", {40, 20}}, {"side_by_side", {80, 20}}, {"top_bottom", {40, 40}}};

@@ -28,7 +28,7 @@ std::vector<float> channel(const rt::ExrLayer& layer, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("cli: --denoise writes the denoised image; an EXR keeps the raw one", "[cli][denoise]") {
+TEST_CASE("cli: --denoise writes the denoised image, an EXR keeps the raw one", "[cli][denoise]") {
   const std::string dir = rt::test::fresh_folder("denoise-outputs");
   REQUIRE(rtcli(kPath + " -o '" + dir + "/raw.png'").code == 0);
   auto r = rtcli(kPath + " --denoise -o '" + dir + "/clean.png'");

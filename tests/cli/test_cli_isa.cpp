@@ -47,7 +47,7 @@ TEST_CASE("cli: --isa forces each instruction set this CPU runs, and every one r
   }
 }
 
-TEST_CASE("cli: RTCLI_ISA picks the kernels unless --isa is given; auto is the best; bad names exit 2", "[cli][isa]") {
+TEST_CASE("cli: RTCLI_ISA picks the kernels unless --isa is given, auto is the best, bad names exit 2", "[cli][isa]") {
   const std::string png = output_path("isa-env.png"), stats = output_path("isa-env.json");
   const std::string render = "render scenes/default.json --width 32 --height 20 -o '" + png + "'";
   const std::string best = rt::isa_name(rt::best_isa());

@@ -29,7 +29,7 @@ TEST_CASE("cli: --progress lines prints each whole percent once, rising to 100",
   CHECK(r.output.find('\r') == std::string::npos);  // no bar redrawn in place
 }
 
-TEST_CASE("cli: --progress none and a pipe print no progress; a wrong style is named", "[cli][progress]") {
+TEST_CASE("cli: --progress none and a pipe print no progress, a wrong style is named", "[cli][progress]") {
   const std::string out = rt::test::output_path("progress-none.png");
   for (const std::string option : {"--progress none", "", "--progress lines --quiet"}) {
     INFO(option);

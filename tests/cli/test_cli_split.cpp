@@ -116,7 +116,7 @@ TEST_CASE("cli: half-float tiles merge into the half EXR a whole render writes",
   CHECK(rt::test::read_file(dir + "/merged.exr") == rt::test::read_file(dir + "/whole.exr"));
 }
 
-TEST_CASE("cli: frame chunks encode into the GIF a whole render writes; --skip-existing resumes", "[cli][split]") {
+TEST_CASE("cli: frame chunks encode into the GIF a whole render writes, --skip-existing resumes", "[cli][split]") {
   const std::string dir = rt::test::fresh_folder("split-frames");
   const std::string anim = "render scenes/turntable.json --frames 0-11 --width 48 --height 36 -q";
   REQUIRE(rtcli(anim + " -o '" + dir + "/whole.gif'").code == 0);
@@ -185,7 +185,7 @@ TEST_CASE("cli: bad parts and bad tiles are refused with the reason", "[cli][spl
   CHECK_THAT(r.output, Catch::Contains("broken.exr: not a readable OpenEXR image"));
 }
 
-TEST_CASE("cli: farm slurm --dry-run writes the two job scripts; options the farm sets are refused", "[cli][split]") {
+TEST_CASE("cli: farm slurm --dry-run writes the two job scripts, options the farm sets are refused", "[cli][split]") {
   const std::string dir = rt::test::fresh_folder("split-farm");
   auto r = rtcli(
       "farm slurm scenes/antialias.json --tasks 6 --cpus 2 --partition gpu --time 0:30:00 --width 96 "

@@ -77,7 +77,7 @@ TEST_CASE("Sobol's second dimension by byte tables is the bit-by-bit definition,
   CHECK(sobol_dimension1(0) == 0u);
 }
 
-TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions; independent ones do not", "[sampling]") {
+TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions, independent ones do not", "[sampling]") {
   const auto points = [](SampleSequence sequence, SamplePurpose purpose, uint64_t path, uint64_t index) {
     std::vector<Vec2> p;
     for (uint32_t s = 0; s < 64; ++s) p.push_back(SampleStream(7, 2, 1234, s, sequence).get2(purpose, path, index));

@@ -65,7 +65,7 @@ TEST_CASE("wrap modes at the borders: repeat, clamp, mirror", "[texture]") {
   CHECK(wrap_texel(-5, 4, TextureWrap::kMirror) == 3);
 }
 
-TEST_CASE("mip levels average 2 x 2 texels down to 1 x 1; the level follows the footprint", "[texture]") {
+TEST_CASE("mip levels average 2 x 2 texels down to 1 x 1, the level follows the footprint", "[texture]") {
   const Texture t = numbered();
   REQUIRE(t.level_count() == 3);  // 4 x 2, 2 x 1, 1 x 1
   CHECK(t.width(1) == 2);

@@ -36,7 +36,7 @@ TEST_CASE("tone map: the filmic curve is Narkowicz's ACES fit, clamped to [0, 1]
   }
 }
 
-TEST_CASE("tone map: exposure multiplies by 2^stops before the curve; the default changes nothing",
+TEST_CASE("tone map: exposure multiplies by 2^stops before the curve, the default changes nothing",
           "[color][tonemap]") {
   DisplayTransform t;
   CHECK(t.identity());

@@ -23,7 +23,7 @@ TEST_CASE("triangle: barycentrics and distance of a hit", "[shapes][triangle]") 
   CHECK(h.b2 == Approx(0.5f));
 }
 
-TEST_CASE("triangle: both faces are hit; misses outside edges, parallel and behind", "[shapes][triangle]") {
+TEST_CASE("triangle: both faces are hit, misses outside edges, parallel and behind", "[shapes][triangle]") {
   Hit h;
   CHECK(intersect_triangle(kTri, make_ray({0.2f, 0.2f, -1}, {0, 0, 1}), h));
   CHECK_FALSE(intersect_triangle(kTri, make_ray({0.6f, 0.6f, 1}, {0, 0, -1}), h));  // beyond the hypotenuse

@@ -53,7 +53,7 @@ Rendered render_film(const LoadedScene& s, unsigned threads = 1, int tile = 32) 
 
 }  // namespace
 
-TEST_CASE("adaptive: a flat-coloured image is not refined; each pixel averages its four shared corners",
+TEST_CASE("adaptive: a flat-coloured image is not refined, each pixel averages its four shared corners",
           "[render][antialias][adaptive]") {
   const Rendered r = render_film(half_plane(R"({ "mode": "adaptive", "threshold": 0, "max_depth": 3 })", false), 2, 7);
   for (size_t i = 0; i < r.film.depth.size(); ++i) {

@@ -44,7 +44,7 @@ std::string shadow_scene(bool occluder) {
 
 }  // namespace
 
-TEST_CASE("rect light: emits towards edge1 x edge2; Whitted lights like a point light of its colour nearby",
+TEST_CASE("rect light: emits towards edge1 x edge2, Whitted lights like a point light of its colour nearby",
           "[lights]") {
   RectLight down;  // at height 4, facing down: (2,0,0) x (0,0,2) = (0,-4,0)
   down.corner = Vec3(-0.01f, 4.0f, -0.01f);
@@ -52,9 +52,11 @@ TEST_CASE("rect light: emits towards edge1 x edge2; Whitted lights like a point 
   down.edge2 = Vec3(0, 0, 0.02f);
   down.color = Vec3(2.0f);
   CHECK(down.normal().y == Approx(-1.0f));
-  // Straight below: its face's radiance, head-on, drawn with density d^2 / area per solid angle.
+  // Straight below: the radiance by which its face lights the point (RectLight::lighting_radiance:
+  // pi x colour x attenuation x d^2 / area, attenuation 1 here), head-on, drawn with density
+  // d^2 / area per solid angle.
   const LightSample below = sample_li(Light(down), Vec3(0.0f), Vec2(0.5f));
-  CHECK(below.radiance.x == Approx(2.0f));
+  CHECK(below.radiance.x == Approx(2.0f * kPi * 16.0f / 0.0004f));
   CHECK(below.direction.y == Approx(1.0f));
   CHECK(below.distance == Approx(4.0f));
   CHECK(below.cos_light == Approx(1.0f));
@@ -229,4 +231,22 @@ TEST_CASE("secondary shadows: an area light's samples follow the hit's weight in
   CHECK(saved <= 8 * reflections);
   // The camera's own hits take all 16 either way: pixels that see no mirror are the same.
   CHECK(a.at(0, 15) == b.at(0, 15));
+}
+
+TEST_CASE("rect light: the scene keeps each rect light's frame, the one a sample would work out", "[lights]") {
+  const LoadedScene s = rt::test::load_scene_text("rect-frame.json", shadow_scene(true));
+  REQUIRE(s.scene.rect_frames.size() == s.scene.lights.size());
+  for (size_t l = 0; l < s.scene.lights.size(); ++l) {
+    const RectLight* rect = std::get_if<RectLight>(&s.scene.lights[l]);
+    if (!rect) continue;
+    const RectFrame own(*rect);
+    CHECK(s.scene.rect_frame(l).normal_area == own.normal_area);
+    CHECK(s.scene.rect_frame(l).area == own.area);
+    CHECK(s.scene.rect_frame(l).unit_normal == own.unit_normal);
+    CHECK(own.area == Approx(4.0f));  // the 2 x 2 light
+    // A scene built by hand, without the table, works it out when asked.
+    Scene bare;
+    bare.lights = s.scene.lights;
+    CHECK(bare.rect_frame(l).normal_area == own.normal_area);
+  }
 }

@@ -51,7 +51,7 @@ TEST_CASE("cameras: orthographic rays are parallel, from a window `width` wide",
   CHECK(c.generate_ray(10.0f, 10.0f, kW, kH, Vec2(0.9f, 0.2f)).origin == c.generate_ray(10.0f, 10.0f, kW, kH).origin);
 }
 
-TEST_CASE("cameras: an equirectangular image's left and right edges meet; centre ahead, top up", "[camera]") {
+TEST_CASE("cameras: an equirectangular image's left and right edges meet, centre ahead, top up", "[camera]") {
   const Camera c = camera(CameraProjection::kEquirectangular);
   for (const float y : {1.5f, 8.0f, 16.0f, 30.5f})
     check_vec(c.generate_ray(0.0f, y, kW, kH).direction, c.generate_ray(static_cast<float>(kW), y, kW, kH).direction);
@@ -66,7 +66,7 @@ TEST_CASE("cameras: an equirectangular image's left and right edges meet; centre
   CHECK(std::acos(glm::dot(first, last)) == Approx(2.0f * kPi / kW).epsilon(1e-3));
 }
 
-TEST_CASE("cameras: an equidistant fisheye's angle grows with the radius; outside its circle, nothing", "[camera]") {
+TEST_CASE("cameras: an equidistant fisheye's angle grows with the radius, outside its circle, nothing", "[camera]") {
   Camera c = camera(CameraProjection::kFisheye);
   c.fisheye_fov = radians(180.0f);
   check_vec(c.generate_ray(32.0f, 16.0f, kW, kH).direction, c.forward);

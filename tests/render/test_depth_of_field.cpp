@@ -38,7 +38,7 @@ TEST_CASE("thin lens: every lens ray of a pixel passes through one point of the 
   CHECK(same.direction == pinhole.direction);
 }
 
-TEST_CASE("aperture 0 is the pinhole image bit for bit; an aperture blurs what is out of focus", "[camera][dof]") {
+TEST_CASE("aperture 0 is the pinhole image bit for bit, an aperture blurs what is out of focus", "[camera][dof]") {
   Diagnostics diags;
   const auto scene = load_scene(rt::test::source_path("scenes/depth_of_field.json"), rt::test::load_options(), diags);
   REQUIRE(scene);

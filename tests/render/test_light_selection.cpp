@@ -9,7 +9,7 @@
 
 using namespace rt;
 
-TEST_CASE("light selection: probabilities follow power; a few lights are each sampled", "[lights][selection]") {
+TEST_CASE("light selection: probabilities follow power, a few lights are each sampled", "[lights][selection]") {
   CHECK_FALSE(LightSelection(std::vector<float>(8, 1.0f)).active());
   // Nine lights with power (and one without): active, each in proportion.
   std::vector<float> powers = {1, 2, 3, 0, 4, 5, 6, 7, 8, 9};

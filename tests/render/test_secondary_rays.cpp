@@ -149,7 +149,7 @@ std::string glossy_scene(const std::string& glossy_key) {
 
 }  // namespace
 
-TEST_CASE("glossy width 0 is the mirror image bit for bit; --no-glossy too", "[glossy]") {
+TEST_CASE("glossy width 0 is the mirror image bit for bit, --no-glossy too", "[glossy]") {
   const LoadedScene mirror = rt::test::load_scene_text("mirror_ball.json", glossy_scene(""));
   const LoadedScene zero = rt::test::load_scene_text("zero_width.json", glossy_scene(R"(, "glossy": 0)"));
   const LoadedScene wide = rt::test::load_scene_text("wide.json", glossy_scene(R"(, "glossy": 0.3)"));

@@ -64,7 +64,7 @@ TEST_CASE("scene warnings: a rect light facing away from everything", "[io][warn
             .empty());
 }
 
-TEST_CASE("scene warnings: no light and no ambient; an empty scene", "[io][warnings]") {
+TEST_CASE("scene warnings: no light and no ambient, an empty scene", "[io][warnings]") {
   auto w = warnings("warn_dark.json", scene("[]", kNodes));
   REQUIRE(w.size() == 1);
   CHECK_THAT(w[0], Catch::StartsWith(": the scene has no light, no ambient and no emissive material"));

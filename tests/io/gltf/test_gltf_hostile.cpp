@@ -240,7 +240,7 @@ TEST_CASE("glTF hostile: buffers must be regular files, and the JSON sane", "[io
   CHECK_THAT(o.error, Catch::Contains("shorter than its 20-byte header"));
 }
 
-TEST_CASE("glTF hostile: instancing shares a mesh; the instance limit counts placements", "[io][gltf][hostile]") {
+TEST_CASE("glTF hostile: instancing shares a mesh, the instance limit counts placements", "[io][gltf][hostile]") {
   Json doc = triangle();
   doc["nodes"] = {{{"children", Json::array()}}};
   for (int i = 1; i <= 100; ++i) {

@@ -272,7 +272,7 @@ std::string two_animations() {
 
 }  // namespace
 
-TEST_CASE("glTF animations: all play together; --animation or \"animation\" picks one", "[gltf][animation]") {
+TEST_CASE("glTF animations: all play together, --animation or \"animation\" picks one", "[gltf][animation]") {
   const std::string path = two_animations();
   Diagnostics diags;
   auto all = load_scene(path, rt::test::load_options(), diags);
@@ -318,7 +318,7 @@ TEST_CASE("glTF animations: all play together; --animation or \"animation\" pick
   CHECK(left.graph.timeline.last_frame == 60);  // 2 s at a scene file's 30 fps
 }
 
-TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's world; both overridable",
+TEST_CASE("a model on its own: adaptive anti-aliasing, no ambient, Blender's world, both overridable",
           "[gltf][defaults]") {
   const std::string path = rt::test::write_gltf("lit_square_defaults.gltf", rt::test::square_positions(), lit_square());
   Diagnostics diags;

@@ -162,7 +162,7 @@ TEST_CASE("environment files: .hdr and .exr load as linear radiance, anything el
   CHECK_THAT(error, Catch::Contains("is larger than the file") && Catch::Contains("oom-string-attribute-2gb.exr"));
 }
 
-TEST_CASE("a scene's background can be an environment image; its errors point at the key", "[hdr]") {
+TEST_CASE("a scene's background can be an environment image, its errors point at the key", "[hdr]") {
   const LoadedScene s = rt::test::load_scene_text("env_scene.json", R"({
     "camera": { "position": [0, 0, 3], "look_at": [0, 0, 0] },
     "background": { "environment": ")" + rt::test::source_path("scenes/textures/sky.hdr") +

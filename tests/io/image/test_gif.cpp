@@ -135,7 +135,7 @@ TEST_CASE("gif: frame lists and numbered names", "[gif][cli]") {
   CHECK(sequence_path("f###.png", -4) == "f-004.png");
 }
 
-TEST_CASE("cli: --frames renders an animated GIF and numbered PNGs; bad ranges and names are refused", "[gif][cli]") {
+TEST_CASE("cli: --frames renders an animated GIF and numbered PNGs, bad ranges and names are refused", "[gif][cli]") {
   const std::string gif = rt::test::output_path("cli_turn.gif");
   auto r = rt::test::rtcli("render scenes/turntable.json --frames 0-2 --width 32 --height 24 --shadow-samples 1 -o '" +
                            gif + "'");
@@ -166,7 +166,7 @@ TEST_CASE("cli: --frames renders an animated GIF and numbered PNGs; bad ranges a
   CHECK(r.code == 2);
 }
 
-TEST_CASE("cli: a GIF without --frames shows the scene's animation; --frames beyond it warns", "[gif][cli]") {
+TEST_CASE("cli: a GIF without --frames shows the scene's animation, --frames beyond it warns", "[gif][cli]") {
   const std::string scene = rt::test::write_file("spin_short.json", R"({
     "render": {"width": 16, "height": 12},
     "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 45},

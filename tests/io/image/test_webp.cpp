@@ -37,7 +37,7 @@ std::optional<Texture> decode(const std::string& bytes, TextureError& error) {
 
 }  // namespace
 
-TEST_CASE("WebP textures decode to their texels; damaged ones are refused", "[image][webp]") {
+TEST_CASE("WebP textures decode to their texels, damaged ones are refused", "[image][webp]") {
   TextureError error;
   const auto texture = decode(webp(5, 3, 255, 51, 0), error);
   INFO(error.message);

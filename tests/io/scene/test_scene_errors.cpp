@@ -269,7 +269,7 @@ TEST_CASE("minified files get a windowed excerpt around the error", "[io][errors
   CHECK(a.first().excerpt.size() < 300);
 }
 
-TEST_CASE("scene files may hold // and /* */ comments; positions and pointers stay right", "[io][errors]") {
+TEST_CASE("scene files may hold // and /* */ comments, positions and pointers stay right", "[io][errors]") {
   // Brackets, quotes and "//" inside comments and strings must not confuse the scans that find
   // positions and count nesting.
   const std::string head = R"(// A commented scene: "quotes" and {braces} in a comment.

@@ -59,7 +59,7 @@ const char* kLibrary = R"({
 
 }  // namespace
 
-TEST_CASE("includes: included files' keys first, the including file's win; materials by name, lights add up",
+TEST_CASE("includes: included files' keys first, the including file's win, materials by name, lights add up",
           "[io][include]") {
   const std::string dir = rt::test::fresh_folder("include-merge");
   write(dir, "lib/library.json", kLibrary);
