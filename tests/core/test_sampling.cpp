@@ -97,3 +97,15 @@ TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions, independen
   CHECK(SampleStream(7, 2, 1234, 0).get2(SamplePurpose::kPixel, 0, 0) !=
         SampleStream(7, 2, 1235, 0).get2(SamplePurpose::kPixel, 0, 0));
 }
+
+TEST_CASE("sampling: the tabled dimension keys are the mixed ones, inside the table and out", "[sampling]") {
+  for (uint32_t p = 1; p <= static_cast<uint32_t>(SamplePurpose::kWavelength); ++p)
+    for (const uint64_t path : std::initializer_list<uint64_t>{0, 1, 7, 15, 16, 0x9e3779b97f4a7c15ull})
+      for (const uint64_t index :
+           std::initializer_list<uint64_t>{0, 1, 15, 16, light_dimension(1, 3), light_dimension(0, 63)}) {
+        const auto purpose = static_cast<SamplePurpose>(p);
+        INFO("purpose " << p << ", path " << path << ", index " << index);
+        CHECK(tabled_dimension_key(purpose, path, index) ==
+              mix64(path ^ mix64((static_cast<uint64_t>(p) << 56) ^ index)));
+      }
+}
