@@ -46,7 +46,7 @@ class PointBatch {
     const auto point = static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x);
     const SampleStream samples(ctx_.settings.seed, ctx_.frame, ctx_.point_key(point), 0, ctx_.settings.sampler);
     to_[batch_.count] = to;
-    batch_.add(CameraSample{static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, 1.0f}, 0);
+    batch_.add(static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, 1.0f, 0);
     if (batch_.full()) flush();
   }
   void flush() {

@@ -28,7 +28,7 @@ FilmPixel PathSampler::sample_pixel(int x, int y, PixelState& state, int end, Pi
     for (int i = 0; i < count; ++i) {
       const SampleStream samples(s.seed, ctx.frame, ctx.point_key(pixel), static_cast<uint32_t>(n + i), s.sampler);
       const Vec2 offset = samples.get2(SamplePurpose::kPixel, 0, 0);
-      batch.add(CameraSample{static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, samples, 1.0f}, 0);
+      batch.add(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, samples, 1.0f, 0);
     }
     batch.trace(ctx);
     for (int i = 0; i < batch.count; ++i) {

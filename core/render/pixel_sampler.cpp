@@ -96,8 +96,8 @@ class UniformSampler final : public PixelSampler {
           for (int i = 0; i < n_; ++i) {
             const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
             const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
-            batch.add(CameraSample{static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                                   static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, step},
+            batch.add(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
+                      static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, step,
                       static_cast<uint32_t>(x));
             if (batch.full()) drain(x);
           }

@@ -116,8 +116,14 @@ struct CameraBatch {
   int count = 0;
 
   bool full() const { return count == kPacketSize; }
-  void add(const CameraSample& s, uint32_t t) {
-    sample[count] = s;
+  // Written field by field into its slot: a CameraSample built on the stack and copied in was
+  // read back by wide loads of its narrow stores, which stalled (measured: see the commit).
+  void add(float px, float py, const SampleStream& samples, float spacing, uint32_t t) {
+    CameraSample& slot = sample[count];
+    slot.px = px;
+    slot.py = py;
+    slot.samples = samples;
+    slot.spacing = spacing;
     tag[count++] = t;
   }
   // Fills radiance[0, count) (and aovs, if PixelContext::aovs); counts the camera rays.
