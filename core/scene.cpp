@@ -45,10 +45,12 @@ void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out,
   for (const Light& light : lights) {
     const RectLight* rect = std::get_if<RectLight>(&light);
     float t;
+    Vec2 uv;  // written by a light the ray misses too: kept only for one it meets
     if (rect && (rect->camera_visible || !camera_ray) &&
-        rect->intersect(ray, t, &out.light_uv)) {  // nearer than the surface and the lights before
+        rect->intersect(ray, t, &uv)) {  // nearer than the surface and the lights before
       ray.tmax = t;
       out.light = rect;
+      out.light_uv = uv;
       out.surface = false;
     }
   }

@@ -250,3 +250,22 @@ TEST_CASE("rect light: the scene keeps each rect light's frame, the one a sample
     CHECK(bare.rect_frame(l).normal_area == own.normal_area);
   }
 }
+
+TEST_CASE("rect light: a light the ray passes beside leaves the met light's (u, v) alone", "[lights]") {
+  // Light 0 at height 4 over (0..1, 0..1); light 1 at height 3, far to the side: the ray up from
+  // (0.5, 1, 0.5) crosses light 1's plane first, outside its rectangle, and meets light 0.
+  RectLight met_light, beside;
+  met_light.corner = Vec3(0.0f, 4.0f, 0.0f);
+  met_light.edge1 = Vec3(1.0f, 0.0f, 0.0f);
+  met_light.edge2 = Vec3(0.0f, 0.0f, 1.0f);
+  beside = met_light;
+  beside.corner = Vec3(5.0f, 3.0f, 5.0f);
+  Scene scene;
+  scene.lights = {met_light, beside};
+  Ray up(Vec3(0.25f, 1.0f, 0.75f), Vec3(0.0f, 1.0f, 0.0f));
+  SceneHit met;
+  REQUIRE(scene.intersect(up, met));
+  REQUIRE(met.light == &std::get<RectLight>(scene.lights[0]));
+  CHECK(met.light_uv.x == Approx(0.25f));
+  CHECK(met.light_uv.y == Approx(0.75f));
+}
