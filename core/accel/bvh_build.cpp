@@ -129,8 +129,10 @@ struct Split {
 // its BVH, a CSG solid finds every operand's spans; one node visit tests eight boxes at once.
 // Counted as 1 (a triangle's cost), the SAH kept the Cornell box's five walls and two blocks in
 // one leaf, whose flat boxes a split separates: every ray tested all seven. At 2 the path-traced
-// box renders in 0.70x the time (the same bytes: the closest-hit order does not depend on the
-// tree; 4 and 8 were no faster), other shipped scenes unchanged (docs/benchmark.md).
+// box renders in 0.70x the time (the same bytes: the closest hit does not depend on the tree; 4
+// and 8 were no faster), other shipped scenes unchanged (docs/benchmark.md). A shadow ray through
+// glass multiplies its crossings' transmittances in the tree's order, which may round apart by
+// an ulp: panorama.json moved by at most 1 level in a few pixels.
 constexpr double kObjectTestCost = 2.0;
 
 // A leaf's cost in node visits: `block` primitives a test (4: a mesh's triangles, as quads), or
