@@ -110,9 +110,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
       if (delta) {
         radiance += beta * rect.color;
       } else {
-        const size_t l = light_index(scene, rect);
-        const RectFrame frame = l < scene.lights.size() ? scene.rect_frame(l) : RectFrame(rect);
-        const float chosen = scene.light_selection.active() ? scene.light_selection.probability(l) : 1.0f;
+        const RectFrame frame(rect);  // a light met by a ray is rare enough to work it out
+        const float chosen =
+            scene.light_selection.active() ? scene.light_selection.probability(light_index(scene, rect)) : 1.0f;
         const float weight = bsdf_weight(settings.path.strategy, bsdf_pdf, pdf_li(frame, dir, distance) * chosen);
         radiance += beta * rect.lighting_radiance(distance, frame.area) * weight;
       }

@@ -66,6 +66,21 @@ double rmse(const Image& a, const Image& b) {
   return std::sqrt(sum / static_cast<double>(a.pixels.size()));
 }
 
+// The three ways of finding light, in one order: MIS, light sampling alone, BSDF sampling alone.
+constexpr PathSettings::Strategy kStrategies[3] = {PathSettings::Strategy::kMis, PathSettings::Strategy::kLights,
+                                                   PathSettings::Strategy::kBsdf};
+
+// `settings` rendered with each of kStrategies, numbers drawn with `seed`.
+std::vector<Image> by_strategy(const LoadedScene& s, RenderSettings settings, uint64_t seed) {
+  settings.seed = seed;
+  std::vector<Image> images;
+  for (const PathSettings::Strategy strategy : kStrategies) {
+    settings.path.strategy = strategy;
+    images.push_back(render_image(s, settings));
+  }
+  return images;
+}
+
 // A glossy floor lit by a small bright and a large dim rect light (Veach's scene, simplified):
 // light sampling is poor at the large light's reflection, BSDF sampling at the small light's.
 const char* kTwoLights = R"({
@@ -121,15 +136,10 @@ TEST_CASE("MIS: light sampling and MIS agree, MIS's error is far below BSDF samp
   reference_settings.path.samples_per_pixel = 4096;
   const Image reference = render_image(s, reference_settings);
   double error[3], mean[3];
-  const PathSettings::Strategy strategies[3] = {PathSettings::Strategy::kMis, PathSettings::Strategy::kLights,
-                                                PathSettings::Strategy::kBsdf};
+  const std::vector<Image> images = by_strategy(s, s.settings, 100);  // not the reference's numbers
   for (int k = 0; k < 3; ++k) {
-    RenderSettings settings = s.settings;
-    settings.path.strategy = strategies[k];
-    settings.seed = 100;  // not the reference's numbers
-    const Image image = render_image(s, settings);
-    error[k] = rmse(image, reference);
-    mean[k] = image_stats(image).mean;
+    error[k] = rmse(images[k], reference);
+    mean[k] = image_stats(images[k]).mean;
   }
   INFO("RMSE against 4096 spp: MIS " << error[0] << ", lights only " << error[1] << ", BSDF only " << error[2]);
   INFO("means at 32 spp: " << mean[0] << ", " << mean[1] << ", " << mean[2]);
@@ -149,20 +159,14 @@ TEST_CASE("MIS: BSDF sampling alone converges to the same mean, MIS has the leas
   reference_settings.path.samples_per_pixel = 4096;
   const Image reference = render_image(s, reference_settings);
   double error[3];
-  const PathSettings::Strategy strategies[3] = {PathSettings::Strategy::kMis, PathSettings::Strategy::kLights,
-                                                PathSettings::Strategy::kBsdf};
-  for (int k = 0; k < 3; ++k) {
-    RenderSettings settings = s.settings;
-    settings.path.strategy = strategies[k];
-    settings.seed = 100;
-    error[k] = rmse(render_image(s, settings), reference);
-  }
+  const std::vector<Image> images = by_strategy(s, s.settings, 100);
+  for (int k = 0; k < 3; ++k) error[k] = rmse(images[k], reference);
   INFO("RMSE against 4096 spp: MIS " << error[0] << ", lights only " << error[1] << ", BSDF only " << error[2]);
   CHECK(error[0] < error[1]);
   const double ref_mean = image_stats(reference).mean;
   for (int k = 1; k < 3; ++k) {
     RenderSettings settings = reference_settings;
-    settings.path.strategy = strategies[k];
+    settings.path.strategy = kStrategies[k];
     settings.seed = 200;
     const double m = image_stats(render_image(s, settings)).mean;
     INFO("strategy " << k << " at 4096 spp: mean " << m << " against MIS " << ref_mean);
@@ -328,19 +332,13 @@ TEST_CASE("MIS: emissive shapes and CSG solids are light-sampled, every strategy
   };
   const double ref_mean = image_stats(floor_only(reference)).mean;
   double error[3];
-  const PathSettings::Strategy strategies[3] = {PathSettings::Strategy::kMis, PathSettings::Strategy::kLights,
-                                                PathSettings::Strategy::kBsdf};
-  for (int k = 0; k < 3; ++k) {
-    RenderSettings settings = s.settings;
-    settings.path.strategy = strategies[k];
-    settings.seed = 100;
-    error[k] = rmse(floor_only(render_image(s, settings)), floor_only(reference));
-  }
+  const std::vector<Image> images = by_strategy(s, s.settings, 100);
+  for (int k = 0; k < 3; ++k) error[k] = rmse(floor_only(images[k]), floor_only(reference));
   INFO("RMSE against 2048 spp: MIS " << error[0] << ", lights only " << error[1] << ", BSDF only " << error[2]);
   CHECK(error[0] < 0.5 * error[2]);
   for (int k = 1; k < 3; ++k) {
     RenderSettings settings = reference_settings;
-    settings.path.strategy = strategies[k];
+    settings.path.strategy = kStrategies[k];
     settings.seed = 200;
     const double m = image_stats(floor_only(render_image(s, settings))).mean;
     INFO("strategy " << k << " at 2048 spp: mean " << m << " against MIS " << ref_mean);
