@@ -18,8 +18,8 @@
 
 using namespace rt;
 using rt::test::image_stats;
-using rt::test::render_image;
 using rt::test::kTwoLights;
+using rt::test::render_image;
 using rt::test::rmse;
 
 namespace {
@@ -38,7 +38,6 @@ std::vector<Image> by_strategy(const LoadedScene& s, RenderSettings settings, ui
   }
   return images;
 }
-
 
 // A glossy floor under the large dim light alone: light sampling is poor at its sharp reflection,
 // BSDF sampling on the rough rest.
@@ -116,7 +115,6 @@ TEST_CASE("MIS: light sampling and MIS agree, MIS's error is far below BSDF samp
   lights_only.seed = 200;
   CHECK(image_stats(render_image(s, lights_only)).mean == Approx(image_stats(reference).mean).epsilon(0.005));
 }
-
 
 TEST_CASE("MIS: each strategy alone converges to the same mean, MIS is the least noisy (32 seeds)", "[path][mis]") {
   const LoadedScene s = rt::test::load_scene_text("large_light.json", kLargeLight);
@@ -243,4 +241,3 @@ TEST_CASE("MIS: emissive shapes and CSG solids are light-sampled, every strategy
     CHECK(m == Approx(ref_mean).epsilon(0.03));
   }
 }
-
