@@ -1,5 +1,6 @@
 #include "core/render/direct_lighting.h"
 
+#include "core/lights/rect_light_batch.h"
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
 #include "materials/phong.h"
@@ -28,9 +29,9 @@ Vec3 emitted_light(const EvaluatedSurface& s, uint64_t path, int count, const Sh
     if (!(ls.pdf > 0.0f)) continue;
     ls.radiance /= kPi * ls.pdf;
     Ray shadow;
-    if (!shadow_ray(ls, shadow)) continue;
+    if (!shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) continue;
     const Vec3 visible = shadow_transmittance(scene, shadow);
-    if (max_component(visible) > 0.0f) sum += lit(ls, visible);
+    if (max_component(visible) > 0.0f) sum += lit(ls.direction, ls.radiance, visible);
   }
   return sum / static_cast<float>(count);
 }
@@ -59,27 +60,28 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   // sample (4% of a soft-shadow render went there; the same floats).
   const Vec3 origin_front = shadow_ray_origin(s, s.ng);
   const Vec3 origin_back = lifted ? shadow_ray_origin(s, -s.ng) : origin_front;
-  // The shadow ray towards a sample, or false when the sample cannot light the point.
-  const auto shadow_ray = [&](const LightSample& ls, Ray& shadow) {
+  // The shadow ray towards a sample (its direction, distance and radiance), or false when the
+  // sample cannot light the point.
+  const auto shadow_ray = [&](Vec3 direction, float distance, Vec3 radiance, Ray& shadow) {
     // A light behind the geometric surface cannot reach it, whatever the shading normal says;
     // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
     // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
     // follows the normals rather than the facets' edges.
-    if (glm::dot(s.n, ls.direction) <= 0.0f) return false;
-    if (glm::dot(s.ng, ls.direction) <= 0.0f && !lifted) return false;
-    if (max_component(ls.radiance) <= 0.0f) return false;  // the dark back of an area light
+    if (glm::dot(s.n, direction) <= 0.0f) return false;
+    if (glm::dot(s.ng, direction) <= 0.0f && !lifted) return false;
+    if (max_component(radiance) <= 0.0f) return false;  // the dark back of an area light
     // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
     // far beside a lift of a fraction of a facet.
-    shadow.origin = glm::dot(ls.direction, s.ng) < 0.0f ? origin_back : origin_front;
-    shadow.direction = ls.direction;
+    shadow.origin = glm::dot(direction, s.ng) < 0.0f ? origin_back : origin_front;
+    shadow.direction = direction;
     shadow.tmin = 0.0f;
     // Stop just short of the light so a surface the light sits on does not shadow it.
-    shadow.tmax = ls.distance * (1.0f - kShadowEpsilon);
+    shadow.tmax = distance * (1.0f - kShadowEpsilon);
     ++ctx.counters[RayKind::kShadow];
     return true;
   };
-  const auto lit = [&](const LightSample& ls, Vec3 visible) {
-    return visible * ls.radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo);
+  const auto lit = [&](Vec3 direction, Vec3 radiance, Vec3 visible) {
+    return visible * radiance * phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, direction, s.wo);
   };
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
@@ -92,44 +94,57 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
     // light of its colour would, times the light's attenuation and its cosine towards the point.
     // Inlined: as a call of its own (it returns a LightSample) soft_shadows.json took 11% longer (measured).
+    const auto point_of = [&](int i) __attribute__((always_inline)) {
+      return count == 1 && (centred || !rect)
+                 ? Vec2(0.5f)
+                 : grid.point(
+                       i, ctx.samples.get2(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(i))));
+    };
     const auto sample_at = [&](int i) __attribute__((always_inline)) {
-      const Vec2 u = count == 1 && (centred || !rect)
-                         ? Vec2(0.5f)
-                         : grid.point(i, ctx.samples.get2(SamplePurpose::kLight, path,
-                                                          light_dimension(l, static_cast<uint32_t>(i))));
+      const Vec2 u = point_of(i);
       if (!rect) return sample_li(light, s.position, u);
       LightSample ls = rect_point(*rect, frame, rect->point(u) - s.position);
       ls.radiance *= rect->attenuation(ls.distance) * ls.cos_light;
       return ls;
     };
     Vec3 light_sum(0.0f);
-    if (count < kMinShadowPacket || !scene.all_opaque) {
+    if (count < kMinShadowPacket || !scene.all_opaque || !rect) {
       for (int i = 0; i < count; ++i) {
         const LightSample ls = sample_at(i);
         Ray shadow;
-        if (!shadow_ray(ls, shadow)) continue;
+        if (!shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) continue;
         const Vec3 visible = shadow_transmittance(scene, shadow);
-        if (max_component(visible) > 0.0f) light_sum += lit(ls, visible);
+        if (max_component(visible) > 0.0f) light_sum += lit(ls.direction, ls.radiance, visible);
       }
     } else {
-      // Opaque blockers only: the samples' shadow rays in packets (Bvh::occluded_packet), each
-      // sample that reaches the light then adding its share in sample order: the same sum. (With
-      // glass, asking the packet first and walking the rays it finds crossing something for
-      // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
-      // twice: measured, and left out.)
+      // A rect light and opaque blockers only: the samples worked out a batch at a time in vector
+      // registers (core/lights/rect_light_batch.h), their shadow rays in packets
+      // (Bvh::occluded_packet), each sample that reaches the light then adding its share in
+      // sample order: the same sum. (With glass, asking the packet first and walking the rays it
+      // finds crossing something for their transmittance gave panorama 0.90x but csg 1.18x, whose
+      // CSG spans were then found twice: measured, and left out.)
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
-        LightSample batch_samples[kPacketSize];
+        float u[2][kPacketSize] = {};
+        for (int j = 0; j < batch; ++j) {
+          const Vec2 p = point_of(base + j);
+          u[0][j] = p.x;
+          u[1][j] = p.y;
+        }
+        RectLightBatch drawn;
+        rect_light_batch(*rect, frame, s.position, u, drawn);
+        Vec3 radiance[kPacketSize];
         Ray shadows[kPacketSize];
         int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
         int rays = 0;
         for (int j = 0; j < batch; ++j) {
-          batch_samples[j] = sample_at(base + j);
-          ray_of[j] = shadow_ray(batch_samples[j], shadows[rays]) ? rays++ : -1;
+          radiance[j] = rect->color * drawn.scale[j];
+          ray_of[j] = shadow_ray(drawn.direction(j), drawn.distance[j], radiance[j], shadows[rays]) ? rays++ : -1;
         }
         const unsigned blocked = scene.occluded_packet(shadows, rays);
         for (int j = 0; j < batch; ++j)
-          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += lit(batch_samples[j], Vec3(1.0f));
+          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u))
+            light_sum += lit(drawn.direction(j), radiance[j], Vec3(1.0f));
       }
     }
     sum += light_sum / static_cast<float>(count);
