@@ -108,7 +108,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       return ls;
     };
     Vec3 light_sum(0.0f);
-    if (count < kMinShadowPacket || !scene.all_opaque || !rect) {
+    if (!rect) {
       for (int i = 0; i < count; ++i) {
         const LightSample ls = sample_at(i);
         Ray shadow;
@@ -117,12 +117,13 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         if (max_component(visible) > 0.0f) light_sum += lit(ls.direction, ls.radiance, visible);
       }
     } else {
-      // A rect light and opaque blockers only: the samples worked out a batch at a time in vector
-      // registers (core/lights/rect_light_batch.h), their shadow rays in packets
-      // (Bvh::occluded_packet), each sample that reaches the light then adding its share in
+      // A rect light's samples worked out a batch at a time in vector registers
+      // (core/lights/rect_light_batch.h). With opaque blockers only, enough shadow rays go in
+      // packets (Bvh::occluded_packet), each sample that reaches the light then adding its share in
       // sample order: the same sum. (With glass, asking the packet first and walking the rays it
       // finds crossing something for their transmittance gave panorama 0.90x but csg 1.18x, whose
       // CSG spans were then found twice: measured, and left out.)
+      const bool packets = scene.all_opaque && count >= kMinShadowPacket;
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};
@@ -141,10 +142,18 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           radiance[j] = rect->color * drawn.scale[j];
           ray_of[j] = shadow_ray(drawn.direction(j), drawn.distance[j], radiance[j], shadows[rays]) ? rays++ : -1;
         }
-        const unsigned blocked = scene.occluded_packet(shadows, rays);
-        for (int j = 0; j < batch; ++j)
-          if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u))
-            light_sum += lit(drawn.direction(j), radiance[j], Vec3(1.0f));
+        if (packets) {
+          const unsigned blocked = scene.occluded_packet(shadows, rays);
+          for (int j = 0; j < batch; ++j)
+            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u))
+              light_sum += lit(drawn.direction(j), radiance[j], Vec3(1.0f));
+          continue;
+        }
+        for (int j = 0; j < batch; ++j) {
+          if (ray_of[j] < 0) continue;
+          const Vec3 visible = shadow_transmittance(scene, shadows[ray_of[j]]);
+          if (max_component(visible) > 0.0f) light_sum += lit(drawn.direction(j), radiance[j], visible);
+        }
       }
     }
     sum += light_sum / static_cast<float>(count);
