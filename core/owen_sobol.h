@@ -30,6 +30,24 @@ inline uint32_t upward_hash(uint32_t x, uint32_t seed) {
   return x;
 }
 
+// Eight lanes of reverse_bits and upward_hash at once (GCC/Clang vector extensions): the same bits.
+typedef uint32_t Uint8 __attribute__((vector_size(32)));
+inline Uint8 reverse_bits8(Uint8 x) {
+  x = (x >> 16) | (x << 16);  // no byte swap in vector registers: the halves, then bytes, ...
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+}
+inline Uint8 upward_hash8(Uint8 x, Uint8 seed) {
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return x;
+}
+
 // A nested uniform (Owen) scramble of x's bits, most significant first: each bit flipped by a
 // hash of the bits above it, the upward hash on the reversed bits.
 inline uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(upward_hash(reverse_bits(x), seed)); }

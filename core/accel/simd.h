@@ -49,6 +49,29 @@ RT_SIMD_INLINE Float8 splat8(float x) { return Float8{x, x, x, x, x, x, x, x}; }
 RT_SIMD_INLINE Float8 min8(Float8 a, Float8 b) { return a < b ? a : b; }
 RT_SIMD_INLINE Float8 max8(Float8 a, Float8 b) { return a > b ? a : b; }
 
+// Correctly rounded square roots, lane by lane (sqrtps: the same bits as std::sqrt).
+RT_SIMD_INLINE Float8 sqrt8(Float8 v) {
+#if defined(__AVX__)
+  return __builtin_ia32_sqrtps256(v);
+#elif defined(__SSE__)
+  Float4 lo, hi;
+  std::memcpy(&lo, &v, sizeof lo);
+  std::memcpy(&hi, reinterpret_cast<const char*>(&v) + sizeof lo, sizeof hi);
+  lo = __builtin_ia32_sqrtps(lo);
+  hi = __builtin_ia32_sqrtps(hi);
+  Float8 r;
+  std::memcpy(&r, &lo, sizeof lo);
+  std::memcpy(reinterpret_cast<char*>(&r) + sizeof lo, &hi, sizeof hi);
+  return r;
+#else
+  for (int i = 0; i < 8; ++i) v[i] = __builtin_sqrtf(v[i]);
+  return v;
+#endif
+}
+
+// |v|, lane by lane: the sign bit cleared, as std::fabs.
+RT_SIMD_INLINE Float8 abs8(Float8 v) { return reinterpret_cast<Float8>(reinterpret_cast<Mask8>(v) & 0x7fffffff); }
+
 // Bit i set when lane i is true: one vmovmskps with AVX, two movmskps without.
 RT_SIMD_INLINE unsigned movemask8(Mask8 m) {
 #if defined(__AVX__)

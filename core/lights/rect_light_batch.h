@@ -1,18 +1,19 @@
-// Whitted's samples of one rect light from one shading point, kPacketSize at a time, laid out lane
-// by lane (one array per quantity) so that the compiler works a batch out in vector registers: a
-// square root and four divisions per sample, which one by one left the core waiting on each
-// (soft_shadows.json: 59% of its time in direct lighting, most of it there).
+// Whitted's samples of one rect light from one shading point, kPacketSize at a time, in vector
+// registers (GCC/Clang vector extensions, core/accel/simd.h): a square root and four divisions per
+// sample, which one by one left the core waiting on each (soft_shadows.json: 59% of its time in
+// direct lighting, most of it there).
 //
 // Each lane performs the very operations of rect_point followed by Whitted's rule (attenuation x
 // cos_light, core/lights/rect_light.h), in the same order: the same floats as one sample at a time.
 #pragma once
 
-#include <cmath>
-
 #include "core/accel/bvh.h"
+#include "core/accel/simd.h"
 #include "core/lights/light.h"
 
 namespace rt {
+
+static_assert(kPacketSize == 8, "a batch is one Float8");
 
 struct RectLightBatch {
   alignas(32) float dx[kPacketSize], dy[kPacketSize], dz[kPacketSize];  // unit, towards the light
@@ -25,29 +26,30 @@ struct RectLightBatch {
 };
 
 // The samples at (u[0][j], u[1][j]) of the light's edges from `point`, every lane (unused lanes
-// are worked out too and ignored: a fixed count keeps the loop in vector registers).
+// are worked out too and ignored).
 inline void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point,
                              const float (&u)[2][kPacketSize], RectLightBatch& out) {
   const Vec3 c = light.corner, e1 = light.edge1, e2 = light.edge2, n = frame.unit_normal;
-  const Attenuation att = light.attenuation;
-  const bool two_sided = light.two_sided;
-  for (int j = 0; j < kPacketSize; ++j) {
-    // light.point(u) - point, as glm orders it: (corner + u.x edge1) + u.y edge2.
-    const float tx = c.x + u[0][j] * e1.x + u[1][j] * e2.x - point.x;
-    const float ty = c.y + u[0][j] * e1.y + u[1][j] * e2.y - point.y;
-    const float tz = c.z + u[0][j] * e1.z + u[1][j] * e2.z - point.z;
-    const float d = std::sqrt(tx * tx + ty * ty + tz * tz);
-    const bool off_light = d > 0.0f;
-    const float x = tx / d, y = ty / d, z = tz / d;
-    const float facing = -(x * n.x + y * n.y + z * n.z);
-    const float cos_light = two_sided ? std::fabs(facing) : (0.0f < facing ? facing : 0.0f);
-    const float a = 1.0f / (att.c0 + d * (att.c1 + d * att.c2));
-    out.dx[j] = off_light ? x : 0.0f;
-    out.dy[j] = off_light ? y : 1.0f;
-    out.dz[j] = off_light ? z : 0.0f;
-    out.distance[j] = d;
-    out.scale[j] = off_light ? a * cos_light : 0.0f;
-  }
+  const Float8 s = load8(u[0]), t = load8(u[1]);
+  // light.point(u) - point, as glm orders it: (corner + u.x edge1) + u.y edge2.
+  const Float8 tx = splat8(c.x) + s * e1.x + t * e2.x - point.x;
+  const Float8 ty = splat8(c.y) + s * e1.y + t * e2.y - point.y;
+  const Float8 tz = splat8(c.z) + s * e1.z + t * e2.z - point.z;
+  const Float8 d = sqrt8(tx * tx + ty * ty + tz * tz);
+  const Mask8 off_light = d > 0.0f;
+  const Float8 x = tx / d, y = ty / d, z = tz / d;
+  const Float8 facing = -(x * n.x + y * n.y + z * n.z);
+  const Float8 cos_light = light.two_sided ? abs8(facing) : (facing > 0.0f ? facing : splat8(0.0f));
+  const Attenuation& att = light.attenuation;
+  const Float8 a = 1.0f / (att.c0 + d * (att.c1 + d * att.c2));
+  const Float8 zero = splat8(0.0f);
+  const Float8 dx = off_light ? x : zero, dy = off_light ? y : splat8(1.0f), dz = off_light ? z : zero;
+  const Float8 scale = off_light ? a * cos_light : zero;
+  std::memcpy(out.dx, &dx, sizeof dx);
+  std::memcpy(out.dy, &dy, sizeof dy);
+  std::memcpy(out.dz, &dz, sizeof dz);
+  std::memcpy(out.distance, &d, sizeof d);
+  std::memcpy(out.scale, &scale, sizeof scale);
 }
 
 }  // namespace rt

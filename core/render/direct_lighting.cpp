@@ -91,46 +91,37 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     const RectLight* rect = std::get_if<RectLight>(&light);
     const RectFrame frame = rect ? scene.rect_frame(l) : RectFrame(RectLight{});  // the scene's, not per sample
     const StratifiedGrid grid(count);
-    // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
-    // light of its colour would, times the light's attenuation and its cosine towards the point.
-    // Inlined: as a call of its own (it returns a LightSample) soft_shadows.json took 11% longer (measured).
-    const auto point_of = [&](int i) __attribute__((always_inline)) {
-      return count == 1 && (centred || !rect)
-                 ? Vec2(0.5f)
-                 : grid.point(
-                       i, ctx.samples.get2(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(i))));
-    };
-    const auto sample_at = [&](int i) __attribute__((always_inline)) {
-      const Vec2 u = point_of(i);
-      if (!rect) return sample_li(light, s.position, u);
-      LightSample ls = rect_point(*rect, frame, rect->point(u) - s.position);
-      ls.radiance *= rect->attenuation(ls.distance) * ls.cos_light;
-      return ls;
-    };
     Vec3 light_sum(0.0f);
-    if (!rect) {
-      for (int i = 0; i < count; ++i) {
-        const LightSample ls = sample_at(i);
-        Ray shadow;
-        if (!shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) continue;
+    if (!rect) {  // a point, spot or directional light: one sample, one shadow ray
+      const LightSample ls = sample_li(light, s.position, Vec2(0.5f));
+      Ray shadow;
+      if (shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) {
         const Vec3 visible = shadow_transmittance(scene, shadow);
         if (max_component(visible) > 0.0f) light_sum += lit(ls.direction, ls.radiance, visible);
       }
     } else {
-      // A rect light's samples worked out a batch at a time in vector registers
-      // (core/lights/rect_light_batch.h). With opaque blockers only, enough shadow rays go in
-      // packets (Bvh::occluded_packet), each sample that reaches the light then adding its share in
-      // sample order: the same sum. (With glass, asking the packet first and walking the rays it
-      // finds crossing something for their transmittance gave panorama 0.90x but csg 1.18x, whose
-      // CSG spans were then found twice: measured, and left out.)
+      // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
+      // light of its colour would, times the light's attenuation and its cosine towards the point.
+      // The samples worked out a batch at a time in vector registers
+      // (core/lights/rect_light_batch.h), their numbers too (SampleStream::get2_batch). With opaque blockers only,
+      // enough shadow rays go in packets (Bvh::occluded_packet), each sample that reaches the light then adding its
+      // share in sample order: the same sum. (With glass, asking the packet first and walking the rays it finds
+      // crossing something for their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
+      // twice: measured, and left out.)
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};
-        for (int j = 0; j < batch; ++j) {
-          const Vec2 p = point_of(base + j);
-          u[0][j] = p.x;
-          u[1][j] = p.y;
+        if (count == 1 && centred) {
+          u[0][0] = u[1][0] = 0.5f;
+        } else {
+          float jx[kPacketSize], jy[kPacketSize];
+          ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)), jx, jy);
+          for (int j = 0; j < batch; ++j) {
+            const Vec2 p = grid.point(base + j, Vec2(jx[j], jy[j]));
+            u[0][j] = p.x;
+            u[1][j] = p.y;
+          }
         }
         RectLightBatch drawn;
         rect_light_batch(*rect, frame, s.position, u, drawn);
