@@ -86,12 +86,14 @@ struct Camera {
     r.direction = glm::normalize(forward + sx * right + sy * up);
     return r;
   }
+  // Whether generate_ray reads its lens sample: a thin lens, not a pinhole.
+  bool has_lens() const { return aperture > 0.0f && projection == CameraProjection::kPerspective; }
   // The same ray through a thin lens: `lens` in [0, 1)^2 picks the point of the lens disk
   // (Shirley and Chiu's concentric mapping, which keeps strata compact). Aperture 0, or a
   // projection other than perspective, returns the pinhole ray exactly.
   Ray generate_ray(float x, float y, int width, int height, Vec2 lens) const {
     Ray r = generate_ray(x, y, width, height);
-    if (aperture <= 0.0f || projection != CameraProjection::kPerspective) return r;
+    if (!has_lens()) return r;
     const Vec3 focus = r.origin + r.direction * (focus_distance / glm::dot(r.direction, forward));
     const Vec2 disk = aperture * concentric_disk(lens);
     r.origin = position + disk.x * right + disk.y * up;

@@ -19,8 +19,8 @@ void CameraBatch::trace(PixelContext& ctx) {
       ray_of[i] = -1;
       continue;
     }
-    // The lens sample is keyed like every other number: a pinhole camera ignores it.
-    const Vec2 lens = c.samples.get2(SamplePurpose::kLens, 0, 0);
+    // The lens sample is keyed like every other number; a pinhole camera has no use for it.
+    const Vec2 lens = camera.has_lens() ? c.samples.get2(SamplePurpose::kLens, 0, 0) : Vec2(0.5f);
     rays[rays_made] = camera.generate_ray(c.px, c.py, s.width, s.height, lens);
     ray_of[i] = rays_made++;
   }
