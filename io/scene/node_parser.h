@@ -23,18 +23,18 @@ struct NodeParseContext {
   const JsonReader& reader;
   std::string scene_folder;  // mesh files resolve against it
   const std::vector<MaterialDescription>& materials;
-  std::map<std::string, std::string> names;  // node name -> pointer of its first use
-  uint64_t max_nodes = 0;                    // LoadLimits::nodes
-  uint64_t nodes = 0;                        // parsed so far
+  std::map<std::string, std::string> names{};  // node name -> pointer of its first use
+  uint64_t max_nodes = 0;                      // LoadLimits::nodes
+  uint64_t nodes = 0;                          // parsed so far
   // While the operands of a CSG node are parsed: how many CSG nodes enclose them, and whether one
   // of those gives a material (then a shape operand may go without its own).
   int csg_depth = 0;
   bool csg_material = false;
   // Templates by name (the last file's definition), those parsed so far (empty: it failed),
   // and those being parsed (to refuse a template that places itself).
-  std::map<std::string, TemplateSource> templates;
-  std::map<std::string, std::optional<NodeDescription>> parsed_templates;
-  std::vector<std::string> template_stack;
+  std::map<std::string, TemplateSource> templates{};
+  std::map<std::string, std::optional<NodeDescription>> parsed_templates{};
+  std::vector<std::string> template_stack{};
   int in_template = 0;  // > 0: parsing a template, whose shapes may take their material where placed
 };
 

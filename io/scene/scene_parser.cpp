@@ -387,8 +387,11 @@ SceneDescription parse_scene_partial(const SceneSources& sources, const LoadOpti
   if (node_lists.empty()) scene_top.get("nodes", true, "an array of nodes");
   check_render_size(r, scene.render, render_at.value_or(""));
   // The nodes, once every material and template is known.
-  NodeParseContext ctx{r, "", scene.materials, {}, options.limits.nodes, 0};
-  ctx.templates = std::move(templates);
+  NodeParseContext ctx{.reader = r,
+                       .scene_folder = "",
+                       .materials = scene.materials,
+                       .max_nodes = options.limits.nodes,
+                       .templates = std::move(templates)};
   for (const NodeList& list : node_lists) {
     ctx.scene_folder = list.folder;
     std::vector<NodeDescription> nodes = parse_nodes(ctx, *list.nodes, list.pointer);

@@ -48,7 +48,7 @@ TEST_CASE("Sheen: the albedo table matches the integral of its lobe", "[layers]"
     double sum = 0.0;
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
-        const float cos_l = (i + 0.5f) / n, phi = 2.0f * kPi * (j + 0.5f) / n;
+        const float cos_l = (static_cast<float>(i) + 0.5f) / n, phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / n;
         const float sin_l = std::sqrt(1.0f - cos_l * cos_l);
         const Vec3 wi(sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l);
         const Vec3 h = glm::normalize(wi + wo);
@@ -69,7 +69,7 @@ TEST_CASE("Sheen: the albedo table matches the integral of its lobe", "[layers]"
     constexpr int n = 2000;
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
-      const float cos_h = (i + 0.5f) / n;
+      const float cos_h = (static_cast<float>(i) + 0.5f) / n;
       sum += sheen_distribution(roughness, cos_h) * cos_h * 2.0 * kPi / n;
     }
     CHECK(sum == Approx(1.0).epsilon(0.01));
@@ -86,7 +86,7 @@ TEST_CASE("Dispersion: the index at the d line is the material's, and blue bends
   // The wavelengths' colours average to white, and each is a colour of its part of the spectrum.
   Vec3 sum(0.0f);
   constexpr int n = 1000;
-  for (int i = 0; i < n; ++i) sum += wavelength_weight(wavelength_from((i + 0.5f) / n));
+  for (int i = 0; i < n; ++i) sum += wavelength_weight(wavelength_from((static_cast<float>(i) + 0.5f) / n));
   CHECK(sum.x / n == Approx(1.0f).epsilon(0.01));
   CHECK(sum.y / n == Approx(1.0f).epsilon(0.01));
   CHECK(sum.z / n == Approx(1.0f).epsilon(0.01));
