@@ -20,6 +20,7 @@
 #include "core/accel/isa.h"
 #include "core/accel/primitives.h"
 #include "core/accel/triangle_quad.h"
+#include "core/fill_vector.h"
 
 namespace rt {
 
@@ -160,8 +161,8 @@ class Bvh {
     return {};
   }
   // The layout the traversal (core/accel/bvh_traversal.h) reads.
-  const std::vector<Slot>& slots() const { return slots_; }
-  const std::vector<TriangleQuad>& quads() const { return quads_; }  // quad leaves' (BvhRef)
+  const FillVector<Slot>& slots() const { return slots_; }
+  const FillVector<TriangleQuad>& quads() const { return quads_; }  // quad leaves' (BvhRef)
   uint32_t triangle_count() const { return ranges_.shape_begin; }
 
  private:
@@ -174,11 +175,11 @@ class Bvh {
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;
-  std::vector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
+  FillVector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
   // Leaves of three or more triangles alone, as quads tested four at a time: their triangles in
   // slot order, four a quad, the last one padded (core/accel/bvh_quads.cpp).
-  std::vector<TriangleQuad> quads_;
-  void build_quads();
+  FillVector<TriangleQuad> quads_;
+  void build_quads(unsigned threads);
 };
 
 // A mesh's BVH placed by `transform`: the instance with its world bounds filled in.
