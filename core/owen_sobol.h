@@ -12,34 +12,28 @@
 
 namespace rt {
 
-inline uint32_t reverse_bits(uint32_t x) {
-  x = __builtin_bswap32(x);  // the bytes, then the bits within them
+// Eight 32-bit lanes (GCC/Clang vector extensions): the Owen scramble of eight dimensions at once
+// (SampleStream::get2_batch), the same bits lane by lane as the scalar functions below.
+typedef uint32_t Uint8 __attribute__((vector_size(32)));
+
+// The bits within each byte reversed: the step reverse_bits takes after swapping the bytes.
+template <class U>
+inline U reverse_bits_in_bytes(U x) {
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+}
+inline uint32_t reverse_bits(uint32_t x) { return reverse_bits_in_bytes(__builtin_bswap32(x)); }
+// Vector registers have no byte swap: the halves, then the bytes, by shifts and masks.
+inline Uint8 reverse_bits(Uint8 x) {
+  x = (x >> 16) | (x << 16);
+  return reverse_bits_in_bytes(((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8));
 }
 
 // A hash whose every bit depends only on the bits below it (carries only go up): Laine and
-// Karras's construction, with Vegdahl's constants.
-inline uint32_t upward_hash(uint32_t x, uint32_t seed) {
-  x ^= x * 0x3d20adeau;
-  x += seed;
-  x *= (seed >> 16) | 1u;
-  x ^= x * 0x05526c56u;
-  x ^= x * 0x53a22864u;
-  return x;
-}
-
-// Eight lanes of reverse_bits and upward_hash at once (GCC/Clang vector extensions): the same bits.
-typedef uint32_t Uint8 __attribute__((vector_size(32)));
-inline Uint8 reverse_bits8(Uint8 x) {
-  x = (x >> 16) | (x << 16);  // no byte swap in vector registers: the halves, then bytes, ...
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-}
-inline Uint8 upward_hash8(Uint8 x, Uint8 seed) {
+// Karras's construction, with Vegdahl's constants. For one number or eight lanes.
+template <class U>
+inline U upward_hash(U x, U seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;

@@ -98,11 +98,11 @@ class SampleStream {
       x_seed[j] = static_cast<uint32_t>(h >> 32);
       y_seed[j] = static_cast<uint32_t>(mix64(h));
     }
-    const Uint8 shuffled = reverse_bits8(upward_hash8(Uint8{} + reversed_sample_, shuffle_seed));
+    const Uint8 shuffled = reverse_bits(upward_hash(Uint8{} + reversed_sample_, shuffle_seed));
     Uint8 sobol1;
     for (int j = 0; j < 8; ++j) sobol1[j] = sobol_dimension1(shuffled[j]);  // table lookups: a lane at a time
-    const Uint8 xs = reverse_bits8(upward_hash8(shuffled, x_seed)) >> 8;
-    const Uint8 ys = reverse_bits8(upward_hash8(reverse_bits8(sobol1), y_seed)) >> 8;
+    const Uint8 xs = reverse_bits(upward_hash(shuffled, x_seed)) >> 8;
+    const Uint8 ys = reverse_bits(upward_hash(reverse_bits(sobol1), y_seed)) >> 8;
     for (int j = 0; j < 8; ++j) {  // unit_float's conversion
       x[j] = static_cast<float>(xs[j]) * 0x1p-24f;
       y[j] = static_cast<float>(ys[j]) * 0x1p-24f;

@@ -138,7 +138,7 @@ TEST_CASE("Owen-Sobol: eight lanes of reverse_bits and upward_hash are the scala
       x[j] = v;
       seed[j] = v ^ 0xa5a5a5a5u;
     }
-    const Uint8 reversed = reverse_bits8(x), hashed = upward_hash8(x, seed);
+    const Uint8 reversed = reverse_bits(x), hashed = upward_hash(x, seed);
     for (int j = 0; j < 8; ++j) {
       REQUIRE(reversed[j] == reverse_bits(x[j]));
       REQUIRE(hashed[j] == upward_hash(x[j], seed[j]));
