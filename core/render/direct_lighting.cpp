@@ -89,8 +89,6 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
     const int count = light_sample_count(light, samples);
     const RectLight* rect = std::get_if<RectLight>(&light);
-    const RectFrame frame = rect ? scene.rect_frame(l) : RectFrame(RectLight{});  // the scene's, not per sample
-    const StratifiedGrid grid(count);
     Vec3 light_sum(0.0f);
     if (!rect) {  // a point, spot or directional light: one sample, one shadow ray
       const LightSample ls = sample_li(light, s.position, Vec2(0.5f));
@@ -101,13 +99,16 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       }
     } else {
       // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
-      // light of its colour would, times the light's attenuation and its cosine towards the point.
-      // The samples worked out a batch at a time in vector registers
-      // (core/lights/rect_light_batch.h), their numbers too (SampleStream::get2_batch). With opaque blockers only,
-      // enough shadow rays go in packets (Bvh::occluded_packet), each sample that reaches the light then adding its
-      // share in sample order: the same sum. (With glass, asking the packet first and walking the rays it finds
-      // crossing something for their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
+      // light of its colour would, times the light's attenuation and its cosine towards the
+      // point. The samples are worked out a batch at a time in vector registers
+      // (core/lights/rect_light_batch.h), their numbers too (SampleStream::get2_batch). With
+      // opaque blockers only, enough shadow rays go in packets (Bvh::occluded_packet), each
+      // sample that reaches the light then adding its share in sample order: the same sum. (With
+      // glass, asking the packet first and walking the rays it finds crossing something for
+      // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
       // twice: measured, and left out.)
+      const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
+      const StratifiedGrid grid(count);
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
