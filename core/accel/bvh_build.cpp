@@ -406,16 +406,12 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown
   root_ = collapse(binary, 0, nodes_);
 
-  // Every slot written in full (a shape's triangle zeroed), each worker a contiguous share.
+  // Every slot written in full (a shape's triangle zeroed), on all threads, a run of slots each.
   slots_.resize(n);
-  run_workers(threads, [&](unsigned w) {
-    const uint32_t begin = static_cast<uint32_t>(uint64_t{n} * w / threads);
-    const uint32_t end = static_cast<uint32_t>(uint64_t{n} * (w + 1) / threads);
-    for (uint32_t slot = begin; slot < end; ++slot) {
-      const uint32_t id = records[slot].id();
-      slots_[slot].id = id;
-      slots_[slot].triangle = prims.kind(id) == PrimitiveKind::kTriangle ? prims.triangles[id] : PackedTriangle{};
-    }
+  parallel_for(n, threads, 4096, [&](unsigned, size_t slot) {
+    const uint32_t id = records[slot].id();
+    slots_[slot].id = id;
+    slots_[slot].triangle = prims.kind(id) == PrimitiveKind::kTriangle ? prims.triangles[id] : PackedTriangle{};
   });
   build_quads(threads);
 }
