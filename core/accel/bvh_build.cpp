@@ -372,7 +372,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   std::vector<Range> shares(threads);
   std::atomic<uint32_t> bad{n};
   run_workers(threads, [&](unsigned w) {
-    Range& share = shares[w];
+    Range share;  // on this thread's stack: written to `shares` once, as neighbours there share cache lines
     const uint32_t begin = static_cast<uint32_t>(uint64_t{n} * w / threads);
     const uint32_t end = static_cast<uint32_t>(uint64_t{n} * (w + 1) / threads);
     for (uint32_t id = begin; id < end; ++id) {
@@ -389,6 +389,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
       share.bounds.extend(p.lo, p.hi);
       share.centroids.extend(p.centroid(), p.centroid());
     }
+    shares[w] = share;
   });
   if (bad.load() < n)
     throw std::invalid_argument("primitive " + std::to_string(bad.load()) + " has bounds that are not finite");
