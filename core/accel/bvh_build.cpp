@@ -3,9 +3,9 @@
 //    hierarchies", 2007): each node bins primitive centroids on all three axes, sweeps the bins
 //    for the cheapest split and partitions its slice of the build records in place. Large
 //    subtrees are built on spare threads into their own arrays and spliced back in a fixed order,
-//    so the tree is identical whatever the thread count.
-// 2. A collapse to kBvhWidth-wide nodes: a node adopts its children, then repeatedly replaces the
-//    interior child with the largest surface area by that child's two children.
+//    and the largest nodes bin on all spare threads, so the tree is identical whatever the thread
+//    count.
+// 2. A collapse to kBvhWidth-wide nodes (core/accel/bvh_collapse.cpp).
 #include <atomic>
 #include <cstring>
 #include <memory>
@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "core/accel/bvh.h"
+#include "core/accel/bvh_binary_tree.h"
 #include "core/accel/simd.h"
 #include "core/parallel_for.h"
 
@@ -21,24 +22,14 @@ namespace {
 
 constexpr int kBins = 32;
 
-// Half the surface area of a box, in double (see Box4::half_area); 0 for an empty box.
-double half_area(float lo_x, float hi_x, float lo_y, float hi_y, float lo_z, float hi_z) {
-  if (!(lo_x <= hi_x)) return 0.0;
-  const double x = double(hi_x) - lo_x, y = double(hi_y) - lo_y, z = double(hi_z) - lo_z;
-  return x * y + y * z + z * x;
-}
-double half_area(const Aabb& b) { return half_area(b.lo.x, b.hi.x, b.lo.y, b.hi.y, b.lo.z, b.hi.z); }
 constexpr float kTraversalCost = 1.0f;        // cost of a node visit relative to one triangle quad's test
 constexpr uint32_t kMaxLeafSize = 8;          // larger leaves are always split (<= BvhRef::kMaxLeafCount)
 constexpr int kSahDepthLimit = 32;            // deeper nodes use median splits, so depth < Bvh::kMaxDepth
 constexpr uint32_t kParallelMinPrims = 4096;  // smaller subtrees are not worth starting a thread
+// Nodes this large bin their primitives on every spare thread: the root's binning (4 ms of a
+// 300k-triangle build) otherwise leaves the other threads waiting.
+constexpr uint32_t kParallelBinPrims = 65536;
 static_assert(kMaxLeafSize <= BvhRef::kMaxLeafCount);
-
-struct BinaryNode {
-  Aabb bounds;
-  uint32_t offset = 0;  // interior: index of the right child (the left one follows its parent); leaf: first slot
-  uint32_t count = 0;   // 0 for interior nodes
-};
 
 // One primitive during the build: its box as two 4-lane vectors, the id riding in the unused
 // fourth lane of `lo`. The id's bits are offset into the range of normal floats (2.0 and up): raw
@@ -190,13 +181,11 @@ class BinaryBuilder {
   }
 
  private:
-  Split find_split(const Range& range) const {
-    const Binner binner(range.centroids, range.count());
-    const int nb = binner.count;
-    Bin bins[3][kBins];
-    for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < nb; ++k) bins[a][k] = Bin{Box4::empty(), 0};
-    for (uint32_t i = range.begin; i < range.end; ++i) {
+  using Bins = Bin[3][kBins];
+
+  // The primitives of [begin, end) added to `bins`.
+  void bin(uint32_t begin, uint32_t end, const Binner& binner, Bins& bins) const {
+    for (uint32_t i = begin; i < end; ++i) {
       const BuildPrim& p = prims_[i];
       const Int4 k = binner.bins(p.centroid());
       for (int a = 0; a < 3; ++a) {
@@ -205,6 +194,47 @@ class BinaryBuilder {
         ++b.count;
       }
     }
+  }
+
+  static void clear(Bins& bins, int nb) {
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < nb; ++k) bins[a][k] = Bin{Box4::empty(), 0};
+  }
+
+  // A large node's binning in runs of primitives on the spare threads, each into its own bins,
+  // then merged: boxes by min and max and counts by sums, so the bins (and the split) are exactly
+  // those of one thread.
+  void bin_all(const Range& range, const Binner& binner, Bins& bins) {
+    const int nb = binner.count;
+    clear(bins, nb);
+    unsigned helpers = 0;
+    if (range.count() >= kParallelBinPrims)
+      while (helpers < kMaxBinWorkers - 1 && take_spare_thread()) ++helpers;
+    if (helpers == 0) {
+      bin(range.begin, range.end, binner, bins);
+      return;
+    }
+    constexpr uint32_t kRun = 16384;
+    Bins worker_bins[kMaxBinWorkers];
+    for (unsigned w = 0; w <= helpers; ++w) clear(worker_bins[w], nb);
+    parallel_for((range.count() + kRun - 1) / kRun, helpers + 1, 1, [&](unsigned w, size_t run) {
+      const uint32_t begin = range.begin + static_cast<uint32_t>(run) * kRun;
+      bin(begin, std::min(range.end, begin + kRun), binner, worker_bins[w]);
+    });
+    spare_threads_ += helpers;
+    for (unsigned w = 0; w <= helpers; ++w)
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < nb; ++k) {
+          bins[a][k].bounds.extend(worker_bins[w][a][k].bounds);
+          bins[a][k].count += worker_bins[w][a][k].count;
+        }
+  }
+
+  Split find_split(const Range& range) {
+    const Binner binner(range.centroids, range.count());
+    const int nb = binner.count;
+    Bins bins;
+    bin_all(range, binner, bins);
     Split best;
     // Every box below is inside the node's: if its float area is finite, so are theirs.
     const bool wide = !std::isfinite(range.bounds.half_area());
@@ -298,6 +328,7 @@ class BinaryBuilder {
   }
 
   double blocks(uint32_t count) const { return leaf_tests(count, block_); }
+  static constexpr unsigned kMaxBinWorkers = 8;
   BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
   uint32_t block_;
@@ -309,48 +340,6 @@ double binary_sah_cost(const std::vector<BinaryNode>& nodes, uint32_t block) {
   for (const BinaryNode& n : nodes)
     cost += half_area(n.bounds) / root_area * (n.count ? leaf_tests(n.count, block) : double{kTraversalCost});
   return cost;
-}
-
-void set_child(BvhNode& node, int slot, const Aabb& box, uint32_t ref) {
-  node.bounds[0][slot] = box.lo.x;
-  node.bounds[1][slot] = box.hi.x;
-  node.bounds[2][slot] = box.lo.y;
-  node.bounds[3][slot] = box.hi.y;
-  node.bounds[4][slot] = box.lo.z;
-  node.bounds[5][slot] = box.hi.z;
-  node.child[slot] = ref;
-}
-
-template <class NodeVector>
-uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t b, NodeVector& out) {
-  const BinaryNode& n = bin[b];
-  if (n.count > 0) return BvhRef::leaf(n.offset, n.count);
-  uint32_t kids[kBvhWidth] = {b + 1, n.offset};
-  int k = 2;
-  while (k < kBvhWidth) {
-    int widest = -1;
-    double widest_area = -1.0;
-    for (int i = 0; i < k; ++i) {
-      const BinaryNode& c = bin[kids[i]];
-      if (c.count == 0 && half_area(c.bounds) > widest_area) {
-        widest = i;
-        widest_area = half_area(c.bounds);
-      }
-    }
-    if (widest < 0) break;
-    const uint32_t opened = kids[widest];
-    kids[widest] = opened + 1;
-    kids[k++] = bin[opened].offset;
-  }
-  const auto index = static_cast<uint32_t>(out.size());
-  out.emplace_back();
-  BvhNode node{};  // padding zeroed too: the tree's bytes are as deterministic as its shape
-  for (int slot = 0; slot < kBvhWidth; ++slot) {
-    if (slot < k) set_child(node, slot, bin[kids[slot]].bounds, collapse(bin, kids[slot], out));
-    else set_child(node, slot, Aabb{}, 0);  // inverted box: never entered
-  }
-  out[index] = node;
-  return index;
 }
 
 }  // namespace
@@ -405,7 +394,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary, block);
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown
-  root_ = collapse(binary, 0, nodes_);
+  root_ = collapse_binary_tree(binary, threads, nodes_);
 
   // Every slot written in full (a shape's triangle zeroed), on all threads, a run of slots each.
   slots_.resize(n);

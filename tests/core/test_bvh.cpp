@@ -137,10 +137,11 @@ TEST_CASE("BVH any-hit visitor sees every crossing brute force sees, and can sto
 }
 
 TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
-  // Enough primitives that subtrees go to spare threads (past 4096 in a node).
+  // Enough primitives that subtrees go to spare threads (past 4096 in a node) and that the root
+  // bins on them (past 65,536).
   PrimitiveSet prims = random_scene(3);
   Rng rng(8);
-  for (int i = 0; i < 20000; ++i) {
+  for (int i = 0; i < 70000; ++i) {
     const Vec3 c = random_in(rng, -10.0f, 10.0f);
     prims.triangles.push_back(
         PackedTriangle::from_vertices(c, c + random_in(rng, 0, 0.3f), c + random_in(rng, 0, 0.3f)));
@@ -150,6 +151,8 @@ TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
   REQUIRE(one.nodes().size() == four.nodes().size());
   for (size_t i = 0; i < one.nodes().size(); ++i)
     REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode)) == 0);
+  REQUIRE(one.quads().size() == four.quads().size());
+  CHECK(std::memcmp(one.quads().data(), four.quads().data(), one.quads().size() * sizeof(TriangleQuad)) == 0);
 }
 
 TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives", "[bvh]") {
