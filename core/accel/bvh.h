@@ -175,11 +175,14 @@ class Bvh {
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;
-  FillVector<Slot> slots_;  // slot -> triangle copy, so leaves read memory in order
-  // Leaves of three or more triangles alone, as quads tested four at a time: their triangles in
-  // slot order, four a quad, the last one padded (core/accel/bvh_quads.cpp).
+  // The leaves' primitives (core/accel/bvh_leaves.cpp): leaves of three or more triangles alone
+  // as quads tested four at a time, four a quad, the last one padded; the other leaves' as slots,
+  // a triangle copied there, so that leaves read memory in order.
+  FillVector<Slot> slots_;
   FillVector<TriangleQuad> quads_;
-  void build_quads(unsigned threads);
+  // Fills slots_ and quads_ from the primitives in build order (`order`: ids, the leaves' first
+  // and count refer to it) and points the leaf references at them.
+  void fill_leaves(const PrimitiveSet& prims, const uint32_t* order, unsigned threads);
 };
 
 // A mesh's BVH placed by `transform`: the instance with its world bounds filled in.

@@ -396,14 +396,10 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   nodes_.reserve(binary.size() / kBvhWidth + 1);  // interior nodes / (width / 2): seldom regrown
   root_ = collapse_binary_tree(binary, threads, nodes_);
 
-  // Every slot written in full (a shape's triangle zeroed), on all threads, a run of slots each.
-  slots_.resize(n);
-  parallel_for(n, threads, 4096, [&](unsigned, size_t slot) {
-    const uint32_t id = records[slot].id();
-    slots_[slot].id = id;
-    slots_[slot].triangle = prims.kind(id) == PrimitiveKind::kTriangle ? prims.triangles[id] : PackedTriangle{};
-  });
-  build_quads(threads);
+  // The primitives in build order, for the leaves' arrays.
+  FillVector<uint32_t> order(n);
+  parallel_for(n, threads, 4096, [&](unsigned, size_t i) { order[i] = records[i].id(); });
+  fill_leaves(prims, order.data(), threads);
 }
 
 }  // namespace rt

@@ -22,8 +22,8 @@ Aabb child_box(const BvhNode& node, int slot) {
 std::string Bvh::check_structure() const {
   const uint32_t n = primitive_count();
   if (n == 0) return nodes_.empty() ? "" : "nodes without primitives";
-  if (slots_.size() != n) return "slot count differs from the primitive count";
   std::vector<int> seen(n, 0);
+  size_t used_slots = 0;
   std::vector<bool> visited(nodes_.size(), false);
   struct Item {
     uint32_t ref;
@@ -55,7 +55,8 @@ std::string Bvh::check_structure() const {
     }
     if (BvhRef::is_leaf(item.ref)) {
       const uint32_t first = BvhRef::first(item.ref), count = BvhRef::count(item.ref);
-      if (count == 0 || first + count > n) return "leaf outside the slot array";
+      if (count == 0 || first + count > slots_.size()) return "leaf outside the slot array";
+      used_slots += count;
       for (uint32_t slot = first; slot < first + count; ++slot) {
         const uint32_t id = slots_[slot].id;
         if (id >= n) return "slot " + std::to_string(slot) + " holds an invalid id";
@@ -82,6 +83,7 @@ std::string Bvh::check_structure() const {
   }
   for (uint32_t id = 0; id < n; ++id)
     if (seen[id] != 1) return "primitive " + std::to_string(id) + " is in no leaf";
+  if (used_slots != slots_.size()) return "slots that no leaf refers to";
   return "";
 }
 
