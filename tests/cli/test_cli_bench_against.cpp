@@ -57,9 +57,11 @@ TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin
     WARN("blender is not installed (tools/install-deps.sh --tests installs it): skipped");
     return;
   }
-  // environment.json: a chrome, a clay and a glass ball, a satin block and an HDR sky, tiny.
+  // environment.json: a chrome, a clay and a glass ball, a satin block and an HDR sky, small; enough
+  // samples that their time stands out of Cycles' start-up (about a second, give or take a fifth
+  // on a busy machine: 2 and 128 samples at 32 x 32 once took less time for 128).
   const rt::test::Run r = rt::test::run_shell("python3 '" + rt::test::source_path("tools/cycles/speed.py") +
-                                              "' --size 32 --samples 2,32 --runs 1 --rtcli '" + RTCLI_BINARY + "' '" +
+                                              "' --size 48 --samples 4,512 --runs 1 --rtcli '" + RTCLI_BINARY + "' '" +
                                               rt::test::source_path("scenes/environment.json") + "' 2>&1");
   INFO(r.output);
   REQUIRE(r.code == 0);

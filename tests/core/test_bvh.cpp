@@ -138,21 +138,33 @@ TEST_CASE("BVH any-hit visitor sees every crossing brute force sees, and can sto
 
 TEST_CASE("BVH is the same for any build thread count", "[bvh]") {
   // Enough primitives that subtrees go to spare threads (past 4096 in a node) and that the root
-  // bins on them (past 65,536).
-  PrimitiveSet prims = random_scene(3);
+  // bins on them (past 65,536): triangles alone (a mesh's BVH: quad leaves), and with shapes (a
+  // scene's top level: slots).
   Rng rng(8);
+  PrimitiveSet triangles;
   for (int i = 0; i < 70000; ++i) {
     const Vec3 c = random_in(rng, -10.0f, 10.0f);
-    prims.triangles.push_back(
+    triangles.triangles.push_back(
         PackedTriangle::from_vertices(c, c + random_in(rng, 0, 0.3f), c + random_in(rng, 0, 0.3f)));
   }
-  const Bvh one(prims, BvhBuildOptions{1}), four(prims, BvhBuildOptions{4});
-  CHECK(four.check_structure() == "");
-  REQUIRE(one.nodes().size() == four.nodes().size());
-  for (size_t i = 0; i < one.nodes().size(); ++i)
-    REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode)) == 0);
-  REQUIRE(one.quads().size() == four.quads().size());
-  CHECK(std::memcmp(one.quads().data(), four.quads().data(), one.quads().size() * sizeof(TriangleQuad)) == 0);
+  PrimitiveSet mixed = random_scene(3);
+  mixed.triangles.insert(mixed.triangles.end(), triangles.triangles.begin(), triangles.triangles.end());
+  for (const PrimitiveSet* prims : {&triangles, &mixed}) {
+    const Bvh one(*prims, BvhBuildOptions{1}), four(*prims, BvhBuildOptions{4});
+    CHECK(four.check_structure() == "");
+    REQUIRE(one.nodes().size() == four.nodes().size());
+    for (size_t i = 0; i < one.nodes().size(); ++i)
+      REQUIRE(std::memcmp(&one.nodes()[i], &four.nodes()[i], sizeof(BvhNode)) == 0);
+    REQUIRE(one.quads().size() == four.quads().size());
+    REQUIRE(one.slots().size() == four.slots().size());
+    for (size_t i = 0; i < one.quads().size(); ++i)
+      REQUIRE(std::memcmp(&one.quads()[i], &four.quads()[i], sizeof(TriangleQuad)) == 0);
+    for (size_t i = 0; i < one.slots().size(); ++i)
+      REQUIRE(std::memcmp(&one.slots()[i], &four.slots()[i], sizeof(Bvh::Slot)) == 0);
+  }
+  // The mesh's leaves are quads, the scene's slots.
+  CHECK(Bvh(triangles, {}).quads().size() > 10000);
+  CHECK(Bvh(mixed, {}).slots().size() == mixed.size());
 }
 
 TEST_CASE("BVH edge cases: empty, a single primitive, many identical primitives", "[bvh]") {

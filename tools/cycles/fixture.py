@@ -83,5 +83,5 @@ s.render.image_settings.file_format = "PNG"
 s.render.filepath = os.path.splitext(out)[0] + ".cycles.png"
 start = time.time()
 bpy.ops.render.render(write_still=True)
-print("cycles: rendered %s at %dx%d, %d samples, in %.2f s" % (s.render.filepath, width, height, samples,
+print("cycles: rendered %s at %dx%d, %d samples, in %.4f s" % (s.render.filepath, width, height, samples,
                                                               time.time() - start))

@@ -67,6 +67,10 @@ def rtcli(binary, scene, out, size, spp, threads, extra):
 def rate(pixels, n1, n2, t1, t2):
     """Samples per second over the image, and the fixed part (sync) of a render, from two counts."""
     per_sample = (t2 - t1) / (n2 - n1)
+    if not per_sample > 0:
+        # Tiny renders on a busy machine: the time that samples add is lost in the noise.
+        sys.exit("speed.py: %d samples took %.4f s and %d took %.4f s: no time per sample to measure; "
+                 "use more samples (--samples) or a larger image (--size)" % (n1, t1, n2, t2))
     return pixels / per_sample, t1 - n1 * per_sample
 
 

@@ -223,7 +223,7 @@ def main():
 
     start = time.time()
     bpy.ops.render.render(write_still=True)
-    print("cycles: rendered %s at %dx%d, %d samples, in %.2f s" % (out, s.render.resolution_x, s.render.resolution_y,
+    print("cycles: rendered %s at %dx%d, %d samples, in %.4f s" % (out, s.render.resolution_x, s.render.resolution_y,
                                                                   s.cycles.samples, time.time() - start))
 
 
