@@ -124,7 +124,9 @@ unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTe
         unsigned enter;
         slabs.test(node, c, tmin, tmax, enter);
         enter &= active;
-        if (enter) stack[top++] = Entry{node.child[c], enter};
+        if (!enter) continue;
+        prefetch(bvh, node.child[c]);
+        stack[top++] = Entry{node.child[c], enter};
       }
       continue;
     }
@@ -179,6 +181,7 @@ void intersect_packet_walk(const Bvh& bvh, Ray* rays, int count, LeafNearest&& n
         const Float8 near = slabs.test(node, c, tmin, tmax, enter);
         enter &= active;
         if (!enter) continue;
+        prefetch(bvh, node.child[c]);
         // Insertion by decreasing distance, so that the nearest comes off the stack first.
         const Entry child{near, node.child[c], enter};
         int i = top++;
