@@ -6,6 +6,7 @@
 #include "core/thread_count.h"
 #include "io/assemble/csg_operands.h"
 #include "io/assemble/load_cache.h"
+#include "io/assemble/model_framing.h"
 #include "io/assemble/model_library.h"
 #include "io/assemble/placement_warnings.h"
 #include "io/assemble/scene_warnings.h"
@@ -18,9 +19,6 @@
 
 namespace rt {
 namespace {
-
-// Poses a model's default camera frames at most, spread over its animation.
-constexpr int kFramingPoses = 240;
 
 class Builder {
  public:
@@ -159,7 +157,7 @@ class Builder {
     }
     warn_stacked_copies(g, rest, pointers_, report_);
     warn_empty_csgs(g, rest, pointers_, report_);
-    if (desc_.frame_the_model && !frame_model(g, placed)) return std::nullopt;
+    if (desc_.frame_the_model && !frame(g, placed)) return std::nullopt;
     if (diags_.error_count() > errors_before_) return std::nullopt;
     const std::vector<Aabb> geometry = geometry_bounds(placed);
     // The frame a render shows first, with its BVH (validate builds none); another than the
@@ -232,45 +230,15 @@ class Builder {
     return false;
   }
 
-  // The camera framing the model from the front and above, over its whole animation (so that
-  // nothing moving leaves the image), and a point light up and to the right of it, so that
-  // shading shows the form and shadows fall behind.
-  bool frame_model(SceneGraph& g, const PrimitiveSet& placed) {
-    Aabb bounds;
-    for (uint32_t id = 0; id < placed.size(); ++id) bounds.extend(placed.bounds(id));
-    if (g.animated) {
-      // Every frame of the timeline, or kFramingPoses spread over a long one.
-      const int frames = g.timeline.frame_count();
-      const int poses = std::min(frames, kFramingPoses);
-      for (int k = 1; k < poses; ++k) {
-        const int frame =
-            g.timeline.first_frame + static_cast<int>(static_cast<int64_t>(k) * (frames - 1) / std::max(1, poses - 1));
-        const PrimitiveSet at = g.place(g.pose(frame));
-        for (uint32_t id = 0; id < at.size(); ++id) bounds.extend(at.bounds(id));
-      }
-    }
-    if (bounds.empty()) bounds = Aabb{Vec3(-1.0f), Vec3(1.0f)};  // nothing to see: still a camera and a light
+  // The model's framing camera and light (io/assemble/model_framing.h), an error if it has none.
+  bool frame(SceneGraph& g, const PrimitiveSet& placed) {
     const float aspect = static_cast<float>(desc_.render.width) / static_cast<float>(desc_.render.height);
-    const Camera framing = Camera::framing(bounds, 40.0f, aspect);
-    // The camera: --camera's (chosen already), else the file's first, else the framing one. The
-    // light goes beside the camera in use, where it was, so that the side the camera sees is lit.
-    if (!options_.camera) g.camera = cameras_.empty() ? CameraPlacement{"", framing, -1} : cameras_.front();
-    const Camera camera = g.camera_at(g.pose(g.timeline.first_frame));
-    const float reach = glm::length(camera.position - bounds.centre());
-    PointLight light;
-    light.position = camera.position + reach * (0.5f * camera.right + 0.6f * camera.up);
-    if (!is_finite(framing.position) || !is_finite(light.position) || !(reach > 0.0f)) {
-      diags_.file_error(desc_.path,
-                        "expected a model small enough to frame in single precision, found one whose "
-                        "extent (from " +
-                            std::to_string(bounds.lo.x) + " to " + std::to_string(bounds.hi.x) +
-                            " in x) puts the camera at infinity");
-      return false;
-    }
-    if (g.lights.empty()) g.lights = {LightPlacement{light, -1}};
-    // Stereo (--stereo) converges on the model, which a glTF camera has no look-at point to say.
-    g.camera.camera.stereo.convergence = reach;
-    return true;
+    std::optional<CameraPlacement> file_camera;
+    if (!cameras_.empty()) file_camera = cameras_.front();
+    std::string error;
+    if (frame_model(g, placed, aspect, options_.camera.has_value(), file_camera, error)) return true;
+    diags_.file_error(desc_.path, error);
+    return false;
   }
 
   // The material with its slots pointing at loaded textures; a slot whose file failed stays empty

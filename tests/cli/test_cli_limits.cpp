@@ -122,6 +122,28 @@ TEST_CASE("cli limits: Ctrl-C while an 8192 x 8192 film is made stops within a s
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("cli limits: a model too large to frame in single precision is refused, in render and validate",
+          "[cli][errors][limits]") {
+  std::string buffer;
+  rt::test::append<float>(buffer, {-1.5e38f, 0, 0, 1.5e38f, 0, 0, 0, 1, 0});  // finite edges, the camera not
+  const rt::Json doc = {{"scenes", {{{"nodes", {0}}}}},
+                        {"nodes", {{{"mesh", 0}}}},
+                        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+                        {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
+                        {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}}};
+  const std::string model = rt::test::write_gltf("huge.gltf", buffer, doc);
+  for (const std::string& command :
+       {"validate '" + model + "'", "render '" + model + "' -q -o '" + output_path("huge.png") + "'"}) {
+    const Run r = rtcli_bounded(command);
+    INFO(command);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("huge.gltf: error: expected a model small enough to frame in single "
+                                         "precision, found one whose extent (from -1.5e+38 to 1.5e+38 in x) puts "
+                                         "the camera at infinity"));
+  }
+  CHECK_FALSE(fs::exists(output_path("huge.png")));
+}
+
 TEST_CASE("cli limits: many copies in one spot are a warning, in render and validate", "[cli][limits]") {
   std::string buffer;
   rt::test::append<float>(buffer, {-1, -1, 0, 1, -1, 0, 0, 1, 0});
