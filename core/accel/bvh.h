@@ -60,6 +60,9 @@ struct alignas(64) BvhNode {
 };
 static_assert(sizeof(BvhNode) % 64 == 0, "a BvhNode fills whole cache lines");
 
+// Whether child slot `slot` of `node` is in use (an unused one's box is inverted).
+inline bool child_used(const BvhNode& node, int slot) { return node.bounds[0][slot] <= node.bounds[1][slot]; }
+
 struct BvhBuildOptions {
   unsigned threads = 1;  // subtrees are built in parallel; the tree does not depend on this
   // Which compiled traversal the BVH uses (and the mesh BVHs under it): the best this CPU runs

@@ -107,7 +107,7 @@ BvhStats Bvh::stats() const {
     }
     const BvhNode& node = nodes_[it.ref];
     for (int slot = 0; slot < kBvhWidth; ++slot)
-      if (node.bounds[0][slot] <= node.bounds[1][slot]) stack.push_back({node.child[slot], it.depth + 1});
+      if (child_used(node, slot)) stack.push_back({node.child[slot], it.depth + 1});
   }
   return s;
 }

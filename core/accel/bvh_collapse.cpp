@@ -82,7 +82,7 @@ uint32_t collapse_binary_tree(const std::vector<BinaryNode>& bin, unsigned threa
     // unused slot's inverted box keeps its 0).
     for (BvhNode node : subtree[slot]) {
       for (int s = 0; s < kBvhWidth; ++s)
-        if (node.bounds[0][s] <= node.bounds[1][s] && !BvhRef::is_leaf(node.child[s])) node.child[s] += base;
+        if (child_used(node, s) && !BvhRef::is_leaf(node.child[s])) node.child[s] += base;
       out.push_back(node);
     }
     return BvhRef::is_leaf(ref[slot]) ? ref[slot] : ref[slot] + base;

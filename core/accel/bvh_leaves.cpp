@@ -25,8 +25,7 @@ void Bvh::fill_leaves(const PrimitiveSet& prims, const uint32_t* order, unsigned
   if (BvhRef::is_leaf(root_)) leaves.push_back(&root_);
   for (BvhNode& node : nodes_)
     for (int slot = 0; slot < kBvhWidth; ++slot)
-      if (node.bounds[0][slot] <= node.bounds[1][slot] && BvhRef::is_leaf(node.child[slot]))
-        leaves.push_back(&node.child[slot]);
+      if (child_used(node, slot) && BvhRef::is_leaf(node.child[slot])) leaves.push_back(&node.child[slot]);
   // Which leaves become quad leaves (enough triangles and nothing else), and where each leaf's
   // quads or slots start: running sums in leaf order, so the arrays are the same whatever the
   // thread count.
