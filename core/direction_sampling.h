@@ -9,15 +9,27 @@
 
 namespace rt {
 
+// (cos x, sin x) for x in [-pi/4, pi/4]: the minimax polynomials that Cephes' cosf and sinf use on
+// that range, within 2 ulp of std::cos and std::sin there, without their range reduction (the
+// library's sincosf was 3% of the Cornell box's path-traced time).
+inline Vec2 cos_sin_quarter(float x) {
+  const float x2 = x * x;
+  const float s = x + x * x2 * (-1.6666654611e-1f + x2 * (8.3321608736e-3f + x2 * -1.9515295891e-4f));
+  const float c =
+      1.0f - 0.5f * x2 + x2 * x2 * (4.166664568298827e-2f + x2 * (-1.388731625493765e-3f + x2 * 2.443315711809948e-5f));
+  return Vec2(c, s);
+}
+
 // Uniform point of the unit disk (Shirley and Chiu's concentric mapping, which keeps strata
-// compact).
+// compact). The angle is pi/4 times a ratio within [-1, 1], measured from the x axis (|a| > |b|)
+// or the y axis: cos_sin_quarter's range, the two swapped for the y axis (cos(pi/2 - t) = sin t).
 inline Vec2 concentric_disk(Vec2 u) {
   const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
   if (a == 0.0f && b == 0.0f) return Vec2(0.0f);
   const bool wide = std::fabs(a) > std::fabs(b);
   const float radius = wide ? a : b;
-  const float phi = wide ? (kPi / 4.0f) * (b / a) : (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
-  return radius * Vec2(std::cos(phi), std::sin(phi));
+  const Vec2 cs = cos_sin_quarter((kPi / 4.0f) * (wide ? b / a : a / b));
+  return radius * (wide ? cs : Vec2(cs.y, cs.x));
 }
 
 // Cosine-weighted direction about +z (Malley's method): density cos(theta) / pi.

@@ -2,9 +2,12 @@
 // the keyed streams are what a pixel's samples read.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <vector>
 
+#include "core/direction_sampling.h"
 #include "core/owen_sobol.h"
 #include "core/sampling.h"
 
@@ -144,4 +147,31 @@ TEST_CASE("Owen-Sobol: eight lanes of reverse_bits and upward_hash are the scala
       REQUIRE(hashed[j] == upward_hash(x[j], seed[j]));
     }
   }
+}
+
+TEST_CASE("direction sampling: the quarter-range cos and sin are within 2 ulp of the library's", "[sampling]") {
+  // Every float angle in [-pi/4, pi/4] would take long; a million evenly spaced ones and the ends.
+  const auto ulps = [](float got, double want) {
+    const float w = static_cast<float>(want);
+    const float step = std::nextafter(std::fabs(w), 2.0f) - std::fabs(w);
+    return std::fabs(static_cast<double>(got) - want) / step;
+  };
+  double worst_cos = 0.0, worst_sin = 0.0;
+  constexpr int kSteps = 1 << 20;
+  for (int i = 0; i <= kSteps; ++i) {
+    const float x = -kPi / 4.0f + (kPi / 2.0f) * static_cast<float>(i) / static_cast<float>(kSteps);
+    const Vec2 cs = cos_sin_quarter(x);
+    worst_cos = std::max(worst_cos, ulps(cs.x, std::cos(static_cast<double>(x))));
+    if (x != 0.0f) worst_sin = std::max(worst_sin, ulps(cs.y, std::sin(static_cast<double>(x))));
+  }
+  CHECK(worst_cos < 2.0);
+  CHECK(worst_sin < 2.0);
+  CHECK(cos_sin_quarter(0.0f) == Vec2(1.0f, 0.0f));
+  // The disk's points keep their radius: |p| is max(|a|, |b|) for the square's point (a, b).
+  const Vec2 p = concentric_disk(Vec2(0.9f, 0.3f));
+  CHECK(glm::length(p) == Approx(0.8f).epsilon(1e-6));
+  const Vec2 q = concentric_disk(Vec2(0.55f, 0.05f));  // |b| > |a|: measured from the y axis
+  CHECK(glm::length(q) == Approx(0.9f).epsilon(1e-6));
+  CHECK(q.y < 0.0f);
+  CHECK(std::fabs(q.x) < std::fabs(q.y));
 }
