@@ -77,10 +77,13 @@ float Texture::mip_level(const UvFootprint& footprint) const {
 }
 
 Vec3 Texture::sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint) const {
+  return sample_at_level(uv, wrap, filter, filter == TextureFilter::kTrilinear ? mip_level(footprint) : 0.0f);
+}
+
+Vec3 Texture::sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const {
   switch (filter) {
     case TextureFilter::kNearest: return nearest(uv, wrap);
     case TextureFilter::kTrilinear: {
-      const float level = mip_level(footprint);
       const int lower = static_cast<int>(level);
       const float t = level - static_cast<float>(lower);
       if (t == 0.0f || lower + 1 >= level_count()) return bilinear(uv, wrap, lower);

@@ -67,6 +67,9 @@ class Texture {
   // The texture at (u, v). `footprint`: how much of the texture one pixel's ray covers; only
   // trilinear filtering reads it.
   Vec3 sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint = {}) const;
+  // The same with the footprint's mip level worked out already (mip_level; trilinear only reads
+  // it): for several lookups with one footprint, as a bump map's four.
+  Vec3 sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const;
   // Bilinear filtering of one mip level: the four texels around (u, v), weighted by distance.
   Vec3 bilinear(Vec2 uv, WrapModes wrap, int level = 0) const;
   Vec3 nearest(Vec2 uv, WrapModes wrap, int level = 0) const;
