@@ -168,7 +168,9 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     if (!delta) cone_spread = std::max(cone_spread, kScatteredSpread);
     if (bounce + 1 >= kRouletteStart) {
       // Survive with a probability that follows the throughput, and make up for the paths ended.
-      const float survive = max_component(beta);
+      // Cycles' rule: the square root of its largest channel, which ends dim paths later than the
+      // channel itself would (their light still shows after the view transform's curve).
+      const float survive = std::sqrt(max_component(beta));
       if (survive < 1.0f) {
         if (ctx.samples.get1(SamplePurpose::kRoulette, static_cast<uint64_t>(bounce), 0) >= survive) break;
         beta /= survive;

@@ -7,7 +7,8 @@ script has built and exported it in the same Blender session:
 
 writes OUT.glb (the export, for rtcli) and OUT.cycles.png: frame 1, the world the grey rtcli gives
 a model without one (0.0509, Blender's default world), CPU, a box filter one pixel wide, no
-denoiser or clamping, 10 bounces, the Standard view transform. With ONLY_LIGHT (Softbox, Sun or
+denoiser or clamping, 10 bounces, Russian roulette from the fourth (min_light_bounces 3, as rtcli),
+the Standard view transform. With ONLY_LIGHT (Softbox, Sun or
 Lamp) every other light is switched off and the scene exported again, so that each light's units
 can be compared alone. FLOOR changes the floor for Cycles only, after the export, so that rtcli's
 input stays the same: "no-bump" unlinks its bump node, "diffuse" makes it a Diffuse BSDF of the
@@ -63,6 +64,7 @@ s.cycles.samples = samples
 s.cycles.use_adaptive_sampling = False
 s.cycles.use_denoising = False
 s.cycles.max_bounces = 10
+s.cycles.min_light_bounces = 3  # Russian roulette from the fourth bounce, as rtcli's path tracer
 for k in ("diffuse_bounces", "glossy_bounces", "transmission_bounces", "transparent_max_bounces"):
     setattr(s.cycles, k, 10)
 s.cycles.sample_clamp_direct = 0.0

@@ -13,7 +13,8 @@ transmission a Glass BSDF of the ior (sharp); reflectivity R a Glossy BSDF of co
 the diffuse by R where kd is not 0, its roughness rtcli's `glossy` (the blur-square width: a
 likeness, not the same lobe). Anything else is refused. rtcli is Y-up and Blender Z-up: a point (x, y, z) goes to
 (x, -z, y), a proper rotation. Cycles runs on the CPU with a box pixel filter one pixel wide (as
-rtcli's path sampler), no denoiser, no clamping, max bounces = render.max_depth, the Standard view
+rtcli's path sampler), no denoiser, no clamping, max bounces = render.max_depth, Russian roulette from
+the fourth bounce (min_light_bounces 3, rtcli's start; both by Cycles' rule), the Standard view
 transform (linear to sRGB, as rtcli's clamp tone map). Prints the render time Cycles reports.
 """
 import json
@@ -150,6 +151,7 @@ def main():
     s.cycles.max_bounces = int(render.get("max_depth", 5))
     for k in ("diffuse_bounces", "glossy_bounces", "transmission_bounces", "transparent_max_bounces"):
         setattr(s.cycles, k, s.cycles.max_bounces)
+    s.cycles.min_light_bounces = 3  # Russian roulette from the fourth bounce, as rtcli's path tracer
     s.cycles.sample_clamp_direct = 0.0
     s.cycles.sample_clamp_indirect = 0.0
     s.cycles.pixel_filter_type = "BOX"
