@@ -114,13 +114,28 @@ void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) co
     return;
   }
   const bool cuts = n.op == CsgOp::kIntersection || n.op == CsgOp::kDifference;
-  CsgSpanList operand, combined;
-  // One child's spans combined into `out`, as the operation takes them in order.
-  const auto take = [&](uint32_t child) {
-    node_spans(child, line, operand);
-    if (operand.empty() && n.op != CsgOp::kIntersection) return;
-    csg_combine(n.op, out, operand, combined);
-    out = combined;
+  // The children's spans combined in order. The running result alternates between two lists, and
+  // the last child's step writes straight into `out`: copying the result back after every step
+  // (a list holds 1.4 KB) cost csg.json 2% in memmove.
+  CsgSpanList lists[2], operand;
+  const CsgSpanList* result = nullptr;  // once the first child is in
+  // False when nothing can change the result any more (a cut with nothing left to cut).
+  const auto take = [&](uint32_t child, bool last) {
+    if (!result) {
+      CsgSpanList& first = last ? out : lists[0];
+      node_spans(child, line, first);
+      result = &first;
+    } else {
+      node_spans(child, line, operand);
+      if (operand.empty() && n.op != CsgOp::kIntersection) return true;
+      CsgSpanList& next = last ? out : lists[result == &lists[0] ? 1 : 0];
+      csg_combine(n.op, *result, operand, next);
+      result = &next;
+    }
+    return !(cuts && result->empty());
+  };
+  const auto finish = [&] {
+    if (result && result != &out) out = *result;
   };
   if (n.child_index != CsgNode::kNoChildIndex) {
     // Only the children whose boxes the line meets: the others have no spans, which union, merge
@@ -132,21 +147,15 @@ void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) co
       const bool first_met = count > 0 && met[0] == index + 1;
       if (cuts && !first_met) return;
       if (n.op == CsgOp::kIntersection && static_cast<uint32_t>(count) < child_indices_[n.child_index].size()) return;
-      int k = 0;
-      if (first_met) node_spans(met[k++], line, out);
-      for (; k < count; ++k) {
-        if (out.empty() && cuts) return;  // nothing left to cut
-        take(met[k]);
-      }
+      for (int k = 0; k < count; ++k)
+        if (!take(met[k], k + 1 == count)) return;  // `out` stays empty
+      finish();
       return;
     }
   }
-  uint32_t child = index + 1;
-  node_spans(child, line, out);
-  for (child = nodes_[child].end; child < n.end; child = nodes_[child].end) {
-    if (out.empty() && cuts) return;  // nothing left to cut
-    take(child);
-  }
+  for (uint32_t child = index + 1; child < n.end; child = nodes_[child].end)
+    if (!take(child, nodes_[child].end >= n.end)) return;
+  finish();
 }
 
 void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& out) const {
