@@ -52,10 +52,12 @@ class PointBatch {
   void flush() {
     if (batch_.count == 0) return;
     batch_.trace(ctx_);
+    const Srgb8Table& codes = srgb8_table();
     for (int i = 0; i < batch_.count; ++i) {
       const Vec3& r = batch_.radiance[i];
       const Vec3 shown = ctx_.settings.display.apply(r);  // what the picture shows of it
-      *to_[i] = LatticeSample{r, {srgb8(shown.x), srgb8(shown.y), srgb8(shown.z)}, true, batch_.aovs[i]};
+      *to_[i] =
+          LatticeSample{r, {codes.encode(shown.x), codes.encode(shown.y), codes.encode(shown.z)}, true, batch_.aovs[i]};
     }
     batch_.clear();
   }
