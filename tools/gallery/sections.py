@@ -182,8 +182,8 @@ SECTIONS = [
      "compare": ("cornell-16-sobol", "cornell-16-denoised"),
      "images": [("cornell-equal-time-cycles.png",
                  "The Cornell box in about one second: Cycles, rtcli, rtcli denoised",
-                 "Equal time against Cycles, 160x160: Cycles 32 samples (RMSE 0.0102), rtcli 36 (0.0094), "
-                 "rtcli denoised (0.0042)")],
+                 "Equal time against Cycles, 160x160: Cycles 32 samples (RMSE 0.0085), rtcli 58 (0.0060), "
+                 "rtcli denoised (0.0034)")],
      "tables": [("docs/rendering.md", "### Clean images sooner", 1)]},
     {"id": "gltf-materials", "title": "Extra: glTF materials as the Khronos viewer shows them",
      "what": "The ratified PBR extensions, one sphere each: clearcoat, sheen, specular (back row); anisotropy, "
