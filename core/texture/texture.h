@@ -86,19 +86,29 @@ class Texture {
   std::vector<Level> levels_;  // level 0 the image; each next one half the size, down to 1 x 1
 };
 
-// Texel index i wrapped into [0, n) by the wrap mode.
+// Texel index i wrapped into [0, n) by the wrap mode. The lookups' indices lie within one period
+// either side of [0, 2n) (texel_coordinate reduces u to [0, 2) first), where a subtraction does
+// what the remainder does: an integer division each was most of a bilinear lookup's time.
 inline int wrap_texel(int i, int n, TextureWrap wrap) {
   switch (wrap) {
     case TextureWrap::kClamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
     case TextureWrap::kMirror: {
       const int period = 2 * n;
-      int m = i % period;
+      int m = i;
       if (m < 0) m += period;
+      else if (m >= period) m -= period;
+      if (m < 0 || m >= period) {  // farther out: the remainder
+        m = i % period;
+        if (m < 0) m += period;
+      }
       return m < n ? m : period - 1 - m;
     }
     case TextureWrap::kRepeat:
     default: {
-      const int m = i % n;
+      if (i >= 0 && i < n) return i;
+      if (i < 0 && i >= -n) return i + n;
+      if (i >= n && i < 2 * n) return i - n;
+      const int m = i % n;  // farther out: the remainder
       return m < 0 ? m + n : m;
     }
   }

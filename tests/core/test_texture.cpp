@@ -63,6 +63,16 @@ TEST_CASE("wrap modes at the borders: repeat, clamp, mirror", "[texture]") {
   CHECK(wrap_texel(8, 4, TextureWrap::kMirror) == 0);
   CHECK(wrap_texel(-1, 4, TextureWrap::kMirror) == 0);
   CHECK(wrap_texel(-5, 4, TextureWrap::kMirror) == 3);
+  // The shortcuts near [0, 2n) and the remainder farther out give the remainder's answer everywhere.
+  int differ = 0;
+  for (const int n : {1, 2, 3, 7, 64, 1000})
+    for (int i = -5 * n - 3; i <= 5 * n + 3; ++i) {
+      const int repeat = ((i % n) + n) % n, m = ((i % (2 * n)) + 2 * n) % (2 * n);
+      const int mirror = m < n ? m : 2 * n - 1 - m;
+      differ += wrap_texel(i, n, TextureWrap::kRepeat) != repeat;
+      differ += wrap_texel(i, n, TextureWrap::kMirror) != mirror;
+    }
+  CHECK(differ == 0);
 }
 
 TEST_CASE("mip levels average 2 x 2 texels down to 1 x 1, the level follows the footprint", "[texture]") {
