@@ -26,9 +26,8 @@ inline float srgb_decode(float encoded) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-// The 8-bit code of srgb_encode(linear), rounded to the nearest of 256 levels: what a PNG holds.
-// Through an exact table (a code per bucket of floats plus one comparison, no pow); tests check
-// it against srgb8_by_formula for every level.
+// srgb8 by the formula itself (pow and rounding): what the table below is built from and tested
+// against.
 uint8_t srgb8_by_formula(float linear);
 
 // threshold[v] = the smallest float whose code is at least v; first[i] = the code of the first
@@ -55,6 +54,10 @@ class Srgb8Table {
   std::vector<uint8_t> first_;
 };
 const Srgb8Table& srgb8_table();
+
+// The 8-bit code of srgb_encode(linear), rounded to the nearest of 256 levels: what a PNG holds.
+// Through the exact table (a code per bucket of floats plus one comparison, no pow); tests check
+// it against srgb8_by_formula for every level.
 inline uint8_t srgb8(float linear) { return srgb8_table().encode(linear); }
 
 }  // namespace rt

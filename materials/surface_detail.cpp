@@ -16,7 +16,7 @@ Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, 
                      TextureFilter filter) {
   const Texture& map = textures[bump.height.texture];
   const TextureMapping& m = bump.height.mapping;
-  const float level = filter == TextureFilter::kTrilinear ? map.mip_level(footprint) : 0.0f;  // once for all four
+  const float level = map.filter_level(filter, footprint);  // once for all four
   const auto height = [&](Vec2 at) {
     const Vec3 t = map.sample_at_level(at, m.wrap, filter, level);
     return (t.x + t.y + t.z) / 3.0f;

@@ -77,7 +77,7 @@ float Texture::mip_level(const UvFootprint& footprint) const {
 }
 
 Vec3 Texture::sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint) const {
-  return sample_at_level(uv, wrap, filter, filter == TextureFilter::kTrilinear ? mip_level(footprint) : 0.0f);
+  return sample_at_level(uv, wrap, filter, filter_level(filter, footprint));
 }
 
 Vec3 Texture::sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const {

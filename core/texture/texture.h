@@ -67,9 +67,13 @@ class Texture {
   // The texture at (u, v). `footprint`: how much of the texture one pixel's ray covers; only
   // trilinear filtering reads it.
   Vec3 sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint = {}) const;
-  // The same with the footprint's mip level worked out already (mip_level; trilinear only reads
-  // it): for several lookups with one footprint, as a bump map's four.
+  // The same with the footprint's mip level worked out already (filter_level): for several
+  // lookups with one footprint, as a bump map's four.
   Vec3 sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const;
+  // The level a lookup with `filter` reads: the footprint's for trilinear filtering, else 0.
+  float filter_level(TextureFilter filter, const UvFootprint& footprint) const {
+    return filter == TextureFilter::kTrilinear ? mip_level(footprint) : 0.0f;
+  }
   // Bilinear filtering of one mip level: the four texels around (u, v), weighted by distance.
   Vec3 bilinear(Vec2 uv, WrapModes wrap, int level = 0) const;
   Vec3 nearest(Vec2 uv, WrapModes wrap, int level = 0) const;
@@ -95,12 +99,9 @@ inline int wrap_texel(int i, int n, TextureWrap wrap) {
     case TextureWrap::kMirror: {
       const int period = 2 * n;
       int m = i;
-      if (m < 0) m += period;
-      else if (m >= period) m -= period;
-      if (m < 0 || m >= period) {  // farther out: the remainder
-        m = i % period;
-        if (m < 0) m += period;
-      }
+      if (i < 0 && i >= -period) m = i + period;
+      else if (i >= period && i < 2 * period) m = i - period;
+      else if (i < 0 || i >= period) m = (i % period + period) % period;  // farther out: the remainder
       return m < n ? m : period - 1 - m;
     }
     case TextureWrap::kRepeat:
