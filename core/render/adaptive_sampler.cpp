@@ -43,10 +43,10 @@ class PointBatch {
  public:
   explicit PointBatch(PixelContext& ctx) : ctx_(ctx) {}
   void add(int64_t x, int64_t y, LatticeSample* to) {
-    const auto point = static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x);
-    const SampleStream samples(ctx_.settings.seed, ctx_.frame, ctx_.point_key(point), 0, ctx_.settings.sampler);
     to_[batch_.count] = to;
-    batch_.add(static_cast<float>(x) / kKeyCells, static_cast<float>(y) / kKeyCells, samples, 1.0f, 0);
+    CameraSample& c = batch_.add(ctx_, static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x), 0, 0);
+    c.px = static_cast<float>(x) / kKeyCells;
+    c.py = static_cast<float>(y) / kKeyCells;
     if (batch_.full()) flush();
   }
   void flush() {

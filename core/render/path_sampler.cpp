@@ -26,9 +26,10 @@ FilmPixel PathSampler::sample_pixel(int x, int y, PixelState& state, int end, Pi
   while (!state.stopped && n < std::min(end, spp)) {
     const int count = std::min(kPacketSize, spp - n);
     for (int i = 0; i < count; ++i) {
-      const SampleStream samples(s.seed, ctx.frame, ctx.point_key(pixel), static_cast<uint32_t>(n + i), s.sampler);
-      const Vec2 offset = samples.get2(SamplePurpose::kPixel, 0, 0);
-      batch.add(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y, samples, 1.0f, 0);
+      CameraSample& c = batch.add(ctx, pixel, static_cast<uint32_t>(n + i), 0);
+      const Vec2 offset = c.samples.get2(SamplePurpose::kPixel, 0, 0);
+      c.px = static_cast<float>(x) + offset.x;
+      c.py = static_cast<float>(y) + offset.y;
     }
     batch.trace(ctx);
     for (int i = 0; i < batch.count; ++i) {

@@ -47,13 +47,6 @@ void CameraBatch::trace(PixelContext& ctx) {
 
 namespace {
 
-// The keyed numbers of camera sample `sample` of pixel (x, y): the same whichever thread asks.
-SampleStream pixel_stream(int x, int y, uint32_t sample, const PixelContext& ctx) {
-  const RenderSettings& s = ctx.settings;
-  const uint64_t pixel_index = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
-  return SampleStream(s.seed, ctx.frame, ctx.point_key(pixel_index), sample, s.sampler);
-}
-
 // n x n rays on a regular sub-pixel grid, averaged with equal weights: at the cell centres, or
 // with `jitter` at a keyed random point of each cell (stratified sampling: edges turn from stair
 // steps into fine noise). n = 1 without jitter: one ray through the pixel centre, the proposal's
@@ -92,13 +85,15 @@ class UniformSampler final : public PixelSampler {
       };
       for (int x = tile.x0; x < tile.x1; ++x) {
         if (ctx.cancelled()) return false;
+        // Keyed by the pixel's index: the same numbers whichever thread traces it.
+        const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(ctx.settings.width) + static_cast<uint64_t>(x);
         for (int j = 0; j < n_; ++j)
           for (int i = 0; i < n_; ++i) {
-            const SampleStream samples = pixel_stream(x, y, static_cast<uint32_t>(j * n_ + i), ctx);
-            const Vec2 offset = jitter_ ? samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
-            batch.add(static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step,
-                      static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step, samples, step,
-                      static_cast<uint32_t>(x));
+            CameraSample& c = batch.add(ctx, pixel, static_cast<uint32_t>(j * n_ + i), static_cast<uint32_t>(x));
+            const Vec2 offset = jitter_ ? c.samples.get2(SamplePurpose::kPixel, 0, 0) : Vec2(0.5f);
+            c.px = static_cast<float>(x) + (static_cast<float>(i) + offset.x) * step;
+            c.py = static_cast<float>(y) + (static_cast<float>(j) + offset.y) * step;
+            c.spacing = step;
             if (batch.full()) drain(x);
           }
       }

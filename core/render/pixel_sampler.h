@@ -116,15 +116,16 @@ struct CameraBatch {
   int count = 0;
 
   bool full() const { return count == kPacketSize; }
-  // Written field by field into its slot: a CameraSample built on the stack and copied in was
-  // read back by wide loads of its narrow stores, which stalled (measured: see the commit).
-  void add(float px, float py, const SampleStream& samples, float spacing, uint32_t t) {
+  // Queues sample `index` of image point `point` (the render's seed and frame, the context's eye)
+  // and returns its slot, where the caller sets px, py and (if not 1) spacing. The numbers are
+  // built in the slot: a sample built on the stack and copied in was read back by wide loads of
+  // its narrow stores, which stalled (twice measured: see the commits).
+  CameraSample& add(const PixelContext& ctx, uint64_t point, uint32_t index, uint32_t t) {
     CameraSample& slot = sample[count];
-    slot.px = px;
-    slot.py = py;
-    slot.samples = samples;
-    slot.spacing = spacing;
+    std::construct_at(&slot.samples, ctx.settings.seed, ctx.frame, ctx.point_key(point), index, ctx.settings.sampler);
+    slot.spacing = 1.0f;
     tag[count++] = t;
+    return slot;
   }
   // Fills radiance[0, count) (and aovs, if PixelContext::aovs); counts the camera rays.
   void trace(PixelContext& ctx);
