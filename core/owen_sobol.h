@@ -13,7 +13,7 @@
 namespace rt {
 
 // Eight 32-bit lanes (GCC/Clang vector extensions): the Owen scramble of eight dimensions at once
-// (SampleStream::get2_batch), the same bits lane by lane as the scalar functions below.
+// (core/owen_sobol_batch.h), the same bits lane by lane as the scalar functions below.
 typedef uint32_t Uint8 __attribute__((vector_size(32)));
 
 // The bits within each byte reversed: the step reverse_bits takes after swapping the bytes.

@@ -16,6 +16,7 @@
 
 #include "core/math.h"
 #include "core/owen_sobol.h"
+#include "core/owen_sobol_batch.h"
 #include "core/rng.h"
 
 namespace rt {
@@ -79,34 +80,23 @@ class SampleStream {
     const uint64_t h = mix64(key_ ^ dimension);
     return Vec2(static_cast<float>(h >> 40) * 0x1p-24f, static_cast<float>((h >> 16) & 0xffffffu) * 0x1p-24f);
   }
-  // get2(purpose, path, first + j) for j in [0, 8), into x[j] and y[j]: the same numbers, the
-  // 32-bit part of the Sobol sequence's work eight lanes at a time in vector registers (a soft
-  // shadow's 16 samples a point spent a quarter of the render in get2).
-  void get2_batch(SamplePurpose purpose, uint64_t path, uint64_t first, float (&x)[8], float (&y)[8]) const {
+  // get2(purpose, path, first + j) for j in [0, count), into x[j] and y[j], count at most
+  // kMaxSobolPairs: the same numbers, the Sobol sequence's work for all of them at once in vector
+  // registers (core/owen_sobol_batch.h; a soft shadow's 16 samples a point spent a quarter of the
+  // render in get2).
+  void get2_batch(SamplePurpose purpose, uint64_t path, uint64_t first, int count, float* x, float* y) const {
     if (sequence_ != SampleSequence::kSobol) {
-      for (int j = 0; j < 8; ++j) {
+      for (int j = 0; j < count; ++j) {
         const Vec2 u = get2(purpose, path, first + static_cast<uint64_t>(j));
         x[j] = u.x;
         y[j] = u.y;
       }
       return;
     }
-    Uint8 shuffle_seed, x_seed, y_seed;
-    for (int j = 0; j < 8; ++j) {
-      const uint64_t h = mix64(point_key_ ^ tabled_dimension_key(purpose, path, first + static_cast<uint64_t>(j)));
-      shuffle_seed[j] = static_cast<uint32_t>(h);
-      x_seed[j] = static_cast<uint32_t>(h >> 32);
-      y_seed[j] = static_cast<uint32_t>(mix64(h));
-    }
-    const Uint8 shuffled = reverse_bits(upward_hash(Uint8{} + reversed_sample_, shuffle_seed));
-    Uint8 sobol1;
-    for (int j = 0; j < 8; ++j) sobol1[j] = sobol_dimension1(shuffled[j]);  // table lookups: a lane at a time
-    const Uint8 xs = reverse_bits(upward_hash(shuffled, x_seed)) >> 8;
-    const Uint8 ys = reverse_bits(upward_hash(reverse_bits(sobol1), y_seed)) >> 8;
-    for (int j = 0; j < 8; ++j) {  // unit_float's conversion
-      x[j] = static_cast<float>(xs[j]) * 0x1p-24f;
-      y[j] = static_cast<float>(ys[j]) * 0x1p-24f;
-    }
+    uint64_t dimension[kMaxSobolPairs];
+    for (int j = 0; j < count; ++j)
+      dimension[j] = tabled_dimension_key(purpose, path, first + static_cast<uint64_t>(j));
+    owen_sobol_pairs(point_key_, dimension, count, reversed_sample_, x, y);
   }
   // get2(...).x alone, for a choice that needs one number (a lobe, a light, roulette): the same
   // value, without the second coordinate's work.

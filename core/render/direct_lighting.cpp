@@ -101,7 +101,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
       // light of its colour would, times the light's attenuation and its cosine towards the
       // point. The samples are worked out a batch at a time in vector registers
-      // (core/lights/rect_light_batch.h), their numbers too (SampleStream::get2_batch). With
+      // (core/lights/rect_light_batch.h), their numbers sixteen at a time (SampleStream::get2_batch). With
       // opaque blockers only, enough shadow rays go in packets (Bvh::occluded_packet), each
       // sample that reaches the light then adding its share in sample order: the same sum. (With
       // glass, asking the packet first and walking the rays it finds crossing something for
@@ -110,16 +110,21 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
       const StratifiedGrid grid(count);
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
+      static_assert(kMaxSobolPairs % kPacketSize == 0);
+      float jx[kMaxSobolPairs],
+          jy[kMaxSobolPairs];  // the numbers of samples [base - k, ...), k = base % kMaxSobolPairs
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};
         if (count == 1 && centred) {
           u[0][0] = u[1][0] = 0.5f;
         } else {
-          float jx[kPacketSize], jy[kPacketSize];
-          ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)), jx, jy);
+          const int k = base % kMaxSobolPairs;
+          if (k == 0)
+            ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)),
+                                   std::min(kMaxSobolPairs, count - base), jx, jy);
           for (int j = 0; j < batch; ++j) {
-            const Vec2 p = grid.point(base + j, Vec2(jx[j], jy[j]));
+            const Vec2 p = grid.point(base + j, Vec2(jx[k + j], jy[k + j]));
             u[0][j] = p.x;
             u[1][j] = p.y;
           }

@@ -113,23 +113,27 @@ TEST_CASE("sampling: the tabled dimension keys are the mixed ones, inside the ta
       }
 }
 
-TEST_CASE("sampling: get2_batch gives get2's numbers, eight at a time, both sequences", "[sampling]") {
+TEST_CASE("sampling: get2_batch gives get2's numbers, 1 to 16 at a time, both sequences", "[sampling]") {
   for (const SampleSequence sequence : {SampleSequence::kSobol, SampleSequence::kIndependent})
     for (const uint32_t sample : {0u, 1u, 5u, 255u, 70000u})
       for (const uint64_t path : std::initializer_list<uint64_t>{0, 3, 16, 0x9e3779b97f4a7c15ull})
         for (const uint64_t first : {light_dimension(0, 0), light_dimension(0, 8), light_dimension(0, 12),
-                                     light_dimension(2, 0), light_dimension(1, 1016)}) {
-          const SampleStream stream(11, 3, 4567, sample, sequence);
-          float x[8], y[8];
-          stream.get2_batch(SamplePurpose::kLight, path, first, x, y);
-          int differ = 0;
-          for (int j = 0; j < 8; ++j) {
-            const Vec2 u = stream.get2(SamplePurpose::kLight, path, first + static_cast<uint64_t>(j));
-            differ += u.x != x[j] || u.y != y[j];
+                                     light_dimension(2, 0), light_dimension(1, 1016)})
+          for (const int count : {1, 5, 8, 9, 16}) {
+            const SampleStream stream(11, 3, 4567, sample, sequence);
+            float x[kMaxSobolPairs + 1], y[kMaxSobolPairs + 1];
+            x[count] = y[count] = -1.0f;  // past the count: left alone
+            stream.get2_batch(SamplePurpose::kLight, path, first, count, x, y);
+            int differ = 0;
+            for (int j = 0; j < count; ++j) {
+              const Vec2 u = stream.get2(SamplePurpose::kLight, path, first + static_cast<uint64_t>(j));
+              differ += u.x != x[j] || u.y != y[j];
+            }
+            INFO("sample " << sample << ", path " << path << ", first index " << first << ", count " << count);
+            CHECK(differ == 0);
+            CHECK(x[count] == -1.0f);
+            CHECK(y[count] == -1.0f);
           }
-          INFO("sample " << sample << ", path " << path << ", first index " << first);
-          CHECK(differ == 0);
-        }
 }
 
 TEST_CASE("Owen-Sobol: eight lanes of reverse_bits and upward_hash are the scalar ones", "[sampling]") {
