@@ -70,43 +70,56 @@ class PointBatch {
 
 }  // namespace
 
-// The (cells + 1)^2 lattice points of one pixel, and which of them its cells used. A point
-// belongs to the current pixel when its stamp is the pixel's generation, so starting a pixel
-// clears nothing.
-struct AdaptiveSampler::PixelLattice {
-  int x0 = 0, y0 = 0;  // the pixel's top-left corner in key units
-  int side = 0;        // points per side: cells + 1
-  int step = 0;        // key units between neighbouring points
-  int deepest = 0;     // the deepest cell the pixel's value averages
-  int used = 0;        // points its cells used
+// The lattice points of one row of a tile's pixels: n + 1 rows of width x n + 1 points, in which
+// neighbouring pixels share their edges in place (handing each pixel's edges on by copies cost
+// most of the sampler's own time), and the pixel whose cells are being refined.
+struct AdaptiveSampler::RowLattice {
+  int n = 0;                          // cells per pixel side
+  int columns = 0;                    // points per row
+  int step = 0;                       // key units between neighbouring points
+  std::vector<LatticeSample> points;  // n + 1 rows of `columns`
+  std::vector<uint8_t> known;         // traced in this row, or taken from a border
+  // The current pixel: its top-left corner in key units and its first column, the deepest cell
+  // its value averages, and the points its cells used (stamped with the pixel's generation in
+  // `counted`, pixel-local, so that starting a pixel clears nothing).
+  int x0 = 0, y0 = 0, column = 0;
+  int deepest = 0, used = 0;
   uint32_t generation = 0;
-  std::vector<LatticeSample> points;
-  std::vector<uint32_t> known, counted;  // stamps: traced or handed in; counted in `used`
+  std::vector<uint32_t> counted;
 
-  explicit PixelLattice(int cells) : side(cells + 1), step(kKeyCells / cells) {
-    const size_t n = static_cast<size_t>(side) * static_cast<size_t>(side);
-    points.resize(n);
-    known.resize(n, 0);
-    counted.resize(n, 0);
-  }
-  size_t index(int i, int j) const { return static_cast<size_t>(j) * static_cast<size_t>(side) + i; }
-  void start_pixel(int x, int y) {
+  RowLattice(int cells, int width)
+      : n(cells),
+        columns(width * cells + 1),
+        step(kKeyCells / cells),
+        points(static_cast<size_t>(cells + 1) * static_cast<size_t>(columns)),
+        known(points.size(), 0),
+        counted(static_cast<size_t>(cells + 1) * static_cast<size_t>(cells + 1), 0) {}
+  // Point `c` of row j.
+  size_t at(int c, int j) const { return static_cast<size_t>(j) * static_cast<size_t>(columns) + c; }
+  // The current pixel's point (i, j), i and j in [0, n].
+  size_t index(int i, int j) const { return at(column + i, j); }
+  void start_pixel(int x, int y, int first_column) {
     x0 = x * kKeyCells;
     y0 = y * kKeyCells;
+    column = first_column;
     deepest = used = 0;
     ++generation;
   }
-  // A point a neighbour traced (ignored if it did not).
-  void hand_in(int i, int j, const LatticeSample& s) {
-    if (!s.known) return;
-    points[index(i, j)] = s;
-    known[index(i, j)] = generation;
+  // Counts the current pixel's point (i, j) in `used`, once.
+  void use(int i, int j) {
+    uint32_t& stamp = counted[static_cast<size_t>(j) * static_cast<size_t>(n + 1) + i];
+    if (stamp == generation) return;
+    stamp = generation;
+    ++used;
   }
-  // The point for a neighbour: unknown unless this pixel traced it or was handed it. Written in
-  // place: building a temporary LatticeSample stalls on store forwarding (measured: half the
-  // sampler's own time).
-  void hand_out(int i, int j, LatticeSample& to) const {
-    if (known[index(i, j)] == generation) to = points[index(i, j)];
+  // Point `c` of row j from a border (ignored if the neighbour did not trace it), and back out.
+  void take(int c, int j, const LatticeSample& s) {
+    if (!s.known) return;
+    points[at(c, j)] = s;
+    known[at(c, j)] = 1;
+  }
+  void give(int c, int j, LatticeSample& to) const {
+    if (known[at(c, j)]) to = points[at(c, j)];
     else to.known = false;
   }
 };
@@ -138,27 +151,24 @@ bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, con
 }
 
 // The cell with top-left lattice point (i, j) and `size` lattice steps per side, at `depth`.
-Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, float share,
-                                     Aovs* layers, PixelContext& ctx) const {
+Vec3 AdaptiveSampler::refine_corners(RowLattice& lattice, int i, int j, int size, int depth, float share, Aovs* layers,
+                                     PixelContext& ctx) const {
   // Each point is traced once, by the first cell that needs it (the row's pixel corners and a
   // split's new points are traced ahead, a packet at a time).
   const auto trace_ahead = [&](PointBatch& batch, int ci, int cj) {
     const size_t k = lattice.index(ci, cj);
-    if (lattice.known[k] == lattice.generation) return;
+    if (lattice.known[k]) return;
     batch.add(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, &lattice.points[k]);
-    lattice.known[k] = lattice.generation;
+    lattice.known[k] = 1;
   };
   const auto corner = [&](int ci, int cj) -> const LatticeSample& {
     const size_t k = lattice.index(ci, cj);
-    if (lattice.known[k] != lattice.generation) {
+    if (!lattice.known[k]) {
       PointBatch one(ctx);
       trace_ahead(one, ci, cj);
       one.flush();
     }
-    if (lattice.counted[k] != lattice.generation) {
-      lattice.counted[k] = lattice.generation;
-      ++lattice.used;
-    }
+    lattice.use(ci, cj);
     return lattice.points[k];
   };
   const LatticeSample& a = corner(i, j);
@@ -188,62 +198,55 @@ Vec3 AdaptiveSampler::refine_corners(PixelLattice& lattice, int i, int j, int si
 
 bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out) {
   const int n = cells_;
-  // Lattice points along the bottom edge of the pixel row above (at first the tile's top border),
-  // and along the right edge of the pixel to the left (at first the tile's left border).
+  // Lattice points along the tile's top border (the bottom of the tile above) and along its left
+  // border (the right of the tile to the left); this tile's right border, filled row by row.
   std::vector<LatticeSample> above =
       take_border(bottom_borders_, grid_.above(tile.index), static_cast<size_t>(tile.width() * n + 1));
   const std::vector<LatticeSample> left_border =
       take_border(right_borders_, grid_.left(tile.index), static_cast<size_t>(tile.height() * n + 1));
   std::vector<LatticeSample> right_border(static_cast<size_t>(tile.height() * n + 1));
-  std::vector<LatticeSample> left(static_cast<size_t>(n + 1));
-  std::vector<LatticeSample> bottom(static_cast<size_t>(tile.width() + 1));  // the pixel row's lower corners
-  PixelLattice lattice(n);
+  RowLattice lattice(n, tile.width());
+  const int columns = lattice.columns;
+  for (int c = 0; c < columns; ++c) lattice.take(c, 0, above[static_cast<size_t>(c)]);
 
   for (int y = tile.y0; y < tile.y1; ++y) {
     const int row = (y - tile.y0) * n;
-    std::copy_n(left_border.begin() + row, n + 1, left.begin());
+    // Row 0 holds the bottom of the pixel row above; the rest starts unknown but for the left
+    // border's points.
+    std::fill(lattice.known.begin() + columns, lattice.known.end(), uint8_t{0});
+    for (int j = 0; j <= n; ++j) lattice.take(0, j, left_border[static_cast<size_t>(row + j)]);
     // The row's pixel corners, which every pixel's first cell needs, traced a packet of
-    // neighbours at a time: the upper ones that no tile or row above traced (the first may be
-    // the left tile's), and the lower ones (the first, again, may be the left tile's).
+    // neighbours at a time: the upper ones that no tile or row above traced, then the lower ones.
     {
       PointBatch corners(ctx);
-      if (!above[0].known) above[0] = left[0];
-      for (int x = tile.x0; x <= tile.x1; ++x) {
-        LatticeSample& upper = above[static_cast<size_t>((x - tile.x0) * n)];
-        if (!upper.known) corners.add(int64_t{x} * kKeyCells, int64_t{y} * kKeyCells, &upper);
-      }
-      bottom[0] = left[static_cast<size_t>(n)];
-      for (int x = tile.x0; x <= tile.x1; ++x) {
-        LatticeSample& lower = bottom[static_cast<size_t>(x - tile.x0)];
-        if (x == tile.x0 && lower.known) continue;
-        corners.add(int64_t{x} * kKeyCells, int64_t{y + 1} * kKeyCells, &lower);
-      }
+      for (int j = 0; j <= n; j += n)
+        for (int x = tile.x0; x <= tile.x1; ++x) {
+          const size_t k = lattice.at((x - tile.x0) * n, j);
+          if (lattice.known[k]) continue;
+          corners.add(int64_t{x} * kKeyCells, (int64_t{y} + j / n) * kKeyCells, &lattice.points[k]);
+          lattice.known[k] = 1;
+        }
       corners.flush();
     }
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (ctx.cancelled()) return false;
-      const int column = (x - tile.x0) * n;
-      lattice.start_pixel(x, y);
-      // The corner they share is known to the left neighbour, the row above, both or neither.
-      for (int k = 0; k <= n; ++k) {
-        lattice.hand_in(k, 0, above[static_cast<size_t>(column + k)]);
-        lattice.hand_in(0, k, left[static_cast<size_t>(k)]);
-      }
-      lattice.hand_in(0, n, bottom[static_cast<size_t>(x - tile.x0)]);
-      lattice.hand_in(n, n, bottom[static_cast<size_t>(x - tile.x0 + 1)]);
+      lattice.start_pixel(x, y, (x - tile.x0) * n);
       FilmPixel& pixel = out.at(x, y);
       pixel.color = refine_corners(lattice, 0, 0, n, 0, 1.0f, ctx.aovs ? &pixel.aovs : nullptr, ctx);
       pixel.depth = static_cast<uint8_t>(lattice.deepest);
       pixel.samples = static_cast<uint16_t>(lattice.used);
-      for (int k = 0; k <= n; ++k) {
-        lattice.hand_out(k, n, above[static_cast<size_t>(column + k)]);
-        lattice.hand_out(n, k, left[static_cast<size_t>(k)]);
-      }
     }
-    std::copy_n(left.begin(), n + 1, right_border.begin() + row);
+    for (int j = 0; j <= n; ++j) lattice.give(columns - 1, j, right_border[static_cast<size_t>(row + j)]);
+    // The row's bottom is the next row's top.
+    std::copy_n(lattice.points.begin() + static_cast<std::ptrdiff_t>(lattice.at(0, n)), columns,
+                lattice.points.begin());
+    std::copy_n(lattice.known.begin() + static_cast<std::ptrdiff_t>(lattice.at(0, n)), columns, lattice.known.begin());
     ctx.row_done(tile.width());
   }
-  if (grid_.below(tile.index) >= 0) bottom_borders_[static_cast<size_t>(tile.index)] = std::move(above);
+  if (grid_.below(tile.index) >= 0) {
+    for (int c = 0; c < columns; ++c) lattice.give(c, 0, above[static_cast<size_t>(c)]);
+    bottom_borders_[static_cast<size_t>(tile.index)] = std::move(above);
+  }
   if (grid_.right(tile.index) >= 0) right_borders_[static_cast<size_t>(tile.index)] = std::move(right_border);
   return true;
 }

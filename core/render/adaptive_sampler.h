@@ -40,12 +40,12 @@ class AdaptiveSampler final : public PixelSampler {
   bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override;
 
  private:
-  struct PixelLattice;
+  struct RowLattice;
   bool render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out);
   bool render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out);
   // Each returns the cell's radiance; `share` is its area as a fraction of the pixel's, with
   // which its samples' layers go into `layers` (null: none asked).
-  Vec3 refine_corners(PixelLattice& lattice, int i, int j, int size, int depth, float share, Aovs* layers,
+  Vec3 refine_corners(RowLattice& lattice, int i, int j, int size, int depth, float share, Aovs* layers,
                       PixelContext& ctx) const;
   Vec3 refine_centres(int x, int y, int size, int depth, float share, FilmPixel& pixel, PixelContext& ctx) const;
   bool differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c, const LatticeSample& d) const;
