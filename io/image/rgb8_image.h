@@ -19,13 +19,14 @@ struct Rgb8Image {
 // 8-bit output: each linear channel through the display transform (exposure and tone curve,
 // core/tone_map.h; by default none), clamped to [0, 1] (NaN counts as 0), encoded with the sRGB
 // transfer function and rounded to the nearest of 256 levels (srgb8 in core/color.h, an exact
-// table).
-Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display = {});
+// table). On up to `threads` threads, the same bytes.
+Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display = {}, unsigned threads = 1);
 
 class ViewTransform;
 // The same through an OpenColorIO view when one is given (io/image/view_transform.h): the linear
 // radiance times 2^exposure, through the view (whose output is already display-encoded), rounded
 // to 256 levels; the tone curve is not applied. Without a view: encode_srgb8.
-Rgb8Image encode_display8(const Image& image, const DisplayTransform& display, const ViewTransform* view);
+Rgb8Image encode_display8(const Image& image, const DisplayTransform& display, const ViewTransform* view,
+                          unsigned threads = 1);
 
 }  // namespace rt
