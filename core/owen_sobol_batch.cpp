@@ -36,8 +36,8 @@ template <int K>
 }  // namespace
 
 // GCC only (clang and the sanitizers get the baseline: the same numbers). No AVX-512 clone: GCC's
-// code for it (512-bit multiplies, one 16-lane vector or two 8-lane ones) made csg.json 1.09x the
-// time of AVX2's, as wide multiplies lower the clock for the whole render.
+// code for it (512-bit multiplies, as one 16-lane vector or two 8-lane ones) made csg.json 1.09x
+// the time of AVX2's.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif

@@ -8,8 +8,8 @@ namespace rt {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point,
-                             const float (&u)[2][kPacketSize], RectLightBatch& out) {
+void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point, const float (&u)[2][kPacketSize],
+                      RectLightBatch& out) {
   const Vec3 c = light.corner, e1 = light.edge1, e2 = light.edge2, n = frame.unit_normal;
   const Float8 s = load8(u[0]), t = load8(u[1]);
   // light.point(u) - point, as glm orders it: (corner + u.x edge1) + u.y edge2.

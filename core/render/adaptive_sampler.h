@@ -5,8 +5,8 @@
 //
 // positions = corners: samples lie on a lattice of 2^max_depth x 2^max_depth cells per pixel,
 // and a lattice point is traced once however many cells, pixels and tiles it touches. Within a
-// tile, pixels go row by row and each hands its bottom and right edges to the pixels below and
-// right of it; between tiles, a finished tile hands its bottom and right borders to the tiles
+// tile, a row of pixels shares one lattice (neighbours' edges in place), and a row's bottom is the
+// next row's top; between tiles, a finished tile hands its bottom and right borders to the tiles
 // below and right of it, which the renderer starts only once their left and upper neighbours
 // are done (shares_tile_borders). Each point's random numbers (its lens sample, say) are keyed
 // by its global lattice position, so the image does not depend on threads or tile size.
