@@ -11,6 +11,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 
@@ -93,6 +94,7 @@ class SampleStream {
       }
       return;
     }
+    assert(count <= kMaxSobolPairs);
     uint64_t dimension[kMaxSobolPairs];
     for (int j = 0; j < count; ++j)
       dimension[j] = tabled_dimension_key(purpose, path, first + static_cast<uint64_t>(j));

@@ -110,9 +110,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
       const StratifiedGrid grid(count);
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
+      // The numbers of samples [base - k, base - k + kMaxSobolPairs), k = base % kMaxSobolPairs.
       static_assert(kMaxSobolPairs % kPacketSize == 0);
-      float jx[kMaxSobolPairs],
-          jy[kMaxSobolPairs];  // the numbers of samples [base - k, ...), k = base % kMaxSobolPairs
+      float jx[kMaxSobolPairs], jy[kMaxSobolPairs];
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};

@@ -18,9 +18,8 @@ float pixel_relative_error(double sum, double sum_squares, int n) {
 }
 
 FilmPixel PathSampler::sample_pixel(int x, int y, PixelState& state, int end, PixelContext& ctx) const {
-  const RenderSettings& s = ctx.settings;
   const int spp = std::max(1, settings_.samples_per_pixel);
-  const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(s.width) + static_cast<uint64_t>(x);
+  const uint64_t pixel = ctx.pixel_point(x, y);
   CameraBatch batch;
   int& n = state.n;
   while (!state.stopped && n < std::min(end, spp)) {

@@ -85,9 +85,7 @@ class UniformSampler final : public PixelSampler {
       };
       for (int x = tile.x0; x < tile.x1; ++x) {
         if (ctx.cancelled()) return false;
-        // Keyed by the pixel's index: the same numbers whichever thread traces it.
-        const uint64_t pixel =
-            static_cast<uint64_t>(y) * static_cast<uint64_t>(ctx.settings.width) + static_cast<uint64_t>(x);
+        const uint64_t pixel = ctx.pixel_point(x, y);
         for (int j = 0; j < n_; ++j)
           for (int i = 0; i < n_; ++i) {
             CameraSample& c = batch.add(ctx, pixel, static_cast<uint32_t>(j * n_ + i), static_cast<uint32_t>(x));

@@ -38,6 +38,11 @@ struct PixelContext {
   const Camera& view() const { return camera ? *camera : scene.camera; }
   // A sample point's key (a pixel's index, a lattice point) with the eye in its top bits.
   uint64_t point_key(uint64_t point) const { return point | (static_cast<uint64_t>(eye) << 62); }
+  // Pixel (x, y)'s index in the image, the point its camera samples are keyed by: the same
+  // numbers whichever thread or tile traces it.
+  uint64_t pixel_point(int x, int y) const {
+    return static_cast<uint64_t>(y) * static_cast<uint64_t>(settings.width) + static_cast<uint64_t>(x);
+  }
 
   bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
   void row_done(int pixels) const {
