@@ -14,15 +14,13 @@
 
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_binary_tree.h"
+#include "core/accel/bvh_bins.h"
 #include "core/accel/simd.h"
 #include "core/parallel_for.h"
 
 namespace rt {
 namespace {
 
-constexpr int kBins = 32;
-
-constexpr float kTraversalCost = 1.0f;        // cost of a node visit relative to one triangle quad's test
 constexpr uint32_t kMaxLeafSize = 8;          // larger leaves are always split (<= BvhRef::kMaxLeafCount)
 constexpr int kSahDepthLimit = 32;            // deeper nodes use median splits, so depth < Bvh::kMaxDepth
 constexpr uint32_t kParallelMinPrims = 4096;  // smaller subtrees are not worth starting a thread
@@ -55,83 +53,11 @@ struct alignas(32) BuildPrim {
   Float4 centroid() const { return splat4(0.5f) * lo + splat4(0.5f) * hi; }
 };
 
-// No default member initialisers: arrays of bins are filled only as far as a node needs.
-struct Box4 {
-  Float4 lo, hi;
-  static Box4 empty() { return Box4{splat4(kInfinity), splat4(-kInfinity)}; }
-  void extend(Float4 l, Float4 h) {
-    lo = min4(lo, l);
-    hi = max4(hi, h);
-  }
-  void extend(const Box4& b) { extend(b.lo, b.hi); }
-  float half_area() const {
-    const Float4 e = hi - lo;
-    return e[0] < 0.0f ? 0.0f : e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
-  }
-  // In double: extents up to 2 x 3.4e38 and their products stay finite. For nodes whose float
-  // area overflows (extents beyond ~1.8e19), so that SAH costs stay comparable there too.
-  double half_area_wide() const { return rt::half_area(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]); }
-  Aabb aabb() const { return Aabb{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
-};
-
 struct Range {
   uint32_t begin = 0, end = 0;
   Box4 bounds = Box4::empty(), centroids = Box4::empty();
   uint32_t count() const { return end - begin; }
 };
-
-// Maps centroids to bins: bin = min(count - 1, (c/2 - lo/2) * scale), per axis at once. Halved
-// coordinates make every difference finite (|c/2 - lo/2| <= 3.4e38) for any finite input, so
-// the product is a finite number in [0, count] and the clamp happens before the conversion to
-// int: no NaN or infinity can become an out-of-range bin. An axis whose centroids (nearly)
-// coincide gets scale 0: everything lands in bin 0 and the axis is not split. Small nodes get
-// fewer bins: with a handful of primitives, more bins than primitives only costs time.
-struct Binner {
-  Float4 half_lo, scale, last;
-  int count;
-  Binner(const Box4& centroids, uint32_t prims)
-      : half_lo(splat4(0.5f) * centroids.lo), count(static_cast<int>(std::clamp<uint32_t>(prims, 4, kBins))) {
-    const Float4 half_extent = splat4(0.5f) * centroids.hi - half_lo;
-    for (int a = 0; a < 3; ++a) {
-      const float s = half_extent[a] > 0.0f ? static_cast<float>(count) / half_extent[a] : 0.0f;
-      scale[a] = std::isfinite(s) ? s : 0.0f;
-    }
-    scale[3] = 0.0f;
-    last = splat4(static_cast<float>(count - 1));
-  }
-  Int4 bins(Float4 c) const { return __builtin_convertvector(min4((splat4(0.5f) * c - half_lo) * scale, last), Int4); }
-  bool usable(int axis) const { return scale[axis] > 0.0f; }
-};
-
-struct Bin {
-  Box4 bounds;
-  uint32_t count;
-};
-
-struct Split {
-  int axis = -1;
-  int bin = 0;  // primitives in bins [0, bin) go left
-  double cost = kInfinity;
-  Box4 left_bounds = Box4::empty(), right_bounds = Box4::empty();
-};
-
-// What testing one top-level primitive costs, in node visits. An analytic shape carries the ray
-// into its object space (18 multiplies) before its own test, a mesh instance does that and walks
-// its BVH, a CSG solid finds every operand's spans; one node visit tests eight boxes at once.
-// Counted as 1 (a triangle's cost), the SAH kept the Cornell box's five walls and two blocks in
-// one leaf, whose flat boxes a split separates: every ray tested all seven. At 2 the path-traced
-// box renders in 0.70x the time (the same bytes: the closest hit does not depend on the tree; 4
-// and 8 were no faster), other shipped scenes unchanged (docs/benchmark.md). A shadow ray through
-// glass multiplies its crossings' transmittances in the tree's order, which may round apart by
-// an ulp: panorama.json moved by at most 1 level in a few pixels.
-constexpr double kObjectTestCost = 2.0;
-
-// A leaf's cost in node visits: `block` primitives a test (4: a mesh's triangles, as quads), or
-// one primitive a test (block 1: a set holding shapes, instances or CSG solids).
-double leaf_tests(uint32_t count, uint32_t block) {
-  if (block == 1) return kObjectTestCost * count;
-  return static_cast<double>((count + block - 1) / block);
-}
 
 class BinaryBuilder {
  public:
@@ -150,7 +76,7 @@ class BinaryBuilder {
     const uint32_t n = range.count();
     Split split;
     if (n > 1 && depth < kSahDepthLimit) split = find_split(range);
-    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= blocks(n);
+    const bool sah_prefers_leaf = split.axis < 0 || split.cost >= leaf_tests(n, block_);
     if (n == 1 || (n <= kMaxLeafSize && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
       out[index].count = n;
       return;
@@ -181,8 +107,6 @@ class BinaryBuilder {
   }
 
  private:
-  using Bins = Bin[3][kBins];
-
   // The primitives of [begin, end) added to `bins`.
   void bin(uint32_t begin, uint32_t end, const Binner& binner, Bins& bins) const {
     for (uint32_t i = begin; i < end; ++i) {
@@ -232,44 +156,9 @@ class BinaryBuilder {
 
   Split find_split(const Range& range) {
     const Binner binner(range.centroids, range.count());
-    const int nb = binner.count;
     Bins bins;
     bin_all(range, binner, bins);
-    Split best;
-    // Every box below is inside the node's: if its float area is finite, so are theirs.
-    const bool wide = !std::isfinite(range.bounds.half_area());
-    const float inv_area = 1.0f / std::max(range.bounds.half_area(), 1e-30f);
-    const double inv_area_wide = 1.0 / std::max(range.bounds.half_area_wide(), 1e-300);
-    for (int a = 0; a < 3; ++a) {
-      if (!binner.usable(a)) continue;  // all centroids share this coordinate
-      // Sweep from the right, keeping the bounds of everything right of each plane.
-      Box4 right_bounds[kBins];
-      uint32_t right_count[kBins];
-      Box4 acc = Box4::empty();
-      uint32_t count = 0;
-      for (int k = nb - 1; k > 0; --k) {
-        acc.extend(bins[a][k].bounds);
-        count += bins[a][k].count;
-        right_bounds[k] = acc;
-        right_count[k] = count;
-      }
-      acc = Box4::empty();
-      count = 0;
-      for (int k = 1; k < nb; ++k) {
-        acc.extend(bins[a][k - 1].bounds);
-        count += bins[a][k - 1].count;
-        if (count == 0 || right_count[k] == 0) continue;
-        const double cost =
-            wide ? kTraversalCost + (acc.half_area_wide() * blocks(count) +
-                                     right_bounds[k].half_area_wide() * blocks(right_count[k])) *
-                                        inv_area_wide
-                 : kTraversalCost + (acc.half_area() * static_cast<float>(blocks(count)) +
-                                     right_bounds[k].half_area() * static_cast<float>(blocks(right_count[k]))) *
-                                        inv_area;
-        if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
-      }
-    }
-    return best;
+    return sah_sweep(bins, binner.count, range.bounds, block_);
   }
 
   // Hoare-style partition by bin; gathers each side's centroid bounds on the way.
@@ -327,9 +216,6 @@ class BinaryBuilder {
     return false;
   }
 
-  // With the block a constant in each branch: a division by 4 is a shift (the SAH sweep asks twice
-  // a plane).
-  double blocks(uint32_t count) const { return block_ == 4 ? leaf_tests(count, 4) : leaf_tests(count, block_); }
   static constexpr unsigned kMaxBinWorkers = 8;
   BuildPrim* prims_;
   std::atomic<unsigned> spare_threads_;
