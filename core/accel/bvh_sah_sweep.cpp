@@ -68,7 +68,8 @@ Split sweep(const Bins& bins, int nb, float inv_area, uint32_t block) {
   for (int a = 0; a < 3; ++a)
     if (best[a] < split.cost) split = Split{a, best_bin[a], best[a], Box4::empty(), Box4::empty()};
   if (split.axis >= 0)
-    for (int k = 0; k < nb; ++k) (k < split.bin ? split.left_bounds : split.right_bounds).extend(bins[split.axis][k].bounds);
+    for (int k = 0; k < nb; ++k)
+      (k < split.bin ? split.left_bounds : split.right_bounds).extend(bins[split.axis][k].bounds);
   return split;
 }
 
@@ -93,10 +94,9 @@ Split sweep_wide(const Bins& bins, int nb, double inv_area, uint32_t block) {
       acc.extend(bins[a][k - 1].bounds);
       count += bins[a][k - 1].count;
       if (count == 0 || right_count[k] == 0) continue;
-      const double cost =
-          kTraversalCost + (acc.half_area_wide() * leaf_tests(count, block) +
-                            right_bounds[k].half_area_wide() * leaf_tests(right_count[k], block)) *
-                               inv_area;
+      const double cost = kTraversalCost + (acc.half_area_wide() * leaf_tests(count, block) +
+                                            right_bounds[k].half_area_wide() * leaf_tests(right_count[k], block)) *
+                                               inv_area;
       if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
     }
   }
