@@ -61,7 +61,7 @@ struct Range {
 
 class BinaryBuilder {
  public:
-  // `spare_threads`: how many more threads may run at once. A large node hands its left subtree
+  // `spare_threads`: how many more threads may run at once. A large node hands its right subtree
   // to a new thread while one is spare, and the thread is spare again when that subtree is done,
   // so work moves to wherever it remains. Every handed-off subtree is built into its own array
   // and spliced back in place, which gives exactly the array a single thread would write.
@@ -85,18 +85,18 @@ class BinaryBuilder {
     if (split.axis >= 0) partition(range, split, left, right);
     else median_split(range, left, right);
     if (n >= kParallelMinPrims && take_spare_thread()) {
-      // Room for the most nodes a subtree can have (2m - 1 for m primitives): never regrown.
-      std::vector<BinaryNode> left_nodes, right_nodes;
-      left_nodes.reserve(2 * static_cast<size_t>(left.count()));
+      // The right subtree on the new thread, into an array of its own with room for the most
+      // nodes it can have (2m - 1 for m primitives: never regrown), appended once the left one
+      // is in place; the left subtree goes straight into `out`, so only half is ever copied.
+      std::vector<BinaryNode> right_nodes;
       right_nodes.reserve(2 * static_cast<size_t>(right.count()));
       {
         std::jthread worker([&] {
-          build(left, depth + 1, left_nodes);
+          build(right, depth + 1, right_nodes);
           ++spare_threads_;
         });
-        build(right, depth + 1, right_nodes);
+        build(left, depth + 1, out);
       }
-      splice(out, left_nodes);
       out[index].offset = static_cast<uint32_t>(out.size());
       splice(out, right_nodes);
     } else {
