@@ -48,9 +48,9 @@ class FilmTile {
 // The pixels of a window of the image (all of it unless a render asked for part): (0, 0) of
 // `color` and of the channels is the window's corner (x0, y0) of the image.
 struct Film {
-  Image color;                    // linear RGB
-  std::vector<uint16_t> samples;  // per pixel, row-major
-  std::vector<uint8_t> depth;     // per pixel, row-major
+  Image color;                     // linear RGB
+  ZeroedVector<uint16_t> samples;  // per pixel, row-major
+  ZeroedVector<uint8_t> depth;     // per pixel, row-major
   // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
   Image albedo, normal, emission;
   std::vector<float> distance;
@@ -92,13 +92,13 @@ struct Film {
     while (samples.size() < n) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return false;
       const size_t next = std::min(n, samples.size() + kSlice);
-      color.pixels.resize(next, Vec3(0.0f));
-      samples.resize(next, 0);
-      depth.resize(next, 0);
+      color.pixels.resize(next);  // zero, not written (ZeroedVector)
+      samples.resize(next);
+      depth.resize(next);
       if (aovs) {
-        albedo.pixels.resize(next, Vec3(0.0f));
-        normal.pixels.resize(next, Vec3(0.0f));
-        emission.pixels.resize(next, Vec3(0.0f));
+        albedo.pixels.resize(next);
+        normal.pixels.resize(next);
+        emission.pixels.resize(next);
         distance.resize(next, Aovs::kFarAway);
         variance.resize(next, 0.0f);
       }

@@ -32,7 +32,7 @@ Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display, unsi
 Rgb8Image encode_display8(const Image& image, const DisplayTransform& display, const ViewTransform* view,
                           unsigned threads) {
   if (!view) return encode_srgb8(image, display, threads);
-  std::vector<Vec3> pixels = image.pixels;
+  std::vector<Vec3> pixels(image.pixels.begin(), image.pixels.end());
   if (display.exposure != 0.0f)
     for (Vec3& p : pixels) p *= std::exp2(display.exposure);
   view->apply(pixels);

@@ -1,0 +1,47 @@
+// ZeroedVector (core/zeroed_vector.h): growth without a value gives zeros, whatever the vector held
+// before in that memory; values asked for are written; the film's channels start at zero.
+#include <catch2/catch.hpp>
+
+#include "core/render/film.h"
+#include "core/zeroed_vector.h"
+
+using namespace rt;
+
+TEST_CASE("zeroed vector: new elements are zero after clear, shrink and reallocation", "[zeroed]") {
+  ZeroedVector<float> v(1000);
+  for (const float x : v) REQUIRE(x == 0.0f);
+  for (float& x : v) x = 7.5f;
+  v.resize(10);  // the 990 given up are zeroed
+  v.resize(1000);
+  CHECK(v[9] == 7.5f);
+  for (size_t i = 10; i < v.size(); ++i) REQUIRE(v[i] == 0.0f);
+  v.clear();  // capacity kept, bytes zeroed
+  v.resize(1000);
+  for (const float x : v) REQUIRE(x == 0.0f);
+  for (float& x : v) x = -1.0f;
+  v.resize(5000);  // reallocated: the old values moved, the rest zero
+  CHECK(v[999] == -1.0f);
+  for (size_t i = 1000; i < v.size(); ++i) REQUIRE(v[i] == 0.0f);
+  v.resize(6000, 2.0f);  // a value asked for is written
+  CHECK(v[5999] == 2.0f);
+  v.pop_back();
+  v.push_back(3.0f);
+  CHECK(v.back() == 3.0f);
+}
+
+TEST_CASE("zeroed vector: a film reallocated over a rendered one starts at zero", "[zeroed]") {
+  Film film(64, 48);
+  for (Vec3& p : film.color.pixels) p = Vec3(0.25f, 0.5f, 1.0f);
+  for (uint16_t& n : film.samples) n = 9;
+  for (uint8_t& d : film.depth) d = 3;
+  REQUIRE(film.allocate(32, 24, nullptr));  // smaller
+  REQUIRE(film.allocate(80, 60, nullptr));  // larger again: reallocated
+  for (const Vec3& p : film.color.pixels) REQUIRE(p == Vec3(0.0f));
+  for (const uint16_t n : film.samples) REQUIRE(n == 0);
+  for (const uint8_t d : film.depth) REQUIRE(d == 0);
+  for (Vec3& p : film.color.pixels) p = Vec3(1.0f);
+  REQUIRE(film.allocate(80, 60, nullptr, true));  // the same size: the memory reused
+  for (const Vec3& p : film.color.pixels) REQUIRE(p == Vec3(0.0f));
+  for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
+  CHECK(Image(3, 2).pixels == ZeroedVector<Vec3>(6, Vec3(0.0f)));
+}
