@@ -2,6 +2,7 @@
 // (core/accel/bvh_build.cpp bins, core/accel/bvh_sah_sweep.cpp sweeps). Internal to core/accel.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
