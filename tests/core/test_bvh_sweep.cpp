@@ -32,10 +32,10 @@ Split scalar_sweep(const Bins& bins, int nb, const Box4& bounds, uint32_t block)
       acc.extend(bins[a][k - 1].bounds);
       count += bins[a][k - 1].count;
       if (count == 0 || right_count[k] == 0) continue;
-      const double cost = kTraversalCost + (acc.half_area() * static_cast<float>(leaf_tests(count, block)) +
-                                            right_bounds[k].half_area() *
-                                                static_cast<float>(leaf_tests(right_count[k], block))) *
-                                               inv_area;
+      const double cost =
+          kTraversalCost + (acc.half_area() * static_cast<float>(leaf_tests(count, block)) +
+                            right_bounds[k].half_area() * static_cast<float>(leaf_tests(right_count[k], block))) *
+                               inv_area;
       if (cost < best.cost) best = Split{a, k, cost, acc, right_bounds[k]};
     }
   }
