@@ -131,7 +131,7 @@ class Bvh {
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
   const std::vector<MeshInstance>& instances() const { return instances_; }
   const std::vector<CsgObject>& csgs() const { return csgs_; }
-  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  const FillVector<BvhNode>& nodes() const { return nodes_; }
   // The instruction set whose traversal intersect() and occluded() run.
   Isa isa() const { return kernels_->isa; }
   uint32_t root() const { return root_; }
@@ -174,7 +174,7 @@ class Bvh {
   std::vector<AnalyticShape> shapes_;
   std::vector<MeshInstance> instances_;
   std::vector<CsgObject> csgs_;
-  std::vector<BvhNode> nodes_;
+  FillVector<BvhNode> nodes_;
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;
   double binary_sah_cost_ = 0.0;

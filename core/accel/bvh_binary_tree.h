@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/accel/bvh.h"
+#include "core/fill_vector.h"
 
 namespace rt {
 
@@ -28,7 +29,7 @@ inline double half_area(const Aabb& b) { return half_area(b.lo.x, b.hi.x, b.lo.y
 // children, then repeatedly replaces the interior child with the largest surface area by that
 // child's two children. Returns the root's reference. Nodes come depth first, a node before its
 // children's subtrees in slot order, whatever the thread count: the root's children's subtrees
-// are collapsed on `threads` threads into arrays of their own, then appended in slot order.
-uint32_t collapse_binary_tree(const std::vector<BinaryNode>& binary, unsigned threads, std::vector<BvhNode>& out);
+// are collapsed on `threads` threads, each into its place (its nodes counted first).
+uint32_t collapse_binary_tree(const std::vector<BinaryNode>& binary, unsigned threads, FillVector<BvhNode>& out);
 
 }  // namespace rt
