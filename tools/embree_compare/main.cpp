@@ -1,9 +1,9 @@
 // embree_compare [MODEL] [--rays FILE] [--repeats N]: rtcli's BVH and Embree 3 on exactly the
 // same triangles and the same rays (cli/bench/ray_sets.h, or a file from `rtcli bench
 // --save-rays`), timed alternately in one process on 1 thread and on all, each figure the median
-// of N runs after a warm-up; prints rays per second and rtcli / Embree ratios, and checks that
-// the two find the same hits. A ratio above 1 means rtcli is faster (rays per second over
-// Embree's; for builds, Embree's time over rtcli's). Built only where Embree is installed (tools/CMakeLists.txt).
+// of N runs after a warm-up (cold builds: of N fresh processes each); prints rays per second and rtcli / Embree ratios,
+// and checks that the two find the same hits. A ratio above 1 means rtcli is faster (rays per second over Embree's; for
+// builds, Embree's time over rtcli's). Built only where Embree is installed (tools/CMakeLists.txt).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -94,16 +94,23 @@ int main(int argc, char** argv) {
   const unsigned all = resolve_thread_count(0);
   std::vector<unsigned> thread_counts{1};
   if (all > 1) thread_counts.push_back(all);
-  // Cold builds first, each in a fresh child process, before Embree's thread pool exists here.
-  // Embree's device (and its thread pool) is made before the clock starts.
+  // Cold builds first, each in a fresh child process, before Embree's thread pool exists here:
+  // `repeats` of each, alternately, and the medians (one build is one sample of a noisy
+  // machine's page faults). Embree's device (and its thread pool) is made before the clock starts.
   std::vector<std::pair<double, double>> cold;
-  for (const unsigned t : thread_counts)
-    cold.emplace_back(cold_build_seconds(prims, t, best_isa()), run_in_fresh_process([&] {
-                        const EmbreeDevice device(t);
-                        const auto start = std::chrono::steady_clock::now();
-                        const EmbreeScene scene(device, prims.triangles);
-                        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                      }));
+  for (const unsigned t : thread_counts) {
+    std::vector<double> ours, theirs;
+    for (int i = 0; i < repeats; ++i) {
+      ours.push_back(cold_build_seconds(prims, t, best_isa()));
+      theirs.push_back(run_in_fresh_process([&] {
+        const EmbreeDevice device(t);
+        const auto start = std::chrono::steady_clock::now();
+        const EmbreeScene scene(device, prims.triangles);
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }));
+    }
+    cold.emplace_back(summarise(ours).median, summarise(theirs).median);
+  }
   if (sets.empty()) sets = make_ray_sets(prims);
 
   std::printf("model: %s, %zu triangles; rays: %s;", loaded->name.c_str(), prims.triangles.size(),
