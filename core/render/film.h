@@ -64,10 +64,10 @@ struct Film {
 
   // Sized for width x height pixels, all zero, grown a slice at a time with `cancel` checked in
   // between. The colour, sample and depth channels are ZeroedVectors: a fresh film's are not
-  // written here at all (their pages are first touched by the render threads), a reused one's
-  // were zeroed by clear(). The layers' distance and variance are written, at 8192 x
-  // 8192 a quarter of a gigabyte each: Ctrl-C must not wait for them. With `aovs`, the first hit's layers too. False
-  // (the film left partly grown) once `cancel` is set.
+  // written here at all (their pages are first touched by the render threads), and a reused
+  // one's were zeroed by clear(). With `aovs`, the first hit's layers too: their distance and
+  // variance are written, at 8192 x 8192 a quarter of a gigabyte each, and Ctrl-C must not wait
+  // for them. False (the film left partly grown) once `cancel` is set.
   bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false) {
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     color.width = albedo.width = normal.width = emission.width = width;
