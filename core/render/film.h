@@ -65,19 +65,20 @@ struct Film {
   // Sized for width x height pixels, all zero, grown a slice at a time with `cancel` checked in
   // between. The colour, sample and depth channels are ZeroedVectors: a fresh film's are not
   // written here at all (their pages are first touched by the render threads), and a reused
-  // one's were zeroed by clear(). With `aovs`, the first hit's layers too: their distance and
+  // film's storage is given back and taken afresh. With `aovs`, the first hit's layers too: their distance and
   // variance are written, at 8192 x 8192 a quarter of a gigabyte each, and Ctrl-C must not wait
   // for them. False (the film left partly grown) once `cancel` is set.
   bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false) {
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     color.width = albedo.width = normal.width = emission.width = width;
     color.height = albedo.height = normal.height = emission.height = height;
-    color.pixels.clear();
-    samples.clear();
-    depth.clear();
-    albedo.pixels.clear();
-    normal.pixels.clear();
-    emission.pixels.clear();
+    // Released, not cleared: a ZeroedVector grows from zero only into fresh storage.
+    release(color.pixels);
+    release(samples);
+    release(depth);
+    release(albedo.pixels);
+    release(normal.pixels);
+    release(emission.pixels);
     distance.clear();
     variance.clear();
     sums.clear();

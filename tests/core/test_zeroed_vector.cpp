@@ -1,5 +1,6 @@
-// ZeroedVector (core/zeroed_vector.h): growth without a value gives zeros, whatever the vector held
-// before in that memory; values asked for are written; the film's channels start at zero.
+// ZeroedVector (core/zeroed_vector.h): growth into fresh storage gives zeros without writing them,
+// also after release() of storage that held values; values asked for are written; a film
+// reallocated over a rendered one starts at zero.
 #include <catch2/catch.hpp>
 
 #include "core/render/film.h"
@@ -7,21 +8,19 @@
 
 using namespace rt;
 
-TEST_CASE("zeroed vector: new elements are zero after clear, shrink and reallocation", "[zeroed]") {
+TEST_CASE("zeroed vector: new elements are zero in fresh storage, also after a release", "[zeroed]") {
   ZeroedVector<float> v(1000);
-  for (const float x : v) REQUIRE(x == 0.0f);
-  for (float& x : v) x = 7.5f;
-  v.resize(10);  // the 990 given up are zeroed
-  v.resize(1000);
-  CHECK(v[9] == 7.5f);
-  for (size_t i = 10; i < v.size(); ++i) REQUIRE(v[i] == 0.0f);
-  v.clear();  // capacity kept, bytes zeroed
-  v.resize(1000);
   for (const float x : v) REQUIRE(x == 0.0f);
   for (float& x : v) x = -1.0f;
   v.resize(5000);  // reallocated: the old values moved, the rest zero
   CHECK(v[999] == -1.0f);
   for (size_t i = 1000; i < v.size(); ++i) REQUIRE(v[i] == 0.0f);
+  for (float& x : v) x = 7.5f;
+  release(v);
+  CHECK(v.empty());
+  CHECK(v.capacity() == 0);
+  v.resize(5000);
+  for (const float x : v) REQUIRE(x == 0.0f);
   v.resize(6000, 2.0f);  // a value asked for is written
   CHECK(v[5999] == 2.0f);
   v.pop_back();
@@ -35,13 +34,19 @@ TEST_CASE("zeroed vector: a film reallocated over a rendered one starts at zero"
   for (uint16_t& n : film.samples) n = 9;
   for (uint8_t& d : film.depth) d = 3;
   REQUIRE(film.allocate(32, 24, nullptr));  // smaller
-  REQUIRE(film.allocate(80, 60, nullptr));  // larger again: reallocated
+  for (Vec3& p : film.color.pixels) p = Vec3(0.5f);
+  REQUIRE(film.allocate(80, 60, nullptr));  // larger again
   for (const Vec3& p : film.color.pixels) REQUIRE(p == Vec3(0.0f));
   for (const uint16_t n : film.samples) REQUIRE(n == 0);
   for (const uint8_t d : film.depth) REQUIRE(d == 0);
   for (Vec3& p : film.color.pixels) p = Vec3(1.0f);
-  REQUIRE(film.allocate(80, 60, nullptr, true));  // the same size: the memory reused
+  for (uint16_t& n : film.samples) n = 4;
+  REQUIRE(film.allocate(80, 60, nullptr, true));  // the same size
   for (const Vec3& p : film.color.pixels) REQUIRE(p == Vec3(0.0f));
+  for (const uint16_t n : film.samples) REQUIRE(n == 0);
+  for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
+  for (Vec3& p : film.albedo.pixels) p = Vec3(1.0f);
+  REQUIRE(film.allocate(80, 60, nullptr, true));  // the layers too
   for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
   CHECK(Image(3, 2).pixels == ZeroedVector<Vec3>(6, Vec3(0.0f)));
 }
