@@ -1,5 +1,8 @@
 #include "core/render/direct_lighting.h"
 
+#include <algorithm>
+#include <optional>
+
 #include "core/lights/rect_light_batch.h"
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
@@ -13,6 +16,44 @@ namespace {
 // child box for all its lanes, which pays only when enough of them are in use (measured:
 // docs/benchmark.md, "Shadow-ray packets").
 constexpr int kMinShadowPacket = 4;
+
+// The shadow rays from one surface point. Where they start: shadow_ray_origin depends on the
+// direction only by the side of the geometric normal it leaves on, so the two origins are made
+// once per point, not per sample (4% of a soft-shadow render went there; the same floats).
+class ShadowRays {
+ public:
+  explicit ShadowRays(const EvaluatedSurface& s)
+      : s_(&s),
+        lifted_(s.shadow_lift != Vec3(0.0f)),
+        front_(shadow_ray_origin(s, s.ng)),
+        back_(lifted_ ? shadow_ray_origin(s, -s.ng) : front_) {}
+
+  // The shadow ray towards a light sample (its direction, distance and radiance), or false when
+  // the sample cannot light the point.
+  bool make(Vec3 direction, float distance, Vec3 radiance, Ray& shadow) const {
+    const EvaluatedSurface& s = *s_;
+    // A light behind the geometric surface cannot reach it, whatever the shading normal says;
+    // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
+    // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
+    // follows the normals rather than the facets' edges.
+    if (glm::dot(s.n, direction) <= 0.0f) return false;
+    if (glm::dot(s.ng, direction) <= 0.0f && !lifted_) return false;
+    if (max_component(radiance) <= 0.0f) return false;  // the dark back of an area light
+    // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
+    // far beside a lift of a fraction of a facet.
+    shadow.origin = glm::dot(direction, s.ng) < 0.0f ? back_ : front_;
+    shadow.direction = direction;
+    shadow.tmin = 0.0f;
+    // Stop just short of the light so a surface the light sits on does not shadow it.
+    shadow.tmax = distance * (1.0f - kShadowEpsilon);
+    return true;
+  }
+
+ private:
+  const EvaluatedSurface* s_;
+  bool lifted_;
+  Vec3 front_, back_;
+};
 
 // The emissive surfaces as Whitted sees them, through the light interface
 // (core/render/scene_lights.h): `count` points drawn from them by area x emission, each lighting
@@ -45,7 +86,8 @@ Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction) {
   return offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, direction);
 }
 
-Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx) {
+Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, TraceContext& ctx,
+                     const PointShadows* known) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
   const int samples = ctx.settings.scale_secondary_shadows
@@ -54,29 +96,10 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   // One sample of an area light sits at its centre when the scene asks for one (a hard shadow, as
   // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
   const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
-  const bool lifted = s.shadow_lift != Vec3(0.0f);
-  // Where the shadow rays start: shadow_ray_origin depends on the direction only by the side of
-  // the geometric normal it leaves on, so the two origins are made once per point, not per
-  // sample (4% of a soft-shadow render went there; the same floats).
-  const Vec3 origin_front = shadow_ray_origin(s, s.ng);
-  const Vec3 origin_back = lifted ? shadow_ray_origin(s, -s.ng) : origin_front;
-  // The shadow ray towards a sample (its direction, distance and radiance), or false when the
-  // sample cannot light the point.
+  std::optional<ShadowRays> rays_from;  // made when first asked: none where `known` answers all
   const auto shadow_ray = [&](Vec3 direction, float distance, Vec3 radiance, Ray& shadow) {
-    // A light behind the geometric surface cannot reach it, whatever the shading normal says;
-    // except on a smooth mesh (a lift), whose facets only stand in for the curved surface:
-    // there the shadow ray from the lifted point decides, as in Cycles, so that the terminator
-    // follows the normals rather than the facets' edges.
-    if (glm::dot(s.n, direction) <= 0.0f) return false;
-    if (glm::dot(s.ng, direction) <= 0.0f && !lifted) return false;
-    if (max_component(radiance) <= 0.0f) return false;  // the dark back of an area light
-    // From the lifted point on a smooth mesh (Hanika), along the same direction: the light is
-    // far beside a lift of a fraction of a facet.
-    shadow.origin = glm::dot(direction, s.ng) < 0.0f ? origin_back : origin_front;
-    shadow.direction = direction;
-    shadow.tmin = 0.0f;
-    // Stop just short of the light so a surface the light sits on does not shadow it.
-    shadow.tmax = distance * (1.0f - kShadowEpsilon);
+    if (!rays_from) rays_from.emplace(s);
+    if (!rays_from->make(direction, distance, radiance, shadow)) return false;
     ++ctx.counters[RayKind::kShadow];
     return true;
   };
@@ -90,7 +113,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     const int count = light_sample_count(light, samples);
     const RectLight* rect = std::get_if<RectLight>(&light);
     Vec3 light_sum(0.0f);
-    if (!rect) {  // a point, spot or directional light: one sample, one shadow ray
+    if (!rect && known && l < PointShadows::kMaxLights && (known->known >> l & 1u)) {  // traced before
+      if (known->lit >> l & 1u) light_sum += lit(known->direction[l], known->radiance[l], Vec3(1.0f));
+    } else if (!rect) {  // a point, spot or directional light: one sample, one shadow ray
       const LightSample ls = sample_li(light, s.position, Vec2(0.5f));
       Ray shadow;
       if (shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) {
@@ -157,6 +182,46 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
   }
   if (!scene.emitters.empty()) sum += emitted_light(s, path, samples, shadow_ray, lit, ctx);
   return sum;
+}
+
+void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, const Scene& scene,
+                        RayCounters& counters, PointShadows* out) {
+  for (int i = 0; i < count; ++i) out[i].known = out[i].lit = 0;
+  if (!scene.all_opaque) return;
+  std::optional<ShadowRays> from[kPacketSize];
+  for (int i = 0; i < count; ++i)
+    if (has[i]) from[i].emplace(s[i]);
+  const size_t lights = std::min(scene.lights.size(), PointShadows::kMaxLights);
+  for (size_t l = 0; l < lights; ++l) {
+    const Light& light = scene.lights[l];
+    if (std::holds_alternative<RectLight>(light)) continue;
+    const uint32_t bit = 1u << l;
+    Ray rays[kPacketSize];
+    int owner[kPacketSize];  // which point ray k leaves from
+    int made = 0;
+    std::visit(  // once per light, not per point
+        [&](const auto& typed) {
+          for (int i = 0; i < count; ++i) {
+            if (!has[i]) continue;
+            out[i].known |= bit;  // a point without a ray is known too: the light does not reach it
+            const LightSample ls = sample_li(typed, s[i].position, Vec2(0.5f));
+            if (!from[i]->make(ls.direction, ls.distance, ls.radiance, rays[made])) continue;
+            out[i].direction[l] = ls.direction;
+            out[i].radiance[l] = ls.radiance;
+            owner[made++] = i;
+          }
+        },
+        light);
+    counters[RayKind::kShadow] += static_cast<uint64_t>(made);
+    unsigned blocked = 0;
+    if (made >= kMinShadowPacket) {
+      blocked = scene.occluded_packet(rays, made);
+    } else {
+      for (int k = 0; k < made; ++k) blocked |= scene.occluded(rays[k]) ? 1u << k : 0u;
+    }
+    for (int k = 0; k < made; ++k)
+      if (!(blocked >> k & 1u)) out[owner[k]].lit |= bit;
+  }
 }
 
 }  // namespace rt

@@ -60,6 +60,13 @@ class Integrator {
   // The same for a ray whose first meeting is already known: `met` and ray.tmax as
   // Scene::intersect leaves them (camera rays, found a packet at a time).
   virtual Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const = 0;
+  // radiance_from_hit (depth 0) for count <= kPacketSize camera rays found together (a
+  // CameraBatch), each with its own context: out[i] for rays[i]. Each gets what it would alone;
+  // an integrator may share work between them (Whitted: the point lights' shadow rays, as packets).
+  virtual void radiance_from_hits(const Ray* rays, const SceneHit* met, int count, TraceContext* const* ctx,
+                                  Vec3* out) const {
+    for (int i = 0; i < count; ++i) out[i] = radiance_from_hit(rays[i], met[i], 0, *ctx[i]);
+  }
 };
 
 // What an integrator's name stands for in the name table.

@@ -1,6 +1,7 @@
 #include "core/render/pixel_sampler.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/render/adaptive_sampler.h"
 #include "core/render/path_sampler.h"
@@ -27,22 +28,21 @@ void CameraBatch::trace(PixelContext& ctx) {
   SceneHit met[kPacketSize];
   ctx.scene.intersect_packet(rays, met, rays_made);
   ctx.counters[RayKind::kCamera] += static_cast<uint64_t>(rays_made);
+  // Each ray's context, in ray order, shaded together (Integrator::radiance_from_hits).
+  std::optional<TraceContext> traces[kPacketSize];
+  TraceContext* trace_of[kPacketSize];
   for (int i = 0; i < count; ++i) {
     if (ctx.aovs) aovs[i] = Aovs{};
-    if (ray_of[i] < 0) {
-      radiance[i] = Vec3(0.0f);
-      continue;
-    }
+    if (ray_of[i] < 0) continue;
     const CameraSample& c = sample[i];
-    TraceContext trace{ctx.scene,
-                       s,
-                       ctx.counters,
-                       c.samples,
-                       c.spacing * camera.pixel_spread(s.width, s.height),
-                       c.spacing * camera.pixel_footprint(s.width, s.height),
-                       ctx.aovs ? &aovs[i] : nullptr};
-    radiance[i] = ctx.integrator.radiance_from_hit(rays[ray_of[i]], met[ray_of[i]], 0, trace);
+    TraceContext& trace = traces[ray_of[i]].emplace(
+        ctx.scene, s, ctx.counters, c.samples, c.spacing * camera.pixel_spread(s.width, s.height),
+        c.spacing * camera.pixel_footprint(s.width, s.height), ctx.aovs ? &aovs[i] : nullptr);
+    trace_of[ray_of[i]] = &trace;
   }
+  Vec3 found[kPacketSize];
+  ctx.integrator.radiance_from_hits(rays, met, rays_made, trace_of, found);
+  for (int i = 0; i < count; ++i) radiance[i] = ray_of[i] < 0 ? Vec3(0.0f) : found[ray_of[i]];
 }
 
 namespace {

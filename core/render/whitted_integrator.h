@@ -4,6 +4,7 @@
 // docs/rendering.md, "Reflection, refraction and glossy reflection".
 #pragma once
 
+#include "core/render/direct_lighting.h"
 #include "core/render/integrator.h"
 #include "core/render/medium_stack.h"
 #include "materials/evaluated_surface.h"
@@ -13,6 +14,10 @@ namespace rt {
 class WhittedIntegrator final : public Integrator {
  public:
   Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const override;
+  // The camera rays' surfaces evaluated first, then their shadow rays to the point lights traced
+  // as packets (find_point_shadows), then each shaded: the same radiance as one by one.
+  void radiance_from_hits(const Ray* rays, const SceneHit* met, int count, TraceContext* const* ctx,
+                          Vec3* out) const override;
 
   // Where a ray is in its tree: passed by value, so branches never see each other's state.
   struct PathState {
@@ -38,6 +43,18 @@ class WhittedIntegrator final : public Integrator {
   enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay, kGlossyRefraction, kFresnelChoice };
 
  private:
+  // shade()'s two halves for a surface: what it is at the hit (cone_width: the ray cone's width
+  // there; the camera sample's layers are recorded), then its radiance (`known`: its point
+  // lights' shadows, if found before). And for a ray that met no surface.
+  EvaluatedSurface surface_at(const Ray& ray, const Hit& hit, const PathState& state, TraceContext& ctx,
+                              float& cone_width) const;
+  Vec3 shade_surface(const Ray& ray, const EvaluatedSurface& s, float cone_width, const PathState& state,
+                     TraceContext& ctx, const PointShadows* known = nullptr) const;
+  Vec3 shade_no_surface(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const;
+  // The state of a camera ray's tree at its first hit.
+  static PathState camera_state(int depth, const TraceContext& ctx);
+  // Beer-Lambert along the segment just travelled, inside the state's innermost medium.
+  Vec3 absorbed(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
   Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
   Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
               const PathState& state, TraceContext& ctx) const;
