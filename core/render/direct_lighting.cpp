@@ -187,7 +187,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
 void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, const Scene& scene,
                         RayCounters& counters, PointShadows* out) {
   for (int i = 0; i < count; ++i) out[i].known = out[i].lit = 0;
-  if (!scene.all_opaque) return;
+  // With glass, a ray the packet finds blocked may only be filtered: left to shadow_transmittance,
+  // which counts it then. One that meets nothing is lit, glass or not.
+  const bool opaque = scene.all_opaque;
   std::optional<ShadowRays> from[kPacketSize];
   for (int i = 0; i < count; ++i)
     if (has[i]) from[i].emplace(s[i]);
@@ -212,15 +214,24 @@ void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, c
           }
         },
         light);
-    counters[RayKind::kShadow] += static_cast<uint64_t>(made);
     unsigned blocked = 0;
     if (made >= kMinShadowPacket) {
       blocked = scene.occluded_packet(rays, made);
-    } else {
+    } else if (opaque) {
       for (int k = 0; k < made; ++k) blocked |= scene.occluded(rays[k]) ? 1u << k : 0u;
+    } else {
+      blocked = (1u << made) - 1u;  // too few for a packet: each traced through the glass later
     }
-    for (int k = 0; k < made; ++k)
-      if (!(blocked >> k & 1u)) out[owner[k]].lit |= bit;
+    int left = 0;
+    for (int k = 0; k < made; ++k) {
+      if (!(blocked >> k & 1u)) {
+        out[owner[k]].lit |= bit;
+      } else if (!opaque) {
+        out[owner[k]].known &= ~bit;
+        ++left;
+      }
+    }
+    counters[RayKind::kShadow] += static_cast<uint64_t>(made - left);
   }
 }
 

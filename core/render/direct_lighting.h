@@ -30,9 +30,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
 // shadow rays towards each point, spot and directional light, traced as one packet
 // (Bvh::occluded_packet) and counted as direct_lighting counts them, so that it need not trace
 // them one by one. Neighbouring camera rays' hits make coherent packets. A packet finds the
-// answer each ray would alone, so the image is the same. Only where no object lets light through
-// (Scene::all_opaque); elsewhere nothing is known and direct_lighting traces the rays through the
-// glass itself.
+// answer each ray would alone, so the image is the same. In a scene with glass, a ray the packet
+// finds blocked is left unknown, for direct_lighting to trace through the glass
+// (shadow_transmittance); one that meets nothing is lit there too.
 void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, const Scene& scene,
                         RayCounters& counters, PointShadows* out);
 
