@@ -68,6 +68,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
         } else {
           stopped = true;
         }
+        ctx.publish_progress();
         rays_done += mine.total() - rays_before;
       }
       done[static_cast<size_t>(tile.index)].store(true, std::memory_order_release);
