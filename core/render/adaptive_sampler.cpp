@@ -138,16 +138,18 @@ bool AdaptiveSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile&
 }
 
 // The contrast measure: the largest difference between the four samples' displayed values in
-// any one channel (8-bit sRGB codes), compared with the threshold.
+// any one channel (8-bit sRGB codes), compared with the threshold. The three channels at once, a
+// byte each in a vector (channel by channel, with the call, it took 4% of antialias.json).
 bool AdaptiveSampler::differ(const LatticeSample& a, const LatticeSample& b, const LatticeSample& c,
                              const LatticeSample& d) const {
-  int range = 0;
-  for (size_t k = 0; k < 3; ++k) {
-    const int lo = std::min(std::min(a.display[k], b.display[k]), std::min(c.display[k], d.display[k]));
-    const int hi = std::max(std::max(a.display[k], b.display[k]), std::max(c.display[k], d.display[k]));
-    range = std::max(range, hi - lo);
-  }
-  return static_cast<float>(range) > threshold_levels_;
+  typedef uint8_t Codes __attribute__((vector_size(4)));
+  const auto codes = [](const LatticeSample& s) { return Codes{s.display[0], s.display[1], s.display[2], 0}; };
+  const auto lower = [](Codes x, Codes y) { return x < y ? x : y; };
+  const auto higher = [](Codes x, Codes y) { return x < y ? y : x; };
+  const Codes ca = codes(a), cb = codes(b), cc = codes(c), cd = codes(d);
+  const Codes range = higher(higher(ca, cb), higher(cc, cd)) - lower(lower(ca, cb), lower(cc, cd));
+  const int widest = std::max(std::max(range[0], range[1]), range[2]);
+  return static_cast<float>(widest) > threshold_levels_;
 }
 
 // The cell with top-left lattice point (i, j) and `size` lattice steps per side, at `depth`.
