@@ -61,8 +61,9 @@ class Integrator {
   // Scene::intersect leaves them (camera rays, found a packet at a time).
   virtual Vec3 radiance_from_hit(const Ray& ray, const SceneHit& met, int depth, TraceContext& ctx) const = 0;
   // radiance_from_hit (depth 0) for count <= kPacketSize camera rays found together (a
-  // CameraBatch), each with its own context: out[i] for rays[i]. Each gets what it would alone;
-  // an integrator may share work between them (Whitted: the point lights' shadow rays, as packets).
+  // CameraBatch), each with its own context (one thread's: the same scene and counters): out[i]
+  // for rays[i]. Each gets what it would alone; an integrator may share work between them
+  // (Whitted: the point lights' shadow rays, as packets).
   virtual void radiance_from_hits(const Ray* rays, const SceneHit* met, int count, TraceContext* const* ctx,
                                   Vec3* out) const {
     for (int i = 0; i < count; ++i) out[i] = radiance_from_hit(rays[i], met[i], 0, *ctx[i]);
