@@ -35,9 +35,10 @@ void CameraBatch::trace(PixelContext& ctx) {
     if (ctx.aovs) aovs[i] = Aovs{};
     if (ray_of[i] < 0) continue;
     const CameraSample& c = sample[i];
+    // (Braces, then moved in: Clang before 16 cannot make an aggregate from emplace's parentheses.)
     TraceContext& trace = traces[ray_of[i]].emplace(
-        ctx.scene, s, ctx.counters, c.samples, c.spacing * camera.pixel_spread(s.width, s.height),
-        c.spacing * camera.pixel_footprint(s.width, s.height), ctx.aovs ? &aovs[i] : nullptr);
+        TraceContext{ctx.scene, s, ctx.counters, c.samples, c.spacing * camera.pixel_spread(s.width, s.height),
+                     c.spacing * camera.pixel_footprint(s.width, s.height), ctx.aovs ? &aovs[i] : nullptr});
     trace_of[ray_of[i]] = &trace;
   }
   Vec3 found[kPacketSize];
