@@ -19,6 +19,7 @@
 #include "core/accel/bvh_kernels.h"
 #include "core/accel/isa.h"
 #include "core/accel/primitives.h"
+#include "core/accel/shadow_volume.h"
 #include "core/accel/triangle_quad.h"
 #include "core/fill_vector.h"
 
@@ -62,6 +63,14 @@ static_assert(sizeof(BvhNode) % 64 == 0, "a BvhNode fills whole cache lines");
 
 // Whether child slot `slot` of `node` is in use (an unused one's box is inverted).
 inline bool child_used(const BvhNode& node, int slot) { return node.bounds[0][slot] <= node.bounds[1][slot]; }
+
+// A few leaves of a BVH: those whose boxes meet a region (Bvh::leaves_meeting). A ray that stays
+// inside the region can meet nothing in the other leaves, so these alone answer for it.
+struct BvhLeafSet {
+  static constexpr int kMax = 4;  // more, and the ray's own walk is as cheap
+  uint32_t leaf[kMax];            // BvhRef values, in the order the tree lists them
+  int count = 0;
+};
 
 struct BvhBuildOptions {
   unsigned threads = 1;  // subtrees are built in parallel; the tree does not depend on this
@@ -118,6 +127,19 @@ class Bvh {
   }
   bool visit_hits_through(const Ray& ray, HitVisitorFn visit, void* visitor) const {
     return kernels_->visit_hits(*this, ray, visit, visitor);
+  }
+
+  // The leaves whose boxes meet `volume` (core/accel/bvh_volume_query.cpp); false when there are
+  // more than BvhLeafSet::kMax. A leaf of planes that no ray inside the volume can cross
+  // (ShadowVolume::beside_plane: a floor or a wall under the rays' origin) is left out. Every
+  // crossing such a ray can have lies in the leaves found: none, and nothing is in its way.
+  bool leaves_meeting(const ShadowVolume& volume, BvhLeafSet& out) const;
+  // visit_hits() for a ray inside a volume whose only leaf is `leaf`: the same crossings in the
+  // same order (a walk would find no other leaf's).
+  template <class Visitor>
+  bool visit_hits_in_leaf(const Ray& ray, uint32_t leaf, Visitor& visit) const {
+    return kernels_->visit_hits_in_leaf(
+        *this, ray, leaf, [](void* v, const Hit& hit) { return (*static_cast<Visitor*>(v))(hit); }, &visit);
   }
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the

@@ -30,6 +30,8 @@ struct BvhKernels {
   unsigned (*occluded_packet)(const Bvh& bvh, const Ray* rays, int count);
   // Bvh::for_each_hit's walk, the visitor called through `visit` (Bvh::visit_hits).
   bool (*visit_hits)(const Bvh& bvh, const Ray& ray, HitVisitorFn visit, void* visitor);
+  // visit_hits for a ray that only leaf `leaf` can meet.
+  bool (*visit_hits_in_leaf)(const Bvh& bvh, const Ray& ray, uint32_t leaf, HitVisitorFn visit, void* visitor);
 };
 
 // The table for `isa`. The caller checks isa_supported() first: a kernel of a set the CPU lacks

@@ -283,6 +283,14 @@ namespace {
   return for_each_hit(bvh, ray, call);
 }
 
+// visit_hits' crossings for a ray that only `leaf` can meet: that leaf's, as the walk visits them.
+[[gnu::flatten]] bool visit_hits_in_leaf(const Bvh& bvh, const Ray& ray, uint32_t leaf, HitVisitorFn visit,
+                                         void* visitor) {
+  if (bvh.primitive_count() == 0 || !is_traceable(ray)) return false;
+  auto call = [&](const Hit& hit) { return visit(visitor, hit); };
+  return visit_leaf_crossings(bvh, leaf, QuadRay(ray), ray, call);
+}
+
 namespace {
 
 bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit& hit) {
@@ -299,7 +307,7 @@ bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit
 }  // namespace
 
 extern const BvhKernels kKernels{RTCLI_ISA, &intersect,       &intersect_cutout, &intersect_packet,
-                                 &occluded, &occluded_packet, &visit_hits};
+                                 &occluded, &occluded_packet, &visit_hits,       &visit_hits_in_leaf};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

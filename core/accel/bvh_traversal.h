@@ -223,41 +223,47 @@ bool for_each_primitive_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
   });
 }
 
-// Bvh::for_each_hit: every crossing, mesh instances' included (relabelled as the instance's:
-// prim = instance id, part = triangle), until the visitor says stop.
+// The crossings of one leaf of a top-level BVH, in slot order, mesh instances' included
+// (relabelled as the instance's: prim = instance id, part = triangle), until the visitor says stop.
+template <class Visitor>
+bool visit_leaf_crossings(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, const Ray& ray, Visitor& visit) {
+  if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, ray, visit);
+  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+  for (uint32_t slot = first; slot < end; ++slot) {
+    const Bvh::Slot& s = bvh.slots()[slot];
+    bool stop = false;
+    switch (bvh.kind(s.id)) {
+      case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(s.triangle, s.id, ray, visit); break;
+      case PrimitiveKind::kShape: stop = visit_shape_crossings(bvh.shape(s.id), s.id, ray, visit); break;
+      case PrimitiveKind::kCsg: stop = visit_csg_crossings(bvh.csg(s.id), s.id, ray, visit); break;
+      case PrimitiveKind::kInstance: {
+        const MeshInstance& inst = bvh.instance(s.id);
+        const uint32_t id = s.id;
+        const Ray local = object_ray(inst.transform, ray);
+        auto relabel = [&](const Hit& h) {
+          if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2, local)) return false;  // cut out: go on
+          Hit g = h;
+          g.part = h.prim;
+          g.prim = id;
+          return visit(static_cast<const Hit&>(g));
+        };
+        stop = for_each_primitive_hit(*inst.bvh, local, relabel);
+        break;
+      }
+    }
+    if (stop) return true;
+  }
+  return false;
+}
+
+// Bvh::for_each_hit: every crossing, mesh instances' included, until the visitor says stop.
 template <class Visitor>
 bool for_each_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
   if (bvh.instances().empty() && bvh.csgs().empty()) return for_each_primitive_hit(bvh, ray, visit);
   Ray r = ray;
   const QuadRay quad_ray(ray);
   return traverse<false>(bvh, r, [&](uint32_t leaf, const Ray& leaf_ray) {
-    if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, leaf_ray, visit);
-    const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
-    for (uint32_t slot = first; slot < end; ++slot) {
-      const Bvh::Slot& s = bvh.slots()[slot];
-      bool stop = false;
-      switch (bvh.kind(s.id)) {
-        case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(s.triangle, s.id, leaf_ray, visit); break;
-        case PrimitiveKind::kShape: stop = visit_shape_crossings(bvh.shape(s.id), s.id, leaf_ray, visit); break;
-        case PrimitiveKind::kCsg: stop = visit_csg_crossings(bvh.csg(s.id), s.id, leaf_ray, visit); break;
-        case PrimitiveKind::kInstance: {
-          const MeshInstance& inst = bvh.instance(s.id);
-          const uint32_t id = s.id;
-          const Ray local = object_ray(inst.transform, leaf_ray);
-          auto relabel = [&](const Hit& h) {
-            if (inst.cutout && !inst.cutout->covers(h.prim, h.b1, h.b2, local)) return false;  // cut out: go on
-            Hit g = h;
-            g.part = h.prim;
-            g.prim = id;
-            return visit(static_cast<const Hit&>(g));
-          };
-          stop = for_each_primitive_hit(*inst.bvh, local, relabel);
-          break;
-        }
-      }
-      if (stop) return true;
-    }
-    return false;
+    return visit_leaf_crossings(bvh, leaf, quad_ray, leaf_ray, visit);
   });
 }
 

@@ -5,7 +5,8 @@
 
 namespace rt {
 
-Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
+Vec3 shadow_transmittance(const Scene& scene, const Ray& ray, const BvhLeafSet* among) {
+  if (among && among->count == 0) return Vec3(1.0f);
   // The common case: every blocker is opaque, and the first one found ends the search.
   if (scene.all_opaque) return scene.occluded(ray) ? Vec3(0.0f) : Vec3(1.0f);
   Vec3 through(1.0f);
@@ -33,7 +34,8 @@ Vec3 shadow_transmittance(const Scene& scene, const Ray& ray) {
     }
     return max_component(through) <= 0.0f;
   };
-  const bool blocked = scene.bvh.visit_hits(ray, visit);
+  const bool blocked = among && among->count == 1 ? scene.bvh.visit_hits_in_leaf(ray, among->leaf[0], visit)
+                                                  : scene.bvh.visit_hits(ray, visit);
   if (blocked) return Vec3(0.0f);
   return absorbed ? through * glm::exp(-glm::max(depth, Vec3(0.0f))) : through;
 }

@@ -15,7 +15,9 @@ namespace rt {
 // reflection on the way out, and a glass sphere's shadow had a black outer ring. Any-hit
 // traversal with a visitor: it stops at the first opaque surface.
 // In a scene without transmissive materials (Scene::all_opaque): the occlusion kernel alone, which
-// gives the same answer.
-Vec3 shadow_transmittance(const Scene& scene, const Ray& ray);
+// gives the same answer. `among`: the leaves of the BVH that a volume holding the ray reaches
+// (Bvh::leaves_meeting), when known: none, and nothing is in the way; one, and only its
+// crossings are visited (the same as the walk's); more, and the walk finds them.
+Vec3 shadow_transmittance(const Scene& scene, const Ray& ray, const BvhLeafSet* among = nullptr);
 
 }  // namespace rt
