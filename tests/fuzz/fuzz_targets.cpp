@@ -258,6 +258,24 @@ std::string bvh_build(const uint8_t* data, size_t size) {
     if (!std::includes(seen_brute.begin(), seen_brute.end(), seen_bvh.begin(), seen_bvh.end()))
       return "for_each_hit reported a crossing brute force did not";
     if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
+    // A shadow volume along the ray (its origin, a small light 10 along it): the leaves it meets
+    // (Bvh::leaves_meeting) hold every crossing of the walk there that lies inside its box.
+    Vec3 side1, side2;
+    orthonormal_basis(original.direction, side1, side2);
+    const ShadowVolume volume(original.origin, original.at(10.0f) - 0.01f * (side1 + side2), 0.02f * side1,
+                              0.02f * side2);
+    if (BvhLeafSet leaves; bvh.leaves_meeting(volume, leaves)) {
+      const Ray segment(original.origin, original.direction, 0.0f, 10.0f * (1.0f - 1e-4f));
+      std::vector<std::pair<uint32_t, float>> walked, asked;
+      bvh.for_each_hit(segment, [&](const Hit& h) { return walked.emplace_back(h.prim, h.t), false; });
+      auto ask = [&](const Hit& h) { return asked.emplace_back(h.prim, h.t), false; };
+      for (int k = 0; k < leaves.count; ++k) bvh.visit_hits_in_leaf(segment, leaves.leaf[k], ask);
+      std::sort(asked.begin(), asked.end());
+      for (const auto& w : walked)
+        if (robust_hit(prims.triangles[w.first], segment, w.second) &&
+            !std::binary_search(asked.begin(), asked.end(), w))
+          return "a crossing inside a shadow volume lies in none of the leaves it meets";
+    }
   }
   // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer.
   if (!valid.empty()) {
