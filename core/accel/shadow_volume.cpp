@@ -13,17 +13,18 @@ float sum_abs(Vec3 v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z);
 ShadowVolume::ShadowVolume(Vec3 apex, Vec3 corner, Vec3 edge1, Vec3 edge2)
     : apex_(apex), base_{corner, corner + edge1, corner + edge1 + edge2, corner + edge2} {
   // A ray's points stray from the segments the pyramid holds by a few ulps of these coordinates
-  // (and a hit from its primitive's box by as little: the BVH's own walk relies on that); the
-  // margin is a hundred times that, so no ray inside is ever culled.
+  // (its direction is taken from the surface point, its origin's rounding offset away; a hit
+  // strays from its primitive's box by as little: the BVH's own walk relies on that); the margin
+  // is a hundred times that, so no ray inside is ever culled.
   float largest = std::max(1.0f, max_abs_component(apex));
   bounds_.extend(apex);
   for (const Vec3& p : base_) {
     bounds_.extend(p);
     largest = std::max(largest, max_abs_component(p));
   }
-  const float margin = 1e-5f * largest;
-  bounds_.lo -= Vec3(margin);
-  bounds_.hi += Vec3(margin);
+  margin_ = 1e-5f * largest;
+  bounds_.lo -= Vec3(margin_);
+  bounds_.hi += Vec3(margin_);
   // The base, then the four sides, each through the apex and one edge of the base; each normal
   // turned away from a point inside.
   const Vec3 inside = 0.2f * (apex + base_[0] + base_[1] + base_[2] + base_[3]);
@@ -40,7 +41,7 @@ ShadowVolume::ShadowVolume(Vec3 apex, Vec3 corner, Vec3 edge1, Vec3 edge2)
       continue;
     }
     normal_[f] = towards_inside > 0.0f ? -n : n;
-    offset_[f] = glm::dot(normal_[f], on) + margin * length;
+    offset_[f] = glm::dot(normal_[f], on) + margin_ * length;
   }
 }
 
@@ -72,14 +73,15 @@ bool ShadowVolume::beside_plane(const Transform& plane) const {
   // A direction's object-space y is g . d, g the second row of the linear part. Over the base it
   // is linear, so its least value is at a corner; each corner's is asked to be 1e-4 of its
   // largest possible size, a thousand times what the products' rounding can reach, so that no
-  // ray's computed direction.y has the other sign.
+  // ray's computed direction.y has the other sign. Plus the margin: a light sample's direction
+  // is taken from the surface point, a rounding away from the rays' origin.
   const Mat3 linear(plane.to_object);
   const Vec3 g(linear[0][1], linear[1][1], linear[2][1]);
   const float g_size = sum_abs(g);
   for (const Vec3& corner : base_) {
     const Vec3 to = corner - apex_;
     const float along = glm::dot(g, to);
-    const float needed = 1e-4f * g_size * sum_abs(to);
+    const float needed = g_size * (1e-4f * sum_abs(to) + margin_);
     if (!(origin_y > 0.0f ? along > needed : along < -needed)) return false;
   }
   return true;

@@ -35,6 +35,7 @@ class ShadowVolume {
   static constexpr int kFaces = 5;
   Vec3 apex_;
   Vec3 base_[4];
+  float margin_;          // far more than any ray's rounding: 1e-5 of the largest coordinate
   Aabb bounds_;           // of the five vertices, grown by the margin
   Vec3 normal_[kFaces];   // outward, not unit; a face too thin to have one has 0 and culls nothing
   float offset_[kFaces];  // a box beyond the face: dot(normal, its nearest corner) > offset
