@@ -13,9 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
-#include "core/accel/bvh_traversal.h"
 #include "core/render/integrator.h"
 #include "core/render/pixel_sampler.h"
 #include "core/render/renderer.h"
@@ -43,22 +41,6 @@ LoadOptions fuzz_options() {
   options.limits.instances = 1 << 12;
   options.limits.nodes = 1 << 12;
   return options;
-}
-
-// Whether a hit that brute force found at distance t on `tri` is one the BVH must find too.
-// Moller-Trumbore's rounding error grows with the coordinates involved, so with huge or thin
-// triangles it reports points outside the triangle's own box, which the BVH rightly culls. A hit
-// counts when its point is inside the box by more than that error on every axis (so hits on
-// triangles thinner than the error in some axis are not checked here; tests/core/test_bvh.cpp
-// covers ordinary ones).
-bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) {
-  const Aabb box = tri.bounds();
-  const Vec3 p = ray.at(t);
-  const float margin = 1e-5f * std::max({max_abs_component(box.lo), max_abs_component(box.hi),
-                                         max_abs_component(ray.origin), max_abs_component(p), 1e-30f});
-  for (int a = 0; a < 3; ++a)
-    if (!(p[a] >= box.lo[a] + margin && p[a] <= box.hi[a] - margin)) return false;
-  return true;
 }
 
 // A folder of this process's own for the files an input becomes.
@@ -187,135 +169,6 @@ std::string gltf_model(const uint8_t* data, size_t size) {
   const Bvh bvh(prims, BvhBuildOptions{1});
   const std::string problem = bvh.check_structure();
   return problem.empty() ? "" : "BVH: " + problem;
-}
-
-std::string bvh_build(const uint8_t* data, size_t size) {
-  if (size < 1) return "";
-  const unsigned threads = 1 + data[0] % 2;
-  std::vector<float> values((size - 1) / 4);
-  if (!values.empty()) std::memcpy(values.data(), data + 1, values.size() * 4);
-  // The last 48 bytes (12 floats) describe two rays; everything before them, triangles.
-  const size_t ray_floats = std::min<size_t>(values.size(), 12);
-  const size_t triangle_floats = values.size() - ray_floats;
-  PrimitiveSet prims;
-  for (size_t i = 0; i + 9 <= triangle_floats && prims.triangles.size() < 20000; i += 9) {
-    const float* v = &values[i];
-    const auto t =
-        PackedTriangle::from_vertices(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]));
-    if (t.is_finite()) prims.triangles.push_back(t);
-  }
-  const Bvh bvh(prims, BvhBuildOptions{threads});  // the best kernels this CPU runs
-  if (std::string problem = bvh.check_structure(); !problem.empty()) return "BVH: " + problem;
-  const Bvh baseline(prims, BvhBuildOptions{threads, Isa::kSse});
-  const BruteForce brute(prims);
-  std::vector<Ray> valid;
-  for (size_t r = 0; r + 6 <= ray_floats; r += 6) {
-    const float* v = &values[triangle_floats + r];
-    Ray a;
-    a.origin = Vec3(v[0], v[1], v[2]);
-    const Vec3 d(v[3], v[4], v[5]);
-    const float length = glm::length(d);
-    if (!is_finite(a.origin) || !(length > 1e-6f) || !std::isfinite(length)) continue;
-    a.direction = d / length;
-    const Ray original = a;
-    valid.push_back(original);
-    Ray b = a;
-    Hit ha, hb;
-    const bool found_a = bvh.intersect(a, ha), found_b = brute.intersect(b, hb);
-    const bool occluded = bvh.occluded(original);
-    // Every instruction set finds the baseline's hit, bit for bit.
-    Ray c = original;
-    Hit hc;
-    const bool found_c = baseline.intersect(c, hc);
-    if (found_a != found_c || (found_a && (std::memcmp(&ha.t, &hc.t, 4) != 0 || std::memcmp(&ha.b1, &hc.b1, 4) != 0 ||
-                                           std::memcmp(&ha.b2, &hc.b2, 4) != 0 || ha.prim != hc.prim)))
-      return std::string("the ") + isa_name(bvh.isa()) + " kernels' closest hit differs from the baseline's";
-    if (occluded != baseline.occluded(original))
-      return std::string("the ") + isa_name(bvh.isa()) + " kernels' occlusion differs from the baseline's";
-    // The BVH tests a subset of what brute force tests, with the same triangle test.
-    if (found_a && (!found_b || ha.t < hb.t)) return "the BVH found a hit brute force did not";
-    if (occluded && !found_b) return "occluded() found a hit brute force did not";
-    if (found_b && robust_hit(prims.triangles[hb.prim], original, hb.t)) {
-      if (!found_a || ha.t != hb.t) return "the BVH missed the closest hit brute force found";
-      // Equal distances go to the lower id, as brute force's id order finds them.
-      if (ha.prim != hb.prim) return "the BVH and brute force chose different primitives at the same distance";
-      if (!occluded) return "occluded() missed a hit brute force found";
-    }
-    // The any-hit visitor: every crossing it reports is one brute force reports too, at the same
-    // t, and each primitive at most once (triangles are crossed once).
-    std::vector<std::pair<uint32_t, float>> seen_bvh, seen_brute;
-    bvh.for_each_hit(original, [&](const Hit& h) { return seen_bvh.emplace_back(h.prim, h.t), false; });
-    // The dispatched walk (visit_hits) sees the same crossings in the same order.
-    std::vector<std::pair<uint32_t, float>> seen_kernel;
-    auto record = [&](const Hit& h) { return seen_kernel.emplace_back(h.prim, h.t), false; };
-    bvh.visit_hits(original, record);
-    if (seen_kernel != seen_bvh) return "visit_hits and for_each_hit saw different crossings";
-    brute.for_each_hit(original, [&](const Hit& h) { return seen_brute.emplace_back(h.prim, h.t), false; });
-    std::sort(seen_bvh.begin(), seen_bvh.end());
-    std::sort(seen_brute.begin(), seen_brute.end());
-    for (size_t k = 0; k + 1 < seen_bvh.size(); ++k)
-      if (seen_bvh[k].first == seen_bvh[k + 1].first) return "for_each_hit visited a triangle twice";
-    if (!std::includes(seen_brute.begin(), seen_brute.end(), seen_bvh.begin(), seen_bvh.end()))
-      return "for_each_hit reported a crossing brute force did not";
-    if (seen_bvh.empty() != !occluded) return "for_each_hit and occluded() disagree";
-    // A shadow volume along the ray (its origin, a small light 10 along it): the leaves it meets
-    // (Bvh::leaves_meeting) hold every crossing of the walk there that lies inside its box.
-    Vec3 side1, side2;
-    orthonormal_basis(original.direction, side1, side2);
-    const ShadowVolume volume(original.origin, original.at(10.0f) - 0.01f * (side1 + side2), 0.02f * side1,
-                              0.02f * side2);
-    if (BvhLeafSet leaves; bvh.leaves_meeting(volume, leaves)) {
-      const Ray segment(original.origin, original.direction, 0.0f, 10.0f * (1.0f - 1e-4f));
-      std::vector<std::pair<uint32_t, float>> walked, asked;
-      bvh.for_each_hit(segment, [&](const Hit& h) { return walked.emplace_back(h.prim, h.t), false; });
-      auto ask = [&](const Hit& h) { return asked.emplace_back(h.prim, h.t), false; };
-      for (int k = 0; k < leaves.count; ++k) bvh.visit_hits_in_leaf(segment, leaves.leaf[k], ask);
-      std::sort(asked.begin(), asked.end());
-      for (const auto& w : walked)
-        if (robust_hit(prims.triangles[w.first], segment, w.second) &&
-            !std::binary_search(asked.begin(), asked.end(), w))
-          return "a crossing inside a shadow volume lies in none of the leaves it meets";
-    }
-  }
-  // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer.
-  if (!valid.empty()) {
-    Ray packet[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) {
-      packet[i] = valid[static_cast<size_t>(i) % valid.size()];
-      if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
-    }
-    for (int count = 1; count <= kPacketSize; ++count) {
-      const unsigned mask = bvh.occluded_packet(packet, count);
-      for (int i = 0; i < count; ++i)
-        if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "occluded_packet() and occluded() disagree";
-      // Each ray of a packet gets its own closest hit, bit for bit, and its tmax narrowed alike.
-      // Except where rounding at extreme coordinates lets a triangle report a crossing outside
-      // its own box (not robust_hit): whether a walk meets that depends on which boxes it
-      // entered before narrowing tmax, and a packet enters them in another order. Such a hit
-      // may stand in for a farther one, but a robust hit is never missed or replaced by another.
-      Ray walked[kPacketSize];
-      Hit hits[kPacketSize];
-      std::copy(packet, packet + count, walked);
-      const unsigned found = bvh.intersect_packet(walked, hits, count);
-      for (int i = 0; i < count; ++i) {
-        Ray alone = packet[i];
-        Hit h;
-        const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
-        const bool same =
-            hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && std::memcmp(&h.b1, &hits[i].b1, 4) == 0 &&
-                                    std::memcmp(&h.b2, &hits[i].b2, 4) == 0 && h.prim == hits[i].prim &&
-                                    h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0));
-        if (same) continue;
-        const bool robust_alone = hit && robust_hit(prims.triangles[h.prim], packet[i], h.t);
-        const bool robust_packet = got && robust_hit(prims.triangles[hits[i].prim], packet[i], hits[i].t);
-        const bool packet_nearer_spurious = got && !robust_packet && hits[i].t <= h.t;
-        const bool alone_nearer_spurious = hit && !robust_alone && h.t <= hits[i].t;
-        if ((robust_alone && !packet_nearer_spurious) || (robust_packet && !alone_nearer_spurious))
-          return "intersect_packet() and intersect() disagree";
-      }
-    }
-  }
-  return "";
 }
 
 std::string texture_file(const uint8_t* data, size_t size) {
