@@ -16,11 +16,27 @@
 
 namespace rt {
 
-// Whether the line meets the box at all (the ray's interval ignored). Monotone in the box: a line
-// that meets a box meets every box around it, so a tree of boxes never loses a child.
-inline bool line_meets_box(const Aabb& box, const Ray& line) {
+// The stretch of a ray's line whose CSG boundaries a query uses. Spans are found along the whole
+// line (a ray that starts inside a solid must find where it leaves), but an operand whose box the
+// line meets only outside [lo, hi] has no boundary there, and union, merge, intersection and
+// difference all act point by point: leaving it out changes the result only outside [lo, hi].
+struct CsgReach {
+  Ray line;  // the ray with its interval ignored
+  float lo = -kInfinity, hi = kInfinity;
+
+  // The whole line: every span of the solid.
+  static CsgReach whole(const Ray& ray);
+  // The ray's interval, widened by far more than rounding: a box's distances along the line and a
+  // boundary's own are worked out apart, and a boundary just inside the interval must not be lost.
+  static CsgReach of(const Ray& ray);
+};
+
+// Whether the line meets the box within [reach.lo, reach.hi]. Monotone in the box: a line that
+// meets a box meets every box around it, so a tree of boxes never loses a child.
+inline bool reach_meets_box(const Aabb& box, const CsgReach& reach) {
   if (box.empty()) return false;
-  float t0 = -kInfinity, t1 = kInfinity;
+  const Ray& line = reach.line;
+  float t0 = reach.lo, t1 = reach.hi;
   for (int a = 0; a < 3; ++a) {
     const float o = line.origin[a], d = line.direction[a];
     if (d == 0.0f) {
@@ -43,9 +59,9 @@ class CsgChildIndex {
   // `children`: the operation's child node indices, ascending; `bounds[i]`: child i's box.
   CsgChildIndex(const std::vector<uint32_t>& children, const std::vector<Aabb>& bounds);
 
-  // The children whose boxes the line meets, ascending, into out[0..capacity); their count, or -1
-  // when more than `capacity` do (the caller then walks every child).
-  int met(const Ray& line, uint32_t* out, int capacity) const;
+  // The children whose boxes the line meets within the reach, ascending, into out[0..capacity);
+  // their count, or -1 when more than `capacity` do (the caller then walks every child).
+  int met(const CsgReach& reach, uint32_t* out, int capacity) const;
   // How many children the operation has.
   uint32_t size() const { return static_cast<uint32_t>(items_.size()); }
 

@@ -98,19 +98,21 @@ void CsgObject::finish(bool index_children) {
 }
 
 void CsgObject::spans(const Ray& ray, CsgSpanList& out) const {
-  Ray line = ray;
-  line.tmin = -kInfinity;
-  line.tmax = kInfinity;
   out.clear();
-  if (!nodes_.empty()) node_spans(0, line, out);
+  if (!nodes_.empty()) node_spans(0, CsgReach::whole(ray), out);
 }
 
-void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) const {
+void CsgObject::spans_in_reach(const Ray& ray, CsgSpanList& out) const {
+  out.clear();
+  if (!nodes_.empty()) node_spans(0, CsgReach::of(ray), out);
+}
+
+void CsgObject::node_spans(uint32_t index, const CsgReach& reach, CsgSpanList& out) const {
   const CsgNode& n = nodes_[index];
   out.clear();
-  if (!line_meets_box(n.bounds, line)) return;
+  if (!reach_meets_box(n.bounds, reach)) return;
   if (n.leaf) {
-    leaf_spans(n, line, out);
+    leaf_spans(n, reach.line, out);
     return;
   }
   const bool cuts = n.op == CsgOp::kIntersection || n.op == CsgOp::kDifference;
@@ -123,10 +125,10 @@ void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) co
   const auto take = [&](uint32_t child, bool last) {
     if (!result) {
       CsgSpanList& first = last ? out : lists[0];
-      node_spans(child, line, first);
+      node_spans(child, reach, first);
       result = &first;
     } else {
-      node_spans(child, line, operand);
+      node_spans(child, reach, operand);
       if (operand.empty() && n.op != CsgOp::kIntersection) return true;
       CsgSpanList& next = last ? out : lists[result == &lists[0] ? 1 : 0];
       csg_combine(n.op, *result, operand, next);
@@ -138,11 +140,11 @@ void CsgObject::node_spans(uint32_t index, const Ray& line, CsgSpanList& out) co
     if (result && result != &out) out = *result;
   };
   if (n.child_index != CsgNode::kNoChildIndex) {
-    // Only the children whose boxes the line meets: the others have no spans, which union, merge
-    // and difference skip and which empty an intersection.
+    // Only the children whose boxes the line meets within the reach: the others have no spans
+    // there, which union, merge and difference skip and which empty an intersection.
     constexpr int kMet = 256;
     uint32_t met[kMet];
-    const int count = child_indices_[n.child_index].met(line, met, kMet);
+    const int count = child_indices_[n.child_index].met(reach, met, kMet);
     if (count >= 0) {
       const bool first_met = count > 0 && met[0] == index + 1;
       if (cuts && !first_met) return;
@@ -233,7 +235,7 @@ bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray
 
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
   CsgSpanList spans;
-  csg.spans(ray, spans);
+  csg.spans_in_reach(ray, spans);
   float best = ray.tmax;
   const CsgBoundary* found = nullptr;
   bool leaving = false;

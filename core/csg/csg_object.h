@@ -2,7 +2,8 @@
 // prefix order, and the operand surfaces (analytic shapes and placed closed meshes) in world
 // placement. The BVH sees one primitive with the tree's bound; a ray that reaches it is answered
 // by span lists along its whole line (core/csg/csg_spans.h), so a ray that starts inside the
-// solid (a refracted ray in a lens) finds the right boundary. Built per frame by the scene graph,
+// solid (a refracted ray in a lens) finds the right boundary; operands the line meets only
+// outside the ray's interval are left out (CsgReach). Built per frame by the scene graph,
 // read-only afterwards; a query allocates nothing.
 #pragma once
 
@@ -65,9 +66,13 @@ class CsgObject {
 
   // The solid's spans along the whole line of `ray` (its interval ignored).
   void spans(const Ray& ray, CsgSpanList& out) const;
+  // Spans whose boundaries in ray's interval are exactly those of spans(): operands the line
+  // meets only outside it are left out (CsgReach), so spans wholly outside may be missing or
+  // differ. What a ray's hits and crossings need, for less work than the whole line.
+  void spans_in_reach(const Ray& ray, CsgSpanList& out) const;
 
  private:
-  void node_spans(uint32_t node, const Ray& line, CsgSpanList& out) const;
+  void node_spans(uint32_t node, const CsgReach& reach, CsgSpanList& out) const;
   void leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& out) const;
 
   std::vector<CsgNode> nodes_;
@@ -107,20 +112,37 @@ bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit);
 // rounding. Worked out per boundary, and only past ray.tmin: a die with 21 pips has 22 spaces.
 bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray);
 
-// Calls visit(hit) for each boundary in reach before ray.tmax, nearest first, with hit.prim = id.
-// Returns true when the visitor asked to stop.
+// Calls visit(hit) for each boundary in reach before ray.tmax, nearest first (equal distances in
+// the list's order), with hit.prim = id. Returns true when the visitor asked to stop.
+// A union's spans overlap, so its boundaries are not in order along the list: they are sorted
+// here, which also makes the order independent of the operands the reach leaves out (a merged
+// span's entry behind the ray moves with them).
 template <class Visitor>
 bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visitor& visit) {
   CsgSpanList spans;
-  csg.spans(ray, spans);
+  csg.spans_in_reach(ray, spans);
+  struct Crossing {
+    const CsgSpan* span;
+    bool leaving;
+    float t() const { return leaving ? span->out.t : span->in.t; }
+  };
+  Crossing crossings[2 * CsgSpanList::kCapacity];
+  int count = 0;
   for (const CsgSpan& s : spans) {
     if (s.in.t >= ray.tmax) break;
     for (int leaving = 0; leaving < 2; ++leaving) {
       const CsgBoundary& b = leaving ? s.out : s.in;
       if (!(b.t < ray.tmax) || !csg_boundary_in_reach(csg, b, ray)) continue;
-      const Hit hit = csg_hit(b, leaving != 0, s.medium, id);
-      if (visit(hit)) return true;
+      // Insertion in order: a normal list's boundaries come in order, and stay where they are.
+      int k = count++;
+      for (; k > 0 && crossings[k - 1].t() > b.t; --k) crossings[k] = crossings[k - 1];
+      crossings[k] = Crossing{&s, leaving != 0};
     }
+  }
+  for (int k = 0; k < count; ++k) {
+    const CsgSpan& s = *crossings[k].span;
+    const bool leaving = crossings[k].leaving;
+    if (visit(csg_hit(leaving ? s.out : s.in, leaving, s.medium, id))) return true;
   }
   return false;
 }

@@ -81,6 +81,31 @@ TriangleMesh cube_mesh() {
   return m;
 }
 
+// 3 x 400 spheres under union, merge, difference (a slab minus them) and an intersection of 40
+// overlapping ones, nested; `index`: whether operations of many children get their child index.
+CsgObject many_operands(bool index) {
+  Rng rng(5);
+  const auto random_sphere = [&](float spread, float radius) {
+    return sphere(Vec3(spread * (2 * rng.next_float() - 1), spread * (2 * rng.next_float() - 1),
+                       0.5f * spread * (2 * rng.next_float() - 1)),
+                  radius * (0.5f + rng.next_float()));
+  };
+  CsgObject c;
+  const uint32_t root = c.open(CsgOp::kUnion);
+  for (const CsgOp op : {CsgOp::kUnion, CsgOp::kMerge, CsgOp::kDifference}) {
+    const uint32_t node = c.open(op);
+    if (op == CsgOp::kDifference) leaf(c, cube(Vec3(0), 3.0f));
+    for (int i = 0; i < 400; ++i) leaf(c, random_sphere(3.0f, 0.2f));
+    c.close(node);
+  }
+  const uint32_t both = c.open(CsgOp::kIntersection);
+  for (int i = 0; i < 40; ++i) leaf(c, sphere(Vec3(0.01f * static_cast<float>(i), 0, 0), 1.0f));
+  c.close(both);
+  c.close(root);
+  c.finish(index);
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("CSG: a lens (two spheres intersected) is entered and left where the spheres say", "[csg]") {
@@ -242,32 +267,9 @@ TEST_CASE("CSG: the BVH's closest and any hits agree with testing every primitiv
 
 TEST_CASE("CSG: an operation of many operands finds through its child index exactly the spans of the plain walk",
           "[csg]") {
-  // 3 x 400 spheres under union, merge, difference (a slab minus them) and an intersection of 40
-  // overlapping ones, nested: each line's spans, with and without the child indices, bit for bit.
-  Rng rng(5);
-  const auto random_sphere = [&](float spread, float radius) {
-    return sphere(Vec3(spread * (2 * rng.next_float() - 1), spread * (2 * rng.next_float() - 1),
-                       0.5f * spread * (2 * rng.next_float() - 1)),
-                  radius * (0.5f + rng.next_float()));
-  };
-  const auto build = [&](bool index) {
-    rng = Rng(5);
-    CsgObject c;
-    const uint32_t root = c.open(CsgOp::kUnion);
-    for (const CsgOp op : {CsgOp::kUnion, CsgOp::kMerge, CsgOp::kDifference}) {
-      const uint32_t node = c.open(op);
-      if (op == CsgOp::kDifference) leaf(c, cube(Vec3(0), 3.0f));
-      for (int i = 0; i < 400; ++i) leaf(c, random_sphere(3.0f, 0.2f));
-      c.close(node);
-    }
-    const uint32_t both = c.open(CsgOp::kIntersection);
-    for (int i = 0; i < 40; ++i) leaf(c, sphere(Vec3(0.01f * static_cast<float>(i), 0, 0), 1.0f));
-    c.close(both);
-    c.close(root);
-    c.finish(index);
-    return c;
-  };
-  const CsgObject indexed = build(true), plain = build(false);
+  // Each line's spans, with and without the child indices, bit for bit.
+  const CsgObject indexed = many_operands(true), plain = many_operands(false);
+  Rng rng(6);
   int spans = 0, differences = 0;
   for (int i = 0; i < 20000; ++i) {
     const Vec3 o(8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1));
@@ -290,4 +292,63 @@ TEST_CASE("CSG: an operation of many operands finds through its child index exac
   }
   CHECK(differences == 0);
   CHECK(spans > 20000);  // the lines do cross the solid, many times
+}
+
+TEST_CASE("CSG: spans found within a ray's reach give exactly the whole line's hits and crossings", "[csg]") {
+  // Rays that start on the solid, inside it and outside, their intervals ending inside it, beyond
+  // it and never: the closest hit and every crossing from the spans in reach (what the BVH asks)
+  // against those the whole line's spans give, bit for bit.
+  const CsgObject solid = many_operands(true);
+  Rng rng(8);
+  int crossings_seen = 0, differences = 0, shorter_lists = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 o(8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1), 8 * (2 * rng.next_float() - 1));
+    const Vec3 target(3 * (2 * rng.next_float() - 1), 3 * (2 * rng.next_float() - 1), 3 * (2 * rng.next_float() - 1));
+    Ray ray = make_ray(o, target - o);  // target at t = 1
+    ray.tmin = i % 3 == 0 ? 0.0f : 1.2f * rng.next_float();
+    ray.tmax = i % 4 == 0 ? kInfinity : ray.tmin + 1.5f * rng.next_float();
+    if (i % 5 == 0) {  // from a boundary of the solid, as a secondary ray leaves it
+      CsgSpanList line;
+      solid.spans(ray, line);
+      if (!line.empty()) {
+        ray.origin = ray.at(line[0].out.t);
+        ray.tmin = 0.0f;
+      }
+    }
+    // The whole line's boundaries in the interval, as visit_csg_crossings takes them.
+    CsgSpanList whole, in_reach;
+    solid.spans(ray, whole);
+    solid.spans_in_reach(ray, in_reach);
+    if (in_reach.size() < whole.size()) ++shorter_lists;
+    std::vector<Hit> expected, found;
+    for (const CsgSpan& s : whole)
+      for (int leaving = 0; leaving < 2; ++leaving) {
+        const CsgBoundary& b = leaving ? s.out : s.in;
+        if (b.t < ray.tmax && csg_boundary_in_reach(solid, b, ray))
+          expected.push_back(csg_hit(b, leaving != 0, s.medium, 7));
+      }
+    std::stable_sort(expected.begin(), expected.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
+    auto collect = [&](const Hit& h) {
+      found.push_back(h);
+      return false;
+    };
+    visit_csg_crossings(solid, 7, ray, collect);
+    crossings_seen += static_cast<int>(found.size());
+    bool same = found.size() == expected.size();
+    for (size_t k = 0; same && k < found.size(); ++k)
+      same = found[k].t == expected[k].t && found[k].operand == expected[k].operand &&
+             found[k].medium == expected[k].medium;
+    // The closest: the nearest of the expected crossings.
+    Hit closest;
+    const bool hit = intersect_csg(solid, ray, closest);
+    const Hit* nearest = nullptr;
+    for (const Hit& h : expected)
+      if (!nearest || h.t < nearest->t) nearest = &h;
+    same = same && hit == (nearest != nullptr) &&
+           (!hit || (closest.t == nearest->t && closest.operand == nearest->operand));
+    if (!same) ++differences;
+  }
+  CHECK(differences == 0);
+  CHECK(crossings_seen > 20000);
+  CHECK(shorter_lists > 2000);  // the reach does leave operands out
 }
