@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/csg/csg_mesh_hits.h"
+#include "core/float_error.h"
 #include "core/shapes/sphere.h"
 
 namespace rt {
@@ -173,7 +174,7 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
       if (!intersect_sphere_twice(r, a, b)) return;
     } else {
       if (!intersect_object_space(first.shape.kind, r, a)) return;
-      r.tmin = std::nextafter(a.t, kInfinity);
+      r.tmin = next_float_up(a.t);
       if (!intersect_object_space(first.shape.kind, r, b)) return;
     }
     out.add(CsgSpan{CsgBoundary{a.t, leaf.first_surface, a.part, 0.0f, 0.0f},

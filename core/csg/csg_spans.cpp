@@ -4,17 +4,12 @@
 
 namespace rt {
 
-void CsgSpanList::add(const CsgSpan& s) {
-  if (!(s.in.t < s.out.t)) return;
-  if (count_ == kCapacity) {
-    truncated_ = true;
-    // Keep the nearer of the new span and the farthest held one.
-    CsgSpan* farthest =
-        std::max_element(spans_, spans_ + count_, [](const CsgSpan& x, const CsgSpan& y) { return x.in.t < y.in.t; });
-    if (s.in.t < farthest->in.t) *farthest = s;
-    return;
-  }
-  spans_[count_++] = s;
+void CsgSpanList::add_to_full(const CsgSpan& s) {
+  truncated_ = true;
+  // Keep the nearer of the new span and the farthest held one.
+  CsgSpan* farthest =
+      std::max_element(spans_, spans_ + count_, [](const CsgSpan& x, const CsgSpan& y) { return x.in.t < y.in.t; });
+  if (s.in.t < farthest->in.t) *farthest = s;
 }
 
 void CsgSpanList::sort_by_entry() {
@@ -111,6 +106,10 @@ void csg_combine(CsgOp op, const CsgSpanList& a, const CsgSpanList& b, CsgSpanLi
     }
     case CsgOp::kIntersection: intersect(a, b, out); return;
     case CsgOp::kDifference: {
+      if (b.size() <= 1) {  // normal already (a shape operand's one span): no copy to make
+        subtract(a, b, out);
+        return;
+      }
       CsgSpanList cut;
       csg_normalise(b, cut);
       subtract(a, cut, out);

@@ -67,11 +67,17 @@ class CsgSpanList {
     truncated_ = false;
   }
   // Appends a span of positive length (an empty or reversed one is no span at all).
-  void add(const CsgSpan& s);
+  void add(const CsgSpan& s) {
+    if (!(s.in.t < s.out.t)) return;
+    if (count_ < kCapacity) spans_[count_++] = s;
+    else add_to_full(s);
+  }
   void sort_by_entry();
   void mark_truncated() { truncated_ = true; }
 
  private:
+  void add_to_full(const CsgSpan& s);
+
   CsgSpan spans_[kCapacity];
   int count_ = 0;
   bool truncated_ = false;

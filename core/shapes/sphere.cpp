@@ -1,5 +1,6 @@
 #include "core/shapes/sphere.h"
 
+#include "core/float_error.h"
 #include "core/shapes/quadratic.h"
 
 namespace rt {
@@ -34,7 +35,7 @@ bool intersect_sphere(const Ray& ray, Hit& hit) {
 bool intersect_sphere_twice(const Ray& ray, Hit& first, Hit& second) {
   double t0, t1;
   return sphere_roots(ray, t0, t1) && nearer_root(t0, t1, ray.tmin, ray.tmax, first) &&
-         nearer_root(t0, t1, std::nextafter(first.t, kInfinity), ray.tmax, second);
+         nearer_root(t0, t1, next_float_up(first.t), ray.tmax, second);
 }
 
 SurfacePatch sphere_patch(Vec3 p, uint32_t /*part*/) {
