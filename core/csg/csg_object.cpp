@@ -18,6 +18,8 @@ Aabb padded(const Aabb& box) {
   return Aabb{box.lo - pad, box.hi + pad};
 }
 
+float frobenius(const Mat3& m) { return std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])); }
+
 Aabb overlap(const Aabb& a, const Aabb& b) { return Aabb{glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)}; }
 
 // Crossings a closed mesh operand can report along one line before the farthest are dropped.
@@ -79,6 +81,13 @@ void CsgObject::finish(bool index_children) {
       first = false;
     }
     if (n.bounds.empty()) n.bounds = Aabb{};
+  }
+  rounding_linear_ = rounding_translation_ = 0.0f;
+  for (const CsgSurface& s : surfaces_) {
+    const Transform& t = s.transform();
+    const float world = frobenius(Mat3(t.to_world));
+    rounding_linear_ = std::max(rounding_linear_, frobenius(Mat3(t.to_object)) * world);
+    rounding_translation_ = std::max(rounding_translation_, glm::length(Vec3(t.to_object[3])) * world);
   }
   // Operations of many children get their children's boxes in a tree (core/csg/csg_child_index.h).
   child_indices_.clear();
@@ -228,8 +237,18 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
   if (dropped) out.mark_truncated();
 }
 
-bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray) {
+float CsgObject::rounding_bound(const Ray& ray) const {
+  // |o| and |d| in the norms that bound the Euclidean from the safe side: |o|_2 <= |o|_1, |d|_2 >= |d|_inf.
+  const Vec3 o = glm::abs(ray.origin), d = glm::abs(ray.direction);
+  const float direction = std::max(d.x, std::max(d.y, d.z));
+  const float bound =
+      2.0f * float_gamma(3) * (rounding_linear_ * (o.x + o.y + o.z) + rounding_translation_) / direction;
+  return bound >= 0.0f ? bound : kInfinity;  // a NaN: ask every surface
+}
+
+bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray, float bound) {
   if (!(b.t > ray.tmin)) return false;
+  if (b.t > ray.tmin + bound) return true;  // then also past the surface's own rounding
   const Transform& t = csg.surface(b.surface).transform();
   return b.t > ray.tmin + origin_rounding(t, ray.origin, t.vector_to_object(ray.direction));
 }
@@ -237,16 +256,17 @@ bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray
 bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit) {
   CsgSpanList spans;
   csg.spans_in_reach(ray, spans);
+  const float bound = csg.rounding_bound(ray);
   float best = ray.tmax;
   const CsgBoundary* found = nullptr;
   bool leaving = false;
   uint32_t medium = 0;
   for (const CsgSpan& s : spans) {
     if (s.in.t >= best) break;  // sorted by entry: nothing nearer follows
-    if (csg_boundary_in_reach(csg, s.in, ray)) {
+    if (csg_boundary_in_reach(csg, s.in, ray, bound)) {
       found = &s.in;
       leaving = false;
-    } else if (s.out.t < best && csg_boundary_in_reach(csg, s.out, ray)) {
+    } else if (s.out.t < best && csg_boundary_in_reach(csg, s.out, ray, bound)) {
       found = &s.out;
       leaving = true;
     } else {

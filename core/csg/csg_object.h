@@ -63,6 +63,12 @@ class CsgObject {
   const CsgSurface& surface(uint32_t i) const { return surfaces_[i]; }
   // Empty when the solid is (an intersection of operands that do not meet).
   Aabb bounds() const { return nodes_.empty() ? Aabb{} : nodes_[0].bounds; }
+  // At least origin_rounding(surface's transform, ray.origin, ...) for every operand surface:
+  // a boundary past ray.tmin by more is in reach without asking its surface (the rounding's
+  // bound, ||e|| / ||d_object||, with e's terms and d_object's stretch bounded by the matrices'
+  // Frobenius norms, and twice that for the float arithmetic of both). Infinite for a zero
+  // direction. Once per ray: csg_boundary_in_reach asks the surface only inside it.
+  float rounding_bound(const Ray& ray) const;
 
   // The solid's spans along the whole line of `ray` (its interval ignored).
   void spans(const Ray& ray, CsgSpanList& out) const;
@@ -77,6 +83,9 @@ class CsgObject {
 
   std::vector<CsgNode> nodes_;
   std::vector<CsgSurface> surfaces_;
+  // rounding_bound's factors, the largest over the surfaces (finish): ||L_object|| ||L_world||
+  // and |T_object| ||L_world||, L the linear parts and T the translation.
+  float rounding_linear_ = 0.0f, rounding_translation_ = 0.0f;
   std::vector<CsgChildIndex> child_indices_;
 };
 
@@ -110,7 +119,8 @@ bool intersect_csg(const CsgObject& csg, const Ray& ray, Hit& hit);
 // whole line, so this is where the rule object_ray applies to one shape (core/transform.h) is
 // applied: a ray leaving the solid's surface must not find it again on this side of the
 // rounding. Worked out per boundary, and only past ray.tmin: a die with 21 pips has 22 spaces.
-bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray);
+// `bound`: csg.rounding_bound(ray), or more; boundaries past ray.tmin + bound need no surface.
+bool csg_boundary_in_reach(const CsgObject& csg, const CsgBoundary& b, const Ray& ray, float bound = kInfinity);
 
 // Calls visit(hit) for each boundary in reach before ray.tmax, nearest first (equal distances in
 // the list's order), with hit.prim = id. Returns true when the visitor asked to stop.
@@ -121,6 +131,7 @@ template <class Visitor>
 bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visitor& visit) {
   CsgSpanList spans;
   csg.spans_in_reach(ray, spans);
+  const float bound = csg.rounding_bound(ray);
   struct Crossing {
     const CsgSpan* span;
     bool leaving;
@@ -132,7 +143,7 @@ bool visit_csg_crossings(const CsgObject& csg, uint32_t id, const Ray& ray, Visi
     if (s.in.t >= ray.tmax) break;
     for (int leaving = 0; leaving < 2; ++leaving) {
       const CsgBoundary& b = leaving ? s.out : s.in;
-      if (!(b.t < ray.tmax) || !csg_boundary_in_reach(csg, b, ray)) continue;
+      if (!(b.t < ray.tmax) || !csg_boundary_in_reach(csg, b, ray, bound)) continue;
       // Insertion in order: a normal list's boundaries come in order, and stay where they are.
       int k = count++;
       for (; k > 0 && crossings[k - 1].t() > b.t; --k) crossings[k] = crossings[k - 1];

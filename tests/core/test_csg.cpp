@@ -352,3 +352,47 @@ TEST_CASE("CSG: spans found within a ray's reach give exactly the whole line's h
   CHECK(crossings_seen > 20000);
   CHECK(shorter_lists > 2000);  // the reach does leave operands out
 }
+
+TEST_CASE("CSG: the origin's rounding bound holds every operand surface's rounding", "[csg]") {
+  // Operands stretched, sheared, turned and far from the world's origin; rays from near and far:
+  // the solid's one bound per ray is never below a surface's own rounding, and a boundary just
+  // past it is in reach by either rule.
+  Rng rng(9);
+  int checked = 0, near_tmin = 0;
+  for (int solid = 0; solid < 50; ++solid) {
+    CsgObject c;
+    const uint32_t root = c.open(CsgOp::kMerge);
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 at = (Vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 0.5f) * 200.0f;
+      const Vec3 turn = Vec3(rng.next_float(), rng.next_float(), rng.next_float()) * 360.0f;
+      const Vec3 scale = Vec3(0.01f) + Vec3(rng.next_float(), rng.next_float(), rng.next_float()) * 20.0f;
+      Mat4 m = compose_trs(at, turn, scale);
+      m[1][0] += 3.0f * rng.next_float();  // a shear
+      CsgSurface s;
+      s.shape = AnalyticShape{k % 2 ? ShapeKind::kCube : ShapeKind::kSphere, 0, *make_transform(m)};
+      leaf(c, s);
+    }
+    c.close(root);
+    c.finish();
+    for (int i = 0; i < 200; ++i) {
+      const float reach = i % 2 ? 1.0f : 1000.0f;
+      const Vec3 o = (Vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 0.5f) * reach;
+      const Vec3 d = (Vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 0.5f) * (i % 3 ? 1.0f : 0.001f);
+      const Ray ray = make_ray(o, d);
+      const float bound = c.rounding_bound(ray);
+      for (const CsgSurface& s : c.surfaces()) {
+        const Transform& t = s.transform();
+        const float own = origin_rounding(t, o, t.vector_to_object(d));
+        CHECK(own <= bound);
+        ++checked;
+        if (own > 0.01f * bound) ++near_tmin;  // the bound is not loose by orders of magnitude
+      }
+      for (const float past : {0.5f, 1.0f, 1.5f, 3.0f}) {
+        const CsgBoundary b{ray.tmin + past * bound, 0, 0, 0.0f, 0.0f};
+        CHECK(csg_boundary_in_reach(c, b, ray, bound) == csg_boundary_in_reach(c, b, ray));
+      }
+    }
+  }
+  CHECK(checked == 50 * 200 * 4);
+  CHECK(near_tmin > checked / 2);
+}
