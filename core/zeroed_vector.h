@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/fresh_pages.h"
+
 namespace rt {
 
 template <class T>
@@ -31,11 +33,14 @@ struct ZeroedAllocator {
   ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}
 
   T* allocate(size_t n) {
-    void* p = std::calloc(n, sizeof(T));
+    void* p = large(n) ? fresh_pages(n * sizeof(T)) : std::calloc(n, sizeof(T));
     if (!p) throw std::bad_alloc();
     return static_cast<T*>(p);
   }
-  void deallocate(T* p, size_t) noexcept { std::free(p); }
+  void deallocate(T* p, size_t n) noexcept {
+    if (large(n)) release_fresh_pages(p, n * sizeof(T));
+    else std::free(p);
+  }
   template <class U>
   void construct(U*) noexcept {}  // fresh storage's bytes are zero already
   template <class U, class... Args>
@@ -43,6 +48,10 @@ struct ZeroedAllocator {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   friend bool operator==(const ZeroedAllocator&, const ZeroedAllocator&) { return true; }
+
+ private:
+  // Large blocks: fresh pages, in 2 MiB pages where the kernel has them (core/fresh_pages.h).
+  static bool large(size_t n) { return n >= kFreshPagesMin / sizeof(T); }
 };
 
 template <class T>

@@ -1,8 +1,10 @@
 // ZeroedVector (core/zeroed_vector.h): growth into fresh storage gives zeros without writing them,
 // also after release() of storage that held values; values asked for are written; a film
-// reallocated over a rendered one starts at zero.
+// reallocated over a rendered one starts at zero; large blocks (fresh pages) behave the same.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
+#include "core/fresh_pages.h"
 #include "core/render/film.h"
 #include "core/zeroed_vector.h"
 
@@ -49,4 +51,30 @@ TEST_CASE("zeroed vector: a film reallocated over a rendered one starts at zero"
   REQUIRE(film.allocate(80, 60, nullptr, true));  // the layers too
   for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
   CHECK(Image(3, 2).pixels == ZeroedVector<Vec3>(6, Vec3(0.0f)));
+}
+
+TEST_CASE("zeroed vector: large blocks are fresh pages, zero, aligned, and grow and shrink as small ones do",
+          "[zeroed]") {
+  // 4 MiB and over: core/fresh_pages.h (2 MiB-aligned kernel pages on Linux; calloc's under ASan).
+  const size_t large = kFreshPagesMin / sizeof(Vec3) + 1;
+  ZeroedVector<Vec3> v(large);
+  if (fresh_pages_from_kernel()) CHECK(reinterpret_cast<uintptr_t>(v.data()) % (size_t{2} << 20) == 0);
+  CHECK(std::count(v.begin(), v.end(), Vec3(0.0f)) == static_cast<std::ptrdiff_t>(large));
+  for (size_t i = 0; i < v.size(); ++i) v[i] = Vec3(static_cast<float>(i));
+  v.resize(large + 123457);  // reallocated into a larger block: the values moved, the rest zero
+  CHECK(v[large - 1] == Vec3(static_cast<float>(large - 1)));
+  CHECK(v[12345] == Vec3(12345.0f));
+  CHECK(std::count(v.begin() + static_cast<std::ptrdiff_t>(large), v.end(), Vec3(0.0f)) == 123457);
+  v.back() = Vec3(5.0f);  // the block's last element is written and read back
+  CHECK(v.back() == Vec3(5.0f));
+  ZeroedVector<Vec3> small(1000, Vec3(1.0f));
+  v.swap(small);  // a large block and a small one change hands and are each given back their own way
+  CHECK(v.size() == 1000);
+  CHECK(small.size() == large + 123457);
+  release(small);
+  release(v);
+  ZeroedVector<uint8_t> bytes(kFreshPagesMin * 3 + 17);  // not a whole number of pages
+  CHECK(std::count(bytes.begin(), bytes.end(), uint8_t{0}) == static_cast<std::ptrdiff_t>(bytes.size()));
+  bytes.back() = 9;
+  CHECK(bytes.back() == 9);
 }
