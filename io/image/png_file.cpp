@@ -28,7 +28,7 @@ std::optional<Rgb8Image> read_png(const std::string& path, std::string& error) {
     return std::nullopt;
   }
   const size_t samples = static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 3;
-  return Rgb8Image{image->width, image->height, std::vector<uint8_t>(image->bytes(), image->bytes() + samples)};
+  return Rgb8Image{image->width, image->height, ZeroedVector<uint8_t>(image->bytes(), image->bytes() + samples)};
 }
 
 bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads) {

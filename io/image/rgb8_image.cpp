@@ -11,7 +11,7 @@
 namespace rt {
 
 Rgb8Image encode_srgb8(const Image& image, const DisplayTransform& display, unsigned threads) {
-  Rgb8Image out{image.width, image.height, std::vector<uint8_t>(image.pixels.size() * 3)};
+  Rgb8Image out{image.width, image.height, ZeroedVector<uint8_t>(image.pixels.size() * 3)};
   const bool identity = display.identity();
   const Srgb8Table& codes = srgb8_table();
   // In bands of rows on every thread: on one, a 1920x1440 render waited 4% of its time here.
@@ -36,7 +36,7 @@ Rgb8Image encode_display8(const Image& image, const DisplayTransform& display, c
   if (display.exposure != 0.0f)
     for (Vec3& p : pixels) p *= std::exp2(display.exposure);
   view->apply(pixels);
-  Rgb8Image out{image.width, image.height, std::vector<uint8_t>(pixels.size() * 3)};
+  Rgb8Image out{image.width, image.height, ZeroedVector<uint8_t>(pixels.size() * 3)};
   uint8_t* dst = out.rgb.data();
   for (const Vec3& p : pixels)
     for (int c = 0; c < 3; ++c) *dst++ = static_cast<uint8_t>(std::lround(p[c] * 255.0f));

@@ -7,13 +7,17 @@
 
 #include "core/image.h"
 #include "core/tone_map.h"
+#include "core/zeroed_vector.h"
 
 namespace rt {
 
 struct Rgb8Image {
   int width = 0;
   int height = 0;
-  std::vector<uint8_t> rgb;  // row-major, 3 bytes per pixel, row 0 at the top
+  // Row-major, 3 bytes per pixel, row 0 at the top. Zeroed, not written, when made: the encoding
+  // threads write every byte right after, and a 1920 x 1440 image's 8 MB zeroed on the main
+  // thread first cost 3% of antialias.json's wall time.
+  ZeroedVector<uint8_t> rgb;
 };
 
 // 8-bit output: each linear channel through the display transform (exposure and tone curve,

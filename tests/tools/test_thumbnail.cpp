@@ -7,7 +7,7 @@
 namespace {
 
 rt::Rgb8Image columns(int width, int height) {  // black and white columns, one pixel each
-  rt::Rgb8Image image{width, height, std::vector<uint8_t>(static_cast<size_t>(width * height) * 3)};
+  rt::Rgb8Image image{width, height, rt::ZeroedVector<uint8_t>(static_cast<size_t>(width * height) * 3)};
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) image.rgb[static_cast<size_t>((y * width + x) * 3 + c)] = x % 2 ? 255 : 0;

@@ -32,7 +32,7 @@ ImageDifference compare_images(const Rgb8Image& a, const Rgb8Image& b, int thres
 }
 
 Rgb8Image difference_image(const Rgb8Image& a, const Rgb8Image& b) {
-  Rgb8Image out{a.width, a.height, std::vector<uint8_t>(a.rgb.size(), 0)};
+  Rgb8Image out{a.width, a.height, ZeroedVector<uint8_t>(a.rgb.size())};
   for (size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
     out.rgb[i] = static_cast<uint8_t>(std::min(255, 8 * std::abs(int(a.rgb[i]) - int(b.rgb[i]))));
   return out;

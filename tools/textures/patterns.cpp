@@ -167,7 +167,7 @@ const std::vector<Pattern>& patterns() {
 }
 
 Rgb8Image render_pattern(const Pattern& p) {
-  Rgb8Image image{p.width, p.height, std::vector<uint8_t>(static_cast<size_t>(p.width) * p.height * 3)};
+  Rgb8Image image{p.width, p.height, ZeroedVector<uint8_t>(static_cast<size_t>(p.width) * p.height * 3)};
   constexpr int kSub = 4;
   for (int y = 0; y < p.height; ++y)
     for (int x = 0; x < p.width; ++x) {

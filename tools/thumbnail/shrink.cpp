@@ -37,7 +37,7 @@ Rgb8Image shrink_image(const Rgb8Image& image, int width) {
   const auto xs = footprints(image.width, width), ys = footprints(image.height, height);
   std::vector<float> linear(256);
   for (int v = 0; v < 256; ++v) linear[static_cast<size_t>(v)] = srgb_decode(static_cast<float>(v) / 255.0f);
-  Rgb8Image out{width, height, std::vector<uint8_t>(static_cast<size_t>(width) * static_cast<size_t>(height) * 3)};
+  Rgb8Image out{width, height, ZeroedVector<uint8_t>(static_cast<size_t>(width) * static_cast<size_t>(height) * 3)};
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       float sum[3] = {0, 0, 0};

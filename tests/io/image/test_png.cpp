@@ -42,7 +42,7 @@ TEST_CASE("sRGB table encodes exactly as the formula", "[io][png]") {
 TEST_CASE("PNG encoder: read back equal, bytes independent of the thread count", "[io][png]") {
   for (const auto& [w, h] : {std::pair{1, 1}, std::pair{37, 64}, std::pair{200, 131}, std::pair{3, 300}}) {
     INFO(w << "x" << h);
-    Rgb8Image image{w, h, std::vector<uint8_t>(static_cast<size_t>(w) * static_cast<size_t>(h) * 3)};
+    Rgb8Image image{w, h, ZeroedVector<uint8_t>(static_cast<size_t>(w) * static_cast<size_t>(h) * 3)};
     Rng rng(static_cast<uint64_t>(w * h));
     for (size_t i = 0; i < image.rgb.size(); ++i)  // gradients with noise: exercises Sub filtering
       image.rgb[i] = static_cast<uint8_t>((i / 3 % static_cast<size_t>(w)) * 2 + i % 3 * 40 + (rng.next_u32() & 7));
