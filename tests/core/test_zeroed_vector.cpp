@@ -1,9 +1,11 @@
 // ZeroedVector (core/zeroed_vector.h): growth into fresh storage gives zeros without writing them,
 // also after release() of storage that held values; values asked for are written; a film
-// reallocated over a rendered one starts at zero; large blocks (fresh pages) behave the same.
+// reallocated over a rendered one starts at zero; large blocks (fresh pages), FillVector's too,
+// behave the same.
 #include <algorithm>
 #include <catch2/catch.hpp>
 
+#include "core/fill_vector.h"
 #include "core/fresh_pages.h"
 #include "core/render/film.h"
 #include "core/zeroed_vector.h"
@@ -77,4 +79,27 @@ TEST_CASE("zeroed vector: large blocks are fresh pages, zero, aligned, and grow 
   CHECK(std::count(bytes.begin(), bytes.end(), uint8_t{0}) == static_cast<std::ptrdiff_t>(bytes.size()));
   bytes.back() = 9;
   CHECK(bytes.back() == 9);
+}
+
+TEST_CASE("fill vector: large blocks are fresh pages too, and keep what was written as they grow", "[zeroed]") {
+  // FillVector (core/fill_vector.h), the BVH's nodes, slots and quads: default-initialised
+  // elements, written in full after; 4 MiB and over in fresh pages as ZeroedVector's.
+  const size_t large = kFreshPagesMin / sizeof(uint32_t) + 5;
+  FillVector<uint32_t> v;
+  v.resize(large);
+  if (fresh_pages_from_kernel()) CHECK(reinterpret_cast<uintptr_t>(v.data()) % (size_t{2} << 20) == 0);
+  for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<uint32_t>(3 * i + 1);
+  v.resize(2 * large);  // a larger block: the values moved
+  size_t kept = 0;
+  for (size_t i = 0; i < large; ++i) kept += v[i] == static_cast<uint32_t>(3 * i + 1);
+  CHECK(kept == large);
+  v.back() = 7u;
+  CHECK(v.back() == 7u);
+  FillVector<uint32_t> small(10, 2u);
+  v.swap(small);
+  CHECK(v.size() == 10);
+  CHECK(small.size() == 2 * large);
+  small.clear();
+  small.shrink_to_fit();  // the large block given back
+  CHECK(small.capacity() == 0);
 }
