@@ -15,6 +15,7 @@
 
 #if !defined(RT_FRESH_PAGES_CALLOC)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace rt {
@@ -24,9 +25,13 @@ namespace rt {
 namespace {
 
 constexpr size_t kHugePage = size_t{2} << 20;
-constexpr size_t kPage = size_t{4} << 10;
 
-size_t whole_pages(size_t bytes) { return (bytes + kPage - 1) / kPage * kPage; }
+// In the system's pages (4 KiB on x86-64; 16 or 64 KiB on some ARM kernels), so that every
+// munmap below starts and ends on a page boundary.
+size_t whole_pages(size_t bytes) {
+  const auto page = static_cast<size_t>(getpagesize());
+  return (bytes + page - 1) / page * page;
+}
 
 }  // namespace
 
