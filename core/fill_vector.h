@@ -24,13 +24,13 @@ struct DefaultInitAllocator : std::allocator<T> {
     using other = DefaultInitAllocator<U>;
   };
   T* allocate(size_t n) {
-    if (!large(n)) return std::allocator<T>::allocate(n);
+    if (!fresh_pages_for<T>(n)) return std::allocator<T>::allocate(n);
     void* p = fresh_pages(n * sizeof(T));
     if (!p) throw std::bad_alloc();
     return static_cast<T*>(p);
   }
   void deallocate(T* p, size_t n) noexcept {
-    if (large(n)) release_fresh_pages(p, n * sizeof(T));
+    if (fresh_pages_for<T>(n)) release_fresh_pages(p, n * sizeof(T));
     else std::allocator<T>::deallocate(p, n);
   }
   template <class U>
@@ -41,9 +41,6 @@ struct DefaultInitAllocator : std::allocator<T> {
   void construct(U* p, Args&&... args) {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
-
- private:
-  static bool large(size_t n) { return n >= kFreshPagesMin / sizeof(T); }
 };
 
 template <class T>

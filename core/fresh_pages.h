@@ -14,6 +14,13 @@ namespace rt {
 // Blocks at least this large come from fresh_pages; smaller ones from calloc.
 inline constexpr size_t kFreshPagesMin = size_t{4} << 20;
 
+// Whether n elements of T make a block for fresh_pages (ZeroedVector's and FillVector's
+// allocators ask), without working out n * sizeof(T), which may overflow.
+template <class T>
+constexpr bool fresh_pages_for(size_t n) {
+  return n >= kFreshPagesMin / sizeof(T);
+}
+
 // `bytes` of zeros, aligned to 2 MiB; nullptr when the system has no such memory to give.
 void* fresh_pages(size_t bytes) noexcept;
 // Gives back a block of fresh_pages(bytes).

@@ -33,12 +33,13 @@ struct ZeroedAllocator {
   ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}
 
   T* allocate(size_t n) {
-    void* p = large(n) ? fresh_pages(n * sizeof(T)) : std::calloc(n, sizeof(T));
+    // Large blocks: fresh pages, in 2 MiB pages where the kernel has them (core/fresh_pages.h).
+    void* p = fresh_pages_for<T>(n) ? fresh_pages(n * sizeof(T)) : std::calloc(n, sizeof(T));
     if (!p) throw std::bad_alloc();
     return static_cast<T*>(p);
   }
   void deallocate(T* p, size_t n) noexcept {
-    if (large(n)) release_fresh_pages(p, n * sizeof(T));
+    if (fresh_pages_for<T>(n)) release_fresh_pages(p, n * sizeof(T));
     else std::free(p);
   }
   template <class U>
@@ -48,10 +49,6 @@ struct ZeroedAllocator {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   friend bool operator==(const ZeroedAllocator&, const ZeroedAllocator&) { return true; }
-
- private:
-  // Large blocks: fresh pages, in 2 MiB pages where the kernel has them (core/fresh_pages.h).
-  static bool large(size_t n) { return n >= kFreshPagesMin / sizeof(T); }
 };
 
 template <class T>
