@@ -3,13 +3,13 @@
 # sudo otherwise. If neither works it lists the packages to install and fails. Extra package
 # names given as arguments are installed too (tools/fuzz.sh and --sanitize add clang's).
 # With --tests first, the optional test tools (chromium, for the gallery's browser test; slurm-wlm
-# and munge, for the farm test on a one-node cluster; blender with python3-numpy, and xvfb with
+# munge and procps's pgrep, for the farm test on a one-node cluster; blender with python3-numpy, and xvfb with
 # xauth for its window, for the Blender add-on's tests; povray, for rtcli bench --against povray's) are tried after them; a failure to install
 # one is said but does not stop the build (that test then says it is skipped). tools/test.sh passes it; quickstart and the fuzzers do not need them.
 set -euo pipefail
 optional=()
 if [ "${1:-}" = "--tests" ]; then
-  optional=(chromium slurm-wlm munge blender python3-numpy xvfb xauth povray)
+  optional=(chromium slurm-wlm munge procps blender python3-numpy xvfb xauth povray)
   shift
 fi
 
