@@ -14,13 +14,13 @@ namespace {
 constexpr int kKeyCells = 64;
 static_assert(kKeyCells >= 4 << kMaxAdaptiveDepth);
 
-// Takes the border a neighbour left, or (at the image border, or after a cancel) a border of
+// Takes the border a neighbour left into `border`, whose buffer goes to the neighbour's entry in
+// its place (never read again); or (at the image border, or after a cancel) fills `border` with
 // `size` points none of which is known yet.
-std::vector<LatticeSample> take_border(std::vector<std::vector<LatticeSample>>& borders, int tile, size_t size) {
-  std::vector<LatticeSample> border;
-  if (tile >= 0) border = std::move(borders[static_cast<size_t>(tile)]);
-  if (border.size() != size) border.assign(size, LatticeSample{});
-  return border;
+void take_border(std::vector<std::vector<LatticeSample>>& borders, int tile, size_t size,
+                 std::vector<LatticeSample>& border) {
+  if (tile >= 0) border.swap(borders[static_cast<size_t>(tile)]);
+  if (tile < 0 || border.size() != size) border.assign(size, LatticeSample{});
 }
 
 Vec3 average(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (a + b + c + d) * 0.25f; }
@@ -87,13 +87,17 @@ struct AdaptiveSampler::RowLattice {
   uint32_t generation = 0;
   std::vector<uint32_t> counted;
 
-  RowLattice(int cells, int width)
-      : n(cells),
-        columns(width * cells + 1),
-        step(kKeyCells / cells),
-        points(static_cast<size_t>(cells + 1) * static_cast<size_t>(columns)),
-        known(points.size(), 0),
-        counted(static_cast<size_t>(cells + 1) * static_cast<size_t>(cells + 1), 0) {}
+  // For a tile `width` pixels wide, no point known. The points' old values stay (known says
+  // which are traced): writing 130 KB of empty samples a tile cost more than the buffers did.
+  void reset(int cells, int width) {
+    n = cells;
+    columns = width * cells + 1;
+    step = kKeyCells / cells;
+    points.resize(static_cast<size_t>(cells + 1) * static_cast<size_t>(columns));
+    known.assign(points.size(), 0);
+    counted.assign(static_cast<size_t>(cells + 1) * static_cast<size_t>(cells + 1), 0);
+    generation = 0;
+  }
   // Point `c` of row j.
   size_t at(int c, int j) const { return static_cast<size_t>(j) * static_cast<size_t>(columns) + c; }
   // The current pixel's point (i, j), i and j in [0, n].
@@ -124,6 +128,12 @@ struct AdaptiveSampler::RowLattice {
   }
 };
 
+// A worker's lattice and tile borders (take_border swaps the borders' buffers with the table's).
+struct AdaptiveSampler::CornerBuffers final : SamplerWorkspace {
+  RowLattice lattice;
+  std::vector<LatticeSample> above, left, right;
+};
+
 AdaptiveSampler::AdaptiveSampler(const AntialiasSettings& settings, const TileGrid& grid)
     : threshold_levels_(settings.threshold * 255.0f),
       max_depth_(std::clamp(settings.max_depth, 0, kMaxAdaptiveDepth)),
@@ -132,6 +142,11 @@ AdaptiveSampler::AdaptiveSampler(const AntialiasSettings& settings, const TileGr
       grid_(grid),
       right_borders_(static_cast<size_t>(grid.count())),
       bottom_borders_(static_cast<size_t>(grid.count())) {}
+
+std::unique_ptr<SamplerWorkspace> AdaptiveSampler::make_workspace() const {
+  if (positions_ != SamplePositions::kCorners) return nullptr;
+  return std::make_unique<CornerBuffers>();
+}
 
 bool AdaptiveSampler::render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) {
   return positions_ == SamplePositions::kCorners ? render_corners(tile, ctx, out) : render_centres(tile, ctx, out);
@@ -202,12 +217,17 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
   const int n = cells_;
   // Lattice points along the tile's top border (the bottom of the tile above) and along its left
   // border (the right of the tile to the left); this tile's right border, filled row by row.
-  std::vector<LatticeSample> above =
-      take_border(bottom_borders_, grid_.above(tile.index), static_cast<size_t>(tile.width() * n + 1));
-  const std::vector<LatticeSample> left_border =
-      take_border(right_borders_, grid_.left(tile.index), static_cast<size_t>(tile.height() * n + 1));
-  std::vector<LatticeSample> right_border(static_cast<size_t>(tile.height() * n + 1));
-  RowLattice lattice(n, tile.width());
+  CornerBuffers own;
+  auto* const kept = dynamic_cast<CornerBuffers*>(ctx.workspace);
+  CornerBuffers& buffers = kept ? *kept : own;
+  std::vector<LatticeSample>& above = buffers.above;
+  take_border(bottom_borders_, grid_.above(tile.index), static_cast<size_t>(tile.width() * n + 1), above);
+  const std::vector<LatticeSample>& left_border = buffers.left;
+  take_border(right_borders_, grid_.left(tile.index), static_cast<size_t>(tile.height() * n + 1), buffers.left);
+  std::vector<LatticeSample>& right_border = buffers.right;  // every point written below
+  right_border.resize(static_cast<size_t>(tile.height() * n + 1));
+  RowLattice& lattice = buffers.lattice;
+  lattice.reset(n, tile.width());
   const int columns = lattice.columns;
   for (int c = 0; c < columns; ++c) lattice.take(c, 0, above[static_cast<size_t>(c)]);
 
@@ -247,9 +267,12 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
   }
   if (grid_.below(tile.index) >= 0) {
     for (int c = 0; c < columns; ++c) lattice.give(c, 0, above[static_cast<size_t>(c)]);
-    bottom_borders_[static_cast<size_t>(tile.index)] = std::move(above);
+    bottom_borders_[static_cast<size_t>(tile.index)].swap(above);
   }
-  if (grid_.right(tile.index) >= 0) right_borders_[static_cast<size_t>(tile.index)] = std::move(right_border);
+  if (grid_.right(tile.index) >= 0) {
+    right_borders_[static_cast<size_t>(tile.index)].swap(right_border);
+    right_border.swap(buffers.left);  // the left border, used, is the next tile's right one
+  }
   return true;
 }
 

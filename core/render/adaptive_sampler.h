@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/render/pixel_sampler.h"
@@ -37,10 +38,12 @@ class AdaptiveSampler final : public PixelSampler {
   AdaptiveSampler(const AntialiasSettings& settings, const TileGrid& grid);
 
   bool shares_tile_borders() const override { return positions_ == SamplePositions::kCorners; }
+  std::unique_ptr<SamplerWorkspace> make_workspace() const override;
   bool render_tile(const Tile& tile, PixelContext& ctx, FilmTile& out) override;
 
  private:
   struct RowLattice;
+  struct CornerBuffers;
   bool render_corners(const Tile& tile, PixelContext& ctx, FilmTile& out);
   bool render_centres(const Tile& tile, PixelContext& ctx, FilmTile& out);
   // Each returns the cell's radiance; `share` is its area as a fraction of the pixel's, with
@@ -57,7 +60,8 @@ class AdaptiveSampler final : public PixelSampler {
   TileGrid grid_;
   // Lattice points along a finished tile's right and bottom borders, kept until the tile right
   // of it or below it takes them. Written and read by different threads: the renderer's
-  // wavefront orders every write before its read.
+  // wavefront orders every write before its read. Each entry is written once and read once, its
+  // buffer swapped with the reader's (CornerBuffers), so that buffers go round, not new ones.
   std::vector<std::vector<LatticeSample>> right_borders_, bottom_borders_;
 };
 

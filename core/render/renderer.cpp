@@ -52,6 +52,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
     RayCounters mine;
     PixelContext ctx{scene,          settings,     *integrator, mine,     frame,
                      control.cancel, &pixels_done, view.camera, view.eye, view.aovs};
+    const std::unique_ptr<SamplerWorkspace> workspace = sampler->make_workspace();
+    ctx.workspace = workspace.get();
     FilmTile tile_film;
     // Every tile is marked done, even one skipped after a cancel, so that no worker waits forever.
     for (int k = next++; k < grid.count(); k = next++) {
