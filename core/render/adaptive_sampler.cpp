@@ -17,33 +17,34 @@ static_assert(kKeyCells >= 4 << kMaxAdaptiveDepth);
 // Takes the border a neighbour left into `border`, whose buffer goes to the neighbour's entry in
 // its place (never read again); or (at the image border, or after a cancel) fills `border` with
 // `size` points none of which is known yet.
-void take_border(std::vector<std::vector<LatticeSample>>& borders, int tile, size_t size,
-                 std::vector<LatticeSample>& border) {
+// The layers are read only where a point is known.
+void take_border(std::vector<LatticeBorder>& borders, int tile, size_t size, bool layers, LatticeBorder& border) {
   if (tile >= 0) border.swap(borders[static_cast<size_t>(tile)]);
-  if (tile < 0 || border.size() != size) border.assign(size, LatticeSample{});
+  if (tile < 0 || border.points.size() != size) border.points.assign(size, LatticeSample{});
+  border.layers.resize(layers ? size : 0);
 }
 
 Vec3 average(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (a + b + c + d) * 0.25f; }
 
 // A cell's four samples' layers, each a quarter of the cell's share of the pixel.
-void add_layers(Aovs& layers, float share, const LatticeSample& a, const LatticeSample& b, const LatticeSample& c,
-                const LatticeSample& d) {
+void add_layers(Aovs& layers, float share, const Aovs& a, const Aovs& b, const Aovs& c, const Aovs& d) {
   const float quarter = 0.25f * share;
-  layers.add(a.aovs, quarter);
-  layers.add(b.aovs, quarter);
-  layers.add(c.aovs, quarter);
-  layers.add(d.aovs, quarter);
+  layers.add(a, quarter);
+  layers.add(b, quarter);
+  layers.add(c, quarter);
+  layers.add(d, quarter);
 }
 
 // Lattice points traced a packet of neighbours at a time: add() queues a point, (x, y) in key
 // units from the image's top-left corner, and where its sample goes; flush() traces what is
-// queued (add() does when the packet is full). A point's random numbers are keyed by its place,
-// so when it is traced changes nothing.
+// queued (add() does when the packet is full), its layers going to `layers_to` (null: none
+// asked). A point's random numbers are keyed by its place, so when it is traced changes nothing.
 class PointBatch {
  public:
   explicit PointBatch(PixelContext& ctx) : ctx_(ctx) {}
-  void add(int64_t x, int64_t y, LatticeSample* to) {
+  void add(int64_t x, int64_t y, LatticeSample* to, Aovs* layers_to) {
     to_[batch_.count] = to;
+    layers_to_[batch_.count] = layers_to;
     CameraSample& c = batch_.add(ctx_, static_cast<uint64_t>(y) << 32 | static_cast<uint64_t>(x), 0, 0);
     c.px = static_cast<float>(x) / kKeyCells;
     c.py = static_cast<float>(y) / kKeyCells;
@@ -56,8 +57,8 @@ class PointBatch {
     for (int i = 0; i < batch_.count; ++i) {
       const Vec3& r = batch_.radiance[i];
       const Vec3 shown = ctx_.settings.display.apply(r);  // what the picture shows of it
-      *to_[i] =
-          LatticeSample{r, {codes.encode(shown.x), codes.encode(shown.y), codes.encode(shown.z)}, true, batch_.aovs[i]};
+      *to_[i] = LatticeSample{r, {codes.encode(shown.x), codes.encode(shown.y), codes.encode(shown.z)}, true};
+      if (layers_to_[i]) *layers_to_[i] = batch_.aovs[i];
     }
     batch_.clear();
   }
@@ -66,6 +67,7 @@ class PointBatch {
   PixelContext& ctx_;
   CameraBatch batch_;
   LatticeSample* to_[kPacketSize];
+  Aovs* layers_to_[kPacketSize];
 };
 
 }  // namespace
@@ -78,6 +80,7 @@ struct AdaptiveSampler::RowLattice {
   int columns = 0;                    // points per row
   int step = 0;                       // key units between neighbouring points
   std::vector<LatticeSample> points;  // n + 1 rows of `columns`
+  std::vector<Aovs> layers;           // the points' layers, when the render asks for them (else empty)
   std::vector<uint8_t> known;         // traced in this row, or taken from a border
   // The current pixel: its top-left corner in key units and its first column, the deepest cell
   // its value averages, and the points its cells used (stamped with the pixel's generation in
@@ -89,11 +92,12 @@ struct AdaptiveSampler::RowLattice {
 
   // For a tile `width` pixels wide, no point known. The points' old values stay (known says
   // which are traced): writing 130 KB of empty samples a tile cost more than the buffers did.
-  void reset(int cells, int width) {
+  void reset(int cells, int width, bool with_layers) {
     n = cells;
     columns = width * cells + 1;
     step = kKeyCells / cells;
     points.resize(static_cast<size_t>(cells + 1) * static_cast<size_t>(columns));
+    layers.resize(with_layers ? points.size() : 0);
     known.assign(points.size(), 0);
     counted.assign(static_cast<size_t>(cells + 1) * static_cast<size_t>(cells + 1), 0);
     generation = 0;
@@ -116,22 +120,36 @@ struct AdaptiveSampler::RowLattice {
     stamp = generation;
     ++used;
   }
-  // Point `c` of row j from a border (ignored if the neighbour did not trace it), and back out.
-  void take(int c, int j, const LatticeSample& s) {
-    if (!s.known) return;
-    points[at(c, j)] = s;
+  Aovs* layers_of(size_t k) { return layers.empty() ? nullptr : &layers[k]; }
+  // Point `c` of row j from point k of a border (ignored if the neighbour did not trace it), and
+  // back out.
+  void take(int c, int j, const LatticeBorder& from, size_t k) {
+    if (!from.points[k].known) return;
+    points[at(c, j)] = from.points[k];
+    if (!layers.empty()) layers[at(c, j)] = from.layers[k];
     known[at(c, j)] = 1;
   }
-  void give(int c, int j, LatticeSample& to) const {
-    if (known[at(c, j)]) to = points[at(c, j)];
-    else to.known = false;
+  void give(int c, int j, LatticeBorder& to, size_t k) const {
+    if (!known[at(c, j)]) {
+      to.points[k].known = false;
+      return;
+    }
+    to.points[k] = points[at(c, j)];
+    if (!layers.empty()) to.layers[k] = layers[at(c, j)];
+  }
+  // Row n's points are row 0's: the row's bottom is the next row's top.
+  void bottom_to_top() {
+    const auto bottom = static_cast<std::ptrdiff_t>(at(0, n));
+    std::copy_n(points.begin() + bottom, columns, points.begin());
+    std::copy_n(known.begin() + bottom, columns, known.begin());
+    if (!layers.empty()) std::copy_n(layers.begin() + bottom, columns, layers.begin());
   }
 };
 
 // A worker's lattice and tile borders (take_border swaps the borders' buffers with the table's).
 struct AdaptiveSampler::CornerBuffers final : SamplerWorkspace {
   RowLattice lattice;
-  std::vector<LatticeSample> above, left, right;
+  LatticeBorder above, left, right;
 };
 
 AdaptiveSampler::AdaptiveSampler(const AntialiasSettings& settings, const TileGrid& grid)
@@ -175,10 +193,10 @@ Vec3 AdaptiveSampler::refine_corners(RowLattice& lattice, int i, int j, int size
   const auto trace_ahead = [&](PointBatch& batch, int ci, int cj) {
     const size_t k = lattice.index(ci, cj);
     if (lattice.known[k]) return;
-    batch.add(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, &lattice.points[k]);
+    batch.add(lattice.x0 + ci * lattice.step, lattice.y0 + cj * lattice.step, &lattice.points[k], lattice.layers_of(k));
     lattice.known[k] = 1;
   };
-  const auto corner = [&](int ci, int cj) -> const LatticeSample& {
+  const auto corner = [&](int ci, int cj) -> size_t {
     const size_t k = lattice.index(ci, cj);
     if (!lattice.known[k]) {
       PointBatch one(ctx);
@@ -186,15 +204,15 @@ Vec3 AdaptiveSampler::refine_corners(RowLattice& lattice, int i, int j, int size
       one.flush();
     }
     lattice.use(ci, cj);
-    return lattice.points[k];
+    return k;
   };
-  const LatticeSample& a = corner(i, j);
-  const LatticeSample& b = corner(i + size, j);
-  const LatticeSample& c = corner(i, j + size);
-  const LatticeSample& d = corner(i + size, j + size);
+  const size_t ka = corner(i, j), kb = corner(i + size, j), kc = corner(i, j + size), kd = corner(i + size, j + size);
+  const LatticeSample &a = lattice.points[ka], &b = lattice.points[kb], &c = lattice.points[kc],
+                      &d = lattice.points[kd];
   if (size == 1 || !differ(a, b, c, d)) {
     lattice.deepest = std::max(lattice.deepest, depth);
-    if (layers) add_layers(*layers, share, a, b, c, d);
+    if (layers)
+      add_layers(*layers, share, lattice.layers[ka], lattice.layers[kb], lattice.layers[kc], lattice.layers[kd]);
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
   const int h = size / 2;
@@ -220,23 +238,25 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
   CornerBuffers own;
   auto* const kept = dynamic_cast<CornerBuffers*>(ctx.workspace);
   CornerBuffers& buffers = kept ? *kept : own;
-  std::vector<LatticeSample>& above = buffers.above;
-  take_border(bottom_borders_, grid_.above(tile.index), static_cast<size_t>(tile.width() * n + 1), above);
-  const std::vector<LatticeSample>& left_border = buffers.left;
-  take_border(right_borders_, grid_.left(tile.index), static_cast<size_t>(tile.height() * n + 1), buffers.left);
-  std::vector<LatticeSample>& right_border = buffers.right;  // every point written below
-  right_border.resize(static_cast<size_t>(tile.height() * n + 1));
+  const auto height_points = static_cast<size_t>(tile.height() * n + 1);
+  LatticeBorder& above = buffers.above;
+  take_border(bottom_borders_, grid_.above(tile.index), static_cast<size_t>(tile.width() * n + 1), ctx.aovs, above);
+  const LatticeBorder& left_border = buffers.left;
+  take_border(right_borders_, grid_.left(tile.index), height_points, ctx.aovs, buffers.left);
+  LatticeBorder& right_border = buffers.right;  // every point written below
+  right_border.points.resize(height_points);
+  right_border.layers.resize(ctx.aovs ? height_points : 0);
   RowLattice& lattice = buffers.lattice;
-  lattice.reset(n, tile.width());
+  lattice.reset(n, tile.width(), ctx.aovs);
   const int columns = lattice.columns;
-  for (int c = 0; c < columns; ++c) lattice.take(c, 0, above[static_cast<size_t>(c)]);
+  for (int c = 0; c < columns; ++c) lattice.take(c, 0, above, static_cast<size_t>(c));
 
   for (int y = tile.y0; y < tile.y1; ++y) {
     const int row = (y - tile.y0) * n;
     // Row 0 holds the bottom of the pixel row above; the rest starts unknown but for the left
     // border's points.
     std::fill(lattice.known.begin() + columns, lattice.known.end(), uint8_t{0});
-    for (int j = 0; j <= n; ++j) lattice.take(0, j, left_border[static_cast<size_t>(row + j)]);
+    for (int j = 0; j <= n; ++j) lattice.take(0, j, left_border, static_cast<size_t>(row + j));
     // The row's pixel corners, which every pixel's first cell needs, traced a packet of
     // neighbours at a time: the upper ones that no tile or row above traced, then the lower ones.
     {
@@ -245,7 +265,8 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
         for (int x = tile.x0; x <= tile.x1; ++x) {
           const size_t k = lattice.at((x - tile.x0) * n, j);
           if (lattice.known[k]) continue;
-          corners.add(int64_t{x} * kKeyCells, (int64_t{y} + j / n) * kKeyCells, &lattice.points[k]);
+          corners.add(int64_t{x} * kKeyCells, (int64_t{y} + j / n) * kKeyCells, &lattice.points[k],
+                      lattice.layers_of(k));
           lattice.known[k] = 1;
         }
       corners.flush();
@@ -258,15 +279,12 @@ bool AdaptiveSampler::render_corners(const Tile& tile, PixelContext& ctx, FilmTi
       pixel.depth = static_cast<uint8_t>(lattice.deepest);
       pixel.samples = static_cast<uint16_t>(lattice.used);
     }
-    for (int j = 0; j <= n; ++j) lattice.give(columns - 1, j, right_border[static_cast<size_t>(row + j)]);
-    // The row's bottom is the next row's top.
-    std::copy_n(lattice.points.begin() + static_cast<std::ptrdiff_t>(lattice.at(0, n)), columns,
-                lattice.points.begin());
-    std::copy_n(lattice.known.begin() + static_cast<std::ptrdiff_t>(lattice.at(0, n)), columns, lattice.known.begin());
+    for (int j = 0; j <= n; ++j) lattice.give(columns - 1, j, right_border, static_cast<size_t>(row + j));
+    lattice.bottom_to_top();
     ctx.row_done(tile.width());
   }
   if (grid_.below(tile.index) >= 0) {
-    for (int c = 0; c < columns; ++c) lattice.give(c, 0, above[static_cast<size_t>(c)]);
+    for (int c = 0; c < columns; ++c) lattice.give(c, 0, above, static_cast<size_t>(c));
     bottom_borders_[static_cast<size_t>(tile.index)].swap(above);
   }
   if (grid_.right(tile.index) >= 0) {
@@ -282,16 +300,18 @@ Vec3 AdaptiveSampler::refine_centres(int x, int y, int size, int depth, float sh
                                      PixelContext& ctx) const {
   const int q = size / 4;
   LatticeSample a, b, c, d;
+  Aovs la, lb, lc, ld;
+  const bool with_layers = ctx.aovs;
   PointBatch centres(ctx);
-  centres.add(x + q, y + q, &a);
-  centres.add(x + 3 * q, y + q, &b);
-  centres.add(x + q, y + 3 * q, &c);
-  centres.add(x + 3 * q, y + 3 * q, &d);
+  centres.add(x + q, y + q, &a, with_layers ? &la : nullptr);
+  centres.add(x + 3 * q, y + q, &b, with_layers ? &lb : nullptr);
+  centres.add(x + q, y + 3 * q, &c, with_layers ? &lc : nullptr);
+  centres.add(x + 3 * q, y + 3 * q, &d, with_layers ? &ld : nullptr);
   centres.flush();
   pixel.samples = static_cast<uint16_t>(pixel.samples + 4);
   if (depth == max_depth_ || !differ(a, b, c, d)) {
     pixel.depth = static_cast<uint8_t>(std::max<int>(pixel.depth, depth));
-    if (ctx.aovs) add_layers(pixel.aovs, share, a, b, c, d);
+    if (with_layers) add_layers(pixel.aovs, share, la, lb, lc, ld);
     return average(a.radiance, b.radiance, c.radiance, d.radiance);
   }
   const int h = size / 2;

@@ -83,6 +83,30 @@ TEST_CASE("AOVs: filled in the same pass, the colour and the rays unchanged, eve
   }
 }
 
+TEST_CASE("AOVs: the adaptive sampler's shared corners carry their layers across tiles, on any thread count",
+          "[render][aov][antialias]") {
+  const LoadedScene s = rt::test::load_scene_text("aovs.json", kScene);
+  RenderSettings whole = s.settings;
+  whole.antialias.mode = "adaptive";
+  whole.antialias.max_depth = 3;
+  whole.tile_size = 64;  // one tile: no border handed on
+  whole.threads = 1;
+  const Pass one = render_pass(s, whole, true);
+  RenderSettings tiled = whole;
+  tiled.tile_size = 7;  // 6 x 5 tiles, each taking its left and upper neighbours' borders
+  for (const int threads : {1, 3}) {
+    tiled.threads = threads;
+    const Pass many = render_pass(s, tiled, true);
+    INFO(threads << " threads");
+    CHECK(many.film.color.pixels == one.film.color.pixels);
+    CHECK(many.film.albedo.pixels == one.film.albedo.pixels);
+    CHECK(many.film.normal.pixels == one.film.normal.pixels);
+    CHECK(many.film.emission.pixels == one.film.emission.pixels);
+    CHECK(many.film.distance == one.film.distance);
+    CHECK(many.film.samples == one.film.samples);
+  }
+}
+
 TEST_CASE("AOVs: a pixel's depth is the nearest surface any of its samples met", "[render][aov]") {
   const LoadedScene s = rt::test::load_scene_text("aovs.json", kScene);
   RenderSettings settings = s.settings;
