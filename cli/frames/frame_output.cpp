@@ -83,6 +83,17 @@ bool FrameSink::add(const Rgb8Image& image, int frame, std::string& error) {
   return true;
 }
 
+bool FrameSink::add(const Image& linear, const DisplayTransform& display, const ViewTransform* view, int frame,
+                    std::string& error) {
+  if (view || (kind_ != OutputKind::kPng && kind_ != OutputKind::kPngSequence))
+    return add(encode_display8(linear, display, view, threads_), frame, error);
+  ++added_;
+  const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
+  if (!write_png(path, srgb8_rows(linear, display), error, threads_)) return false;
+  written_.push_back(path);
+  return true;
+}
+
 bool FrameSink::add_exr(const ExrImage& image, int frame, bool full_float, std::string& error) {
   ++added_;
   const std::string path = kind_ == OutputKind::kExrSequence ? sequence_path(path_, frame) : path_;

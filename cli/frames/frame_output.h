@@ -52,6 +52,11 @@ class FrameSink {
   FrameSink(OutputKind kind, std::string path, int width, int height, float fps, int frames, bool dither,
             unsigned threads);
   bool add(const Rgb8Image& image, int frame, std::string& error);
+  // A rendered frame, linear, shown through `display` or, when given, an OpenColorIO view
+  // (encode_display8). A PNG's rows are encoded as its bands are compressed, with no 8-bit copy
+  // of the whole image (srgb8_rows); the bytes are the same.
+  bool add(const Image& linear, const DisplayTransform& display, const ViewTransform* view, int frame,
+           std::string& error);
   // An EXR output's frame (half floats unless `full_float`).
   bool add_exr(const ExrImage& image, int frame, bool full_float, std::string& error);
   OutputKind kind() const { return kind_; }

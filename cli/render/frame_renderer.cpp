@@ -121,15 +121,13 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
     bool ok = true;
     const DisplayTransform& display = settings.display;
     const ViewTransform* display_view = content.view.get();
-    const unsigned threads = resolve_thread_count(settings.threads);
     if (!stereo.enabled()) {
-      ok = sinks[0].add(encode_display8(picture, display, display_view, threads), frame, error);
+      ok = sinks[0].add(picture, display, display_view, frame, error);
     } else if (stereo.mode == StereoMode::kPair) {
-      ok = sinks[0].add(encode_display8(left, display, display_view, threads), frame, error) &&
-           sinks[1].add(encode_display8(film.color, display, display_view, threads), frame, error);
+      ok = sinks[0].add(left, display, display_view, frame, error) &&
+           sinks[1].add(film.color, display, display_view, frame, error);
     } else {
-      ok = sinks[0].add(encode_display8(compose_stereo(left, film.color, stereo), display, display_view, threads),
-                        frame, error);
+      ok = sinks[0].add(compose_stereo(left, film.color, stereo), display, display_view, frame, error);
     }
     if (!ok) {
       std::fprintf(stderr, "rtcli: error: %s\n", error.c_str());

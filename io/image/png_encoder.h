@@ -13,5 +13,7 @@ namespace rt {
 
 // The complete PNG file (8-bit RGB, no interlacing). Empty only if zlib fails (out of memory).
 std::vector<uint8_t> encode_png(const Rgb8Image& image, unsigned threads = 1);
+// The same from rows made as the bands need them (a render's display encoding, io/image/rgb8_image.h).
+std::vector<uint8_t> encode_png(const Rgb8Rows& rows, unsigned threads = 1);
 
 }  // namespace rt

@@ -32,7 +32,11 @@ std::optional<Rgb8Image> read_png(const std::string& path, std::string& error) {
 }
 
 bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads) {
-  const std::vector<uint8_t> png = encode_png(image, threads);
+  return write_png(path, rows_of(image), error, threads);
+}
+
+bool write_png(const std::string& path, const Rgb8Rows& rows, std::string& error, unsigned threads) {
+  const std::vector<uint8_t> png = encode_png(rows, threads);
   if (png.empty()) {
     error = "PNG encoding failed";
     return false;

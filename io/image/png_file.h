@@ -15,5 +15,7 @@ std::optional<Rgb8Image> read_png(const std::string& path, std::string& error);
 // Writes a PNG through a temporary file and an atomic rename (io/base/atomic_file.h), encoding on up
 // to `threads` threads (the file's bytes do not depend on it).
 bool write_png(const std::string& path, const Rgb8Image& image, std::string& error, unsigned threads = 1);
+// The same from rows made as the encoder needs them (io/image/rgb8_image.h).
+bool write_png(const std::string& path, const Rgb8Rows& rows, std::string& error, unsigned threads = 1);
 
 }  // namespace rt

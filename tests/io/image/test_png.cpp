@@ -60,3 +60,27 @@ TEST_CASE("PNG encoder: read back equal, bytes independent of the thread count",
     CHECK(back->rgb == image.rgb);
   }
 }
+
+TEST_CASE("PNG encoder: a render's rows encoded band by band give the bytes of its whole 8-bit image", "[io][png]") {
+  for (const auto& [w, h] : {std::pair{1, 1}, std::pair{37, 64}, std::pair{200, 131}}) {
+    Image linear(w, h);
+    Rng rng(static_cast<uint64_t>(w + 7 * h));
+    for (Vec3& p : linear.pixels) p = Vec3(rng.next_float() * 1.5f, rng.next_float(), rng.next_float() * 4.0f - 1.0f);
+    linear.pixels[0] = Vec3(NAN, INFINITY, -INFINITY);
+    DisplayTransform filmic;
+    filmic.exposure = 0.7f;
+    filmic.curve = ToneMap::kFilmic;
+    for (const DisplayTransform& display : {DisplayTransform{}, filmic}) {
+      INFO(w << "x" << h << (display.identity() ? "" : ", filmic +0.7"));
+      const std::vector<uint8_t> whole = encode_png(encode_srgb8(linear, display, 2), 1);
+      CHECK(encode_png(srgb8_rows(linear, display), 1) == whole);
+      CHECK(encode_png(srgb8_rows(linear, display), 3) == whole);
+      std::string error;
+      const std::string path = rt::test::output_path("rows.png");
+      REQUIRE(write_png(path, srgb8_rows(linear, display), error, 2));
+      const auto back = read_png(path, error);
+      REQUIRE(back);
+      CHECK(back->rgb == encode_srgb8(linear, display).rgb);
+    }
+  }
+}
