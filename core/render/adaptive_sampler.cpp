@@ -91,7 +91,7 @@ struct AdaptiveSampler::RowLattice {
   std::vector<uint32_t> counted;
 
   // For a tile `width` pixels wide, no point known. The points' old values stay (known says
-  // which are traced): writing 130 KB of empty samples a tile cost more than the buffers did.
+  // which are traced).
   void reset(int cells, int width, bool with_layers) {
     n = cells;
     columns = width * cells + 1;

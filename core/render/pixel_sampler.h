@@ -19,7 +19,8 @@
 namespace rt {
 
 // A worker's own buffers for a sampler's render_tile, made once per worker (make_workspace) and
-// kept from tile to tile: buffers made per tile were 5% of antialias.json's wall.
+// kept from tile to tile: the adaptive sampler's, made and written empty for every tile, cost
+// antialias.json 6% of its wall.
 class SamplerWorkspace {
  public:
   virtual ~SamplerWorkspace() = default;
