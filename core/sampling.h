@@ -60,10 +60,17 @@ inline uint64_t tabled_dimension_key(SamplePurpose purpose, uint64_t path, uint6
 class SampleStream {
  public:
   SampleStream() = default;
+  // What a render's seed and frame make of every point's key, worked out once for many samples.
+  struct FrameKey {
+    uint64_t key = 0;
+  };
+  static FrameKey frame_key(uint64_t seed, uint32_t frame) { return {mix64(mix64(seed) ^ frame)}; }
   // The numbers of one camera sample: the same for the same (seed, frame, point, sample) anywhere.
   SampleStream(uint64_t seed, uint32_t frame, uint64_t point, uint32_t sample,
                SampleSequence sequence = SampleSequence::kSobol)
-      : point_key_(mix64(mix64(mix64(seed) ^ frame) ^ point)),
+      : SampleStream(frame_key(seed, frame), point, sample, sequence) {}
+  SampleStream(FrameKey frame, uint64_t point, uint32_t sample, SampleSequence sequence = SampleSequence::kSobol)
+      : point_key_(mix64(frame.key ^ point)),
         key_(mix64(point_key_ ^ sample)),
         reversed_sample_(reverse_bits(sample)),
         sequence_(sequence) {}

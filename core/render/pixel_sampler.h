@@ -143,6 +143,7 @@ struct CameraBatch {
   Vec3 radiance[kPacketSize];
   Aovs aovs[kPacketSize];
   int count = 0;
+  SampleStream::FrameKey frame;  // the render's seed and frame hashed, once for the packet
 
   bool full() const { return count == kPacketSize; }
   // Queues sample `index` of image point `point` (the render's seed and frame, the context's eye)
@@ -150,8 +151,9 @@ struct CameraBatch {
   // built in the slot: a sample built on the stack and copied in was read back by wide loads of
   // its narrow stores, which stalled (twice measured: see the commits).
   CameraSample& add(const PixelContext& ctx, uint64_t point, uint32_t index, uint32_t t) {
+    if (count == 0) frame = SampleStream::frame_key(ctx.settings.seed, ctx.frame);
     CameraSample& slot = sample[count];
-    std::construct_at(&slot.samples, ctx.settings.seed, ctx.frame, ctx.point_key(point), index, ctx.settings.sampler);
+    std::construct_at(&slot.samples, frame, ctx.point_key(point), index, ctx.settings.sampler);
     slot.spacing = 1.0f;
     tag[count++] = t;
     return slot;
