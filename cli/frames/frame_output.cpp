@@ -76,7 +76,7 @@ FrameSink::FrameSink(OutputKind kind, std::string path, int width, int height, f
 bool FrameSink::add(const Rgb8Image& image, int frame, std::string& error) {
   const size_t index = added_++;
   if (kind_ == OutputKind::kGif) return gif_->add_frame(image, delays_[std::min(index, delays_.size() - 1)], error);
-  const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
+  const std::string path = frame_path(frame);
   if (kind_ == OutputKind::kJpeg ? !write_jpeg(path, image, error) : !write_png(path, image, error, threads_))
     return false;
   written_.push_back(path);
@@ -88,7 +88,7 @@ bool FrameSink::add(const Image& linear, const DisplayTransform& display, const 
   if (view || (kind_ != OutputKind::kPng && kind_ != OutputKind::kPngSequence))
     return add(encode_display8(linear, display, view, threads_), frame, error);
   ++added_;
-  const std::string path = kind_ == OutputKind::kPngSequence ? sequence_path(path_, frame) : path_;
+  const std::string path = frame_path(frame);
   if (!write_png(path, srgb8_rows(linear, display), error, threads_)) return false;
   written_.push_back(path);
   return true;
@@ -96,7 +96,7 @@ bool FrameSink::add(const Image& linear, const DisplayTransform& display, const 
 
 bool FrameSink::add_exr(const ExrImage& image, int frame, bool full_float, std::string& error) {
   ++added_;
-  const std::string path = kind_ == OutputKind::kExrSequence ? sequence_path(path_, frame) : path_;
+  const std::string path = frame_path(frame);
   if (!write_exr(path, image, full_float, error)) return false;
   written_.push_back(path);
   return true;

@@ -65,6 +65,9 @@ class FrameSink {
   const std::vector<std::string>& written() const { return written_; }
 
  private:
+  // Frame `frame`'s file: the sequence's numbered name, or the one file.
+  std::string frame_path(int frame) const { return is_sequence(kind_) ? sequence_path(path_, frame) : path_; }
+
   OutputKind kind_;
   std::string path_;
   unsigned threads_;
