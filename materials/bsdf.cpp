@@ -1,5 +1,6 @@
 #include "materials/bsdf.h"
 
+#include "materials/lobe_power.h"
 #include "materials/optics.h"
 
 namespace rt {
@@ -14,11 +15,11 @@ float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 // gives back only about ks cos(theta_o), so glossy rims went dark.
 float phong_lobe(Vec3 wi, Vec3 wo, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
-  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * std::pow(c, exponent) / std::max(wi.z, wo.z) : 0.0f;
+  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * lobe_power(c, exponent) / std::max(wi.z, wo.z) : 0.0f;
 }
 float phong_pdf(Vec3 wi, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
-  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * std::pow(c, exponent) : 0.0f;
+  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * lobe_power(c, exponent) : 0.0f;
 }
 Vec3 sample_phong(Vec3 r, float exponent, Vec2 u) {
   const float cos_a = std::pow(u.x, 1.0f / (exponent + 1.0f));

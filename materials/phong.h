@@ -4,6 +4,7 @@
 // No energy normalisation: kd and ks are the artist's weights, as in the classic model.
 #pragma once
 
+#include "materials/lobe_power.h"
 #include "materials/optics.h"
 
 namespace rt {
@@ -15,7 +16,7 @@ inline Vec3 phong_reflectance(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 l,
   if (n_dot_l <= 0.0f) return Vec3(0.0f);
   Vec3 result = kd * n_dot_l;
   const float r_dot_v = glm::dot(reflect(-l, n), v);
-  if (r_dot_v > 0.0f) result += ks * std::pow(r_dot_v, shininess);
+  if (r_dot_v > 0.0f) result += ks * lobe_power(r_dot_v, shininess);
   return result;
 }
 

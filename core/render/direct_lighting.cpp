@@ -7,6 +7,7 @@
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
 #include "materials/phong.h"
+#include "materials/phong_batch.h"
 
 namespace rt {
 
@@ -177,6 +178,8 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         }
         RectLightBatch drawn;
         rect_light_batch(*rect, frame, s.position, u, drawn);
+        PhongBatch reflectance;  // lit(...)'s Phong factor for each sample
+        phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, batch, reflectance);
         Vec3 radiance[kPacketSize];
         Ray shadows[kPacketSize];
         int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
@@ -188,14 +191,13 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         if (packets) {
           const unsigned blocked = scene.occluded_packet(shadows, rays);
           for (int j = 0; j < batch; ++j)
-            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u))
-              light_sum += lit(drawn.direction(j), radiance[j], Vec3(1.0f));
+            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += radiance[j] * reflectance[j];
           continue;
         }
         for (int j = 0; j < batch; ++j) {
           if (ray_of[j] < 0) continue;
           const Vec3 visible = shadow_transmittance(scene, shadows[ray_of[j]], reach);
-          if (max_component(visible) > 0.0f) light_sum += lit(drawn.direction(j), radiance[j], visible);
+          if (max_component(visible) > 0.0f) light_sum += visible * radiance[j] * reflectance[j];
         }
       }
     }

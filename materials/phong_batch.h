@@ -1,0 +1,25 @@
+// Phong's reflectance (materials/phong.h) for a batch of light directions at one point, in vector
+// registers: the rect light's samples (core/lights/rect_light_batch.h) come eight at a time, and
+// one by one their dot products and the reflected direction left soft_shadows.json a fifth of its
+// time in direct lighting (docs/benchmark.md, "Round two, a twelfth session"). Each lane performs
+// phong_reflectance's operations in its order: the same floats, lane by lane.
+#pragma once
+
+#include "core/accel/bvh.h"
+#include "core/math.h"
+
+namespace rt {
+
+// The factor that multiplies light j's radiance, one array per channel.
+struct PhongBatch {
+  alignas(32) float r[kPacketSize], g[kPacketSize], b[kPacketSize];
+
+  Vec3 operator[](int j) const { return Vec3(r[j], g[j], b[j]); }
+};
+
+// phong_reflectance(kd, ks, shininess, n, l_j, v) for the unit directions l_j = (dx[j], dy[j],
+// dz[j]), j < count (at most kPacketSize; the lanes past it are left undefined).
+void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy, const float* dz,
+                 int count, PhongBatch& out);
+
+}  // namespace rt
