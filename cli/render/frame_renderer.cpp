@@ -69,6 +69,7 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
                             ? RenderView{&eyes[pass], static_cast<uint32_t>(pass), {}, false}
                             : RenderView{nullptr, 0, content.window, !content.aovs.empty() || denoiser != nullptr};
       if (content.resume) view.resume_from = &*content.resume;
+      view.pixel_counts = job.aa_debug || job.samples_debug;
       view.keep_sums = content.keep_sums;
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
@@ -85,8 +86,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       totals.seconds += totals.last.seconds;
       totals.rays += totals.last.rays;
       totals.pixels_per_pass = static_cast<uint64_t>(film.width()) * static_cast<uint64_t>(film.height());
-      for (const uint8_t d : film.depth) totals.refined += d > 0;
-      for (const uint16_t n : film.samples) totals.samples += n;
+      totals.refined += totals.last.pixels.refined;
+      totals.samples += totals.last.pixels.samples;
       if (content.resume)
         for (const SampleSums& p : *content.resume) totals.resumed_samples += static_cast<uint64_t>(p.n);
       totals.time_passes = totals.last.passes;

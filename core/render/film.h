@@ -1,7 +1,8 @@
 // What a render produces per pixel: the colour, plus the bookkeeping channels a pixel sampler
 // writes beside it: how many camera samples the pixel's value averages, and how deep adaptive
-// anti-aliasing split it (0 = not refined); and when asked, the first hit's layers (aovs.h). Each worker fills a
-// FilmTile; the renderer copies the finished tile into the Film, so no two threads ever write the same memory.
+// anti-aliasing split it (0 = not refined), kept in the Film when asked; and when asked, the first
+// hit's layers (aovs.h). Each worker fills a FilmTile; the renderer copies the finished tile into
+// the Film, so no two threads ever write the same memory.
 #pragma once
 
 #include <algorithm>
@@ -15,6 +16,19 @@
 #include "core/render/tile_grid.h"
 
 namespace rt {
+
+// Over some pixels: how many adaptive anti-aliasing refined, and the camera samples their values
+// average (a render's statistics line).
+struct PixelTotals {
+  uint64_t refined = 0;
+  uint64_t samples = 0;
+
+  PixelTotals& operator+=(const PixelTotals& o) {
+    refined += o.refined;
+    samples += o.samples;
+    return *this;
+  }
+};
 
 struct FilmPixel {
   Vec3 color{0.0f};
@@ -36,6 +50,14 @@ class FilmTile {
   // (x, y) in image coordinates, inside the tile.
   FilmPixel& at(int x, int y) { return pixels_[index(x, y)]; }
   const FilmPixel& at(int x, int y) const { return pixels_[index(x, y)]; }
+  PixelTotals totals() const {
+    PixelTotals t;
+    for (const FilmPixel& p : pixels_) {
+      t.refined += p.depth > 0;
+      t.samples += p.samples;
+    }
+    return t;
+  }
 
  private:
   size_t index(int x, int y) const {
@@ -48,9 +70,13 @@ class FilmTile {
 // The pixels of a window of the image (all of it unless a render asked for part): (0, 0) of
 // `color` and of the channels is the window's corner (x0, y0) of the image.
 struct Film {
-  Image color;                     // linear RGB
-  ZeroedVector<uint16_t> samples;  // per pixel, row-major
-  ZeroedVector<uint8_t> depth;     // per pixel, row-major
+  Image color;  // linear RGB
+  // FilmPixel's samples and depth per pixel, row-major, when the render asked for them
+  // (RenderView::pixel_counts); else empty. Only debug images and the watch page read them, and
+  // at 1920 x 1440 their 8 MB of first touches and stores were 6% of antialias.json's wall
+  // (docs/benchmark.md, "Round two, a twelfth session"): the totals are RenderStats'.
+  ZeroedVector<uint16_t> samples;
+  ZeroedVector<uint8_t> depth;
   // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
   Image albedo, normal, emission;
   std::vector<float> distance;
@@ -65,10 +91,11 @@ struct Film {
   // Sized for width x height pixels, all zero, grown a slice at a time with `cancel` checked in
   // between. The colour, sample and depth channels are ZeroedVectors: a fresh film's are not
   // written here at all (their pages are first touched by the render threads), and a reused
-  // film's storage is given back and taken afresh. With `aovs`, the first hit's layers too: their distance and
-  // variance are written, at 8192 x 8192 a quarter of a gigabyte each, and Ctrl-C must not wait
-  // for them. False (the film left partly grown) once `cancel` is set.
-  bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false) {
+  // film's storage is given back and taken afresh. The sample and depth channels only with
+  // `counts`. With `aovs`, the first hit's layers too: their distance and variance are written, at
+  // 8192 x 8192 a quarter of a gigabyte each, and Ctrl-C must not wait for them. False (the film
+  // left partly grown) once `cancel` is set.
+  bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false, bool counts = true) {
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     color.width = albedo.width = normal.width = emission.width = width;
     color.height = albedo.height = normal.height = emission.height = height;
@@ -83,8 +110,10 @@ struct Film {
     variance.clear();
     sums.clear();
     color.pixels.reserve(n);
-    samples.reserve(n);
-    depth.reserve(n);
+    if (counts) {
+      samples.reserve(n);
+      depth.reserve(n);
+    }
     if (aovs) {
       albedo.pixels.reserve(n);
       normal.pixels.reserve(n);
@@ -93,12 +122,14 @@ struct Film {
       variance.reserve(n);
     }
     constexpr size_t kSlice = size_t{1} << 20;
-    while (samples.size() < n) {
+    while (color.pixels.size() < n) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return false;
-      const size_t next = std::min(n, samples.size() + kSlice);
+      const size_t next = std::min(n, color.pixels.size() + kSlice);
       color.pixels.resize(next);  // zero, not written (ZeroedVector)
-      samples.resize(next);
-      depth.resize(next);
+      if (counts) {
+        samples.resize(next);
+        depth.resize(next);
+      }
       if (aovs) {
         albedo.pixels.resize(next);
         normal.pixels.resize(next);
@@ -110,6 +141,7 @@ struct Film {
     return true;
   }
   bool has_aovs() const { return !distance.empty(); }
+  bool has_counts() const { return !samples.empty(); }
 
   int width() const { return color.width; }
   int height() const { return color.height; }
@@ -120,13 +152,16 @@ struct Film {
   }
   void store(const FilmTile& t) {
     const Tile& r = t.tile();
+    const bool counts = has_counts();
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) {
         const FilmPixel& p = t.at(x, y);
         const size_t i = index(x - x0, y - y0);
         color.pixels[i] = p.color;
-        samples[i] = p.samples;
-        depth[i] = p.depth;
+        if (counts) {
+          samples[i] = p.samples;
+          depth[i] = p.depth;
+        }
         if (has_aovs()) {
           albedo.pixels[i] = p.aovs.albedo;
           normal.pixels[i] = p.aovs.normal;

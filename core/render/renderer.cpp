@@ -25,7 +25,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
 
   film.x0 = window.x0;
   film.y0 = window.y0;
-  if (!film.allocate(window.width(), window.height(), control.cancel, view.aovs)) {
+  if (!film.allocate(window.width(), window.height(), control.cancel, view.aovs, view.pixel_counts)) {
     RenderStats stats;
     stats.seconds = elapsed();
     stats.cancelled = true;
@@ -45,6 +45,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   std::atomic<uint64_t> pixels_done{0}, rays_done{0};
   std::atomic<bool> stopped{false};
   std::vector<RayCounters> counters(threads);
+  // Each tile's totals as last stored: a pass of a progressive render stores the tile again.
+  std::vector<PixelTotals> tile_totals(static_cast<size_t>(grid.count()));
 
   const auto worker = [&](unsigned index) {
     // Counted on this thread's own stack and stored once at the end: neighbouring entries of
@@ -67,6 +69,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
         tile_film.reset(tile);
         if (sampler->render_tile(tile, ctx, tile_film)) {
           film.store(tile_film);
+          tile_totals[static_cast<size_t>(tile.index)] = tile_film.totals();
         } else {
           stopped = true;
         }
@@ -126,13 +129,16 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   stats.threads = threads;
   stats.cancelled = stopped;
   for (const RayCounters& c : counters) stats.rays += c;
+  for (const PixelTotals& t : tile_totals) stats.pixels += t;
   return stats;
 }
 
 RenderStats render(const Scene& scene, const RenderSettings& settings, Image& image, const RenderControl& control,
                    uint32_t frame, const RenderView& view) {
   Film film;
-  const RenderStats stats = render(scene, settings, film, control, frame, view);
+  RenderView colour_only = view;
+  colour_only.pixel_counts = false;
+  const RenderStats stats = render(scene, settings, film, control, frame, colour_only);
   image = std::move(film.color);
   return stats;
 }

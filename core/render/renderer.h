@@ -33,6 +33,7 @@ struct RenderStats {
   bool cancelled = false;     // stopped by RenderControl::cancel: the image is incomplete
   int passes = 0;             // progressive (RenderControl::time_limit): the whole passes rendered
   bool time_limited = false;  // the time limit stopped it before every pixel had all its samples
+  PixelTotals pixels;         // over the film's pixels as rendered (with or without Film::samples)
 };
 
 // Samples a pixel takes per pass of a progressive render (a camera-ray packet's worth).
@@ -70,6 +71,9 @@ struct RenderView {
   // settings with more samples then gives the bits one render of them all gives.
   const SampleState* resume_from = nullptr;
   bool keep_sums = false;
+  // Whether the film keeps each pixel's sample count and refinement depth (Film::samples, depth):
+  // the debug images and the watch page read them. Their totals are in RenderStats either way.
+  bool pixel_counts = true;
 };
 
 // Renders frame `frame` into `film` (resized to the view's window of the settings.width x

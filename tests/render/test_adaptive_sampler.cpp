@@ -139,3 +139,42 @@ TEST_CASE("adaptive: the image is the same for any thread count and tile size", 
     }
   }
 }
+
+TEST_CASE("render statistics: the refined pixels and camera samples are the film's whether it keeps them or not",
+          "[render][antialias][adaptive]") {
+  LoadedScene s = [&] {
+    Diagnostics diags;
+    auto loaded = load_scene(rt::test::source_path("scenes/antialias.json"), rt::test::load_options(), diags);
+    REQUIRE(loaded);
+    return std::move(*loaded);
+  }();
+  s.settings.width = 96;
+  s.settings.height = 54;
+  for (const auto& [threads, tile] : {std::pair{1u, 32}, std::pair{3u, 7}}) {
+    INFO("threads " << threads << ", tile " << tile);
+    s.settings.threads = threads;
+    s.settings.tile_size = tile;
+    for (const PixelWindow window : {PixelWindow{}, PixelWindow{10, 5, 71, 40}}) {
+      RenderView view;
+      view.window = window;
+      Film kept;
+      const RenderStats with = render(s.scene, s.settings, kept, {}, 0, view);
+      PixelTotals counted;
+      for (size_t i = 0; i < kept.samples.size(); ++i) {
+        counted.refined += kept.depth[i] > 0;
+        counted.samples += kept.samples[i];
+      }
+      CHECK(counted.refined > 0);
+      CHECK(with.pixels.refined == counted.refined);
+      CHECK(with.pixels.samples == counted.samples);
+      view.pixel_counts = false;
+      Film bare;
+      const RenderStats without = render(s.scene, s.settings, bare, {}, 0, view);
+      CHECK(bare.samples.empty());
+      CHECK(bare.depth.empty());
+      CHECK(bare.color.pixels == kept.color.pixels);
+      CHECK(without.pixels.refined == counted.refined);
+      CHECK(without.pixels.samples == counted.samples);
+    }
+  }
+}

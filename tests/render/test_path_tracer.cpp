@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -152,7 +153,7 @@ TEST_CASE("noise threshold: converged pixels stop early, noisy ones take every s
   settings.path.samples_per_pixel = 256;
   settings.path.noise_threshold = 0.05f;
   Film film;
-  render(s.scene, settings, film);
+  const RenderStats stats = render(s.scene, settings, film);
   uint64_t total = 0;
   int at_least = 1 << 30, at_most = 0;
   for (const uint16_t n : film.samples) {
@@ -161,6 +162,7 @@ TEST_CASE("noise threshold: converged pixels stop early, noisy ones take every s
     at_most = std::max<int>(at_most, n);
   }
   const double mean = static_cast<double>(total) / static_cast<double>(film.samples.size());
+  CHECK(stats.pixels.samples == total);
   INFO("samples per pixel: " << at_least << " to " << at_most << ", mean " << mean);
   // The black border outside the box converges at the first check; the lit walls need more.
   CHECK(at_least == 16);
@@ -210,6 +212,10 @@ TEST_CASE("progressive passes: with time enough, the same film as one render, ou
   CHECK_FALSE(b.time_limited);
   CHECK(once.color.pixels == passes.color.pixels);  // the same bits: the sums run in the same order
   CHECK(once.samples == passes.samples);
+  // The statistics' totals: the last pass's, not every pass's added up.
+  const uint64_t samples = std::accumulate(once.samples.begin(), once.samples.end(), uint64_t{0});
+  CHECK(a.pixels.samples == samples);
+  CHECK(b.pixels.samples == samples);
   // The noise threshold stopped some pixels early (the same ones, at the same sample, both ways).
   CHECK(std::count_if(once.samples.begin(), once.samples.end(), [](uint16_t n) { return n < 40; }) > 0);
   CHECK(once.albedo.pixels == passes.albedo.pixels);
@@ -222,6 +228,7 @@ TEST_CASE("progressive passes: with time enough, the same film as one render, ou
   CHECK(c.passes == 1);
   CHECK(c.time_limited);
   for (const uint16_t n : first.samples) REQUIRE(n == kPassSamples);
+  CHECK(c.pixels.samples == first.samples.size() * kPassSamples);
 }
 
 TEST_CASE("resumed renders: 16 samples, then 24 more from the sums kept, give the bits of 40 at once",
