@@ -33,6 +33,12 @@ TEST_CASE("sRGB table encodes exactly as the formula", "[io][png]") {
     const float f = rng.next_float() * 1.2f - 0.1f;
     REQUIRE(srgb8(f) == srgb8_by_formula(f));
   }
+  // The first float of each bucket of the table (bits >> 14), whose code it holds.
+  for (uint32_t bits = 0; bits <= 0x3f800000u; bits += 1u << 14) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    REQUIRE(srgb8(f) == srgb8_by_formula(f));
+  }
   CHECK(srgb8(0.5f) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354 -> 187.5 -> 188
   CHECK(srgb8(0.0031308f) == 10);
   CHECK(srgb8(INFINITY) == 255);
