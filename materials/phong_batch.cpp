@@ -14,7 +14,7 @@ static_assert(kPacketSize == 8, "a batch is one Float8");
 __attribute__((target_clones("avx2", "default")))
 #endif
 void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy,
-                 const float* dz, int count, PhongBatch& out) {
+                 const float* dz, unsigned lanes, PhongBatch& out) {
   const Float8 lx = load8(dx), ly = load8(dy), lz = load8(dz);
   const Float8 n_dot_l = lx * n.x + ly * n.y + lz * n.z;
   // reflect(-l, n) = -l - 2 dot(-l, n) n, then its dot with v.
@@ -27,8 +27,8 @@ void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float*
   std::memcpy(lit, &n_dot_l, sizeof n_dot_l);
   alignas(32) float power[kPacketSize] = {};
   alignas(32) int32_t has_power[kPacketSize] = {};
-  for (int j = 0; j < count; ++j)
-    if (lit[j] > 0.0f && cosines[j] > 0.0f) {
+  for (int j = 0; j < kPacketSize; ++j)
+    if ((lanes >> j & 1u) && lit[j] > 0.0f && cosines[j] > 0.0f) {
       power[j] = lobe_power(cosines[j], shininess);
       has_power[j] = -1;
     }

@@ -178,8 +178,12 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         }
         RectLightBatch drawn;
         rect_light_batch(*rect, frame, s.position, u, drawn);
-        PhongBatch reflectance;  // lit(...)'s Phong factor for each sample
-        phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, batch, reflectance);
+        // lit(...)'s Phong factor, for the samples that reach the light (a shadowed one's powers
+        // are not worked out).
+        PhongBatch reflectance;
+        const auto reflectance_of = [&](unsigned lanes) {
+          phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, lanes, reflectance);
+        };
         Vec3 radiance[kPacketSize];
         Ray shadows[kPacketSize];
         int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
@@ -188,17 +192,25 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           radiance[j] = rect->color * drawn.scale[j];
           ray_of[j] = shadow_ray(drawn.direction(j), drawn.distance[j], radiance[j], shadows[rays]) ? rays++ : -1;
         }
+        unsigned reaching = 0;  // the samples that reach the light
+        Vec3 visible[kPacketSize];
         if (packets) {
           const unsigned blocked = scene.occluded_packet(shadows, rays);
           for (int j = 0; j < batch; ++j)
-            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) light_sum += radiance[j] * reflectance[j];
+            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) reaching |= 1u << j;
+          reflectance_of(reaching);
+          for (int j = 0; j < batch; ++j)
+            if (reaching >> j & 1u) light_sum += radiance[j] * reflectance[j];
           continue;
         }
         for (int j = 0; j < batch; ++j) {
           if (ray_of[j] < 0) continue;
-          const Vec3 visible = shadow_transmittance(scene, shadows[ray_of[j]], reach);
-          if (max_component(visible) > 0.0f) light_sum += visible * radiance[j] * reflectance[j];
+          visible[j] = shadow_transmittance(scene, shadows[ray_of[j]], reach);
+          if (max_component(visible[j]) > 0.0f) reaching |= 1u << j;
         }
+        reflectance_of(reaching);
+        for (int j = 0; j < batch; ++j)
+          if (reaching >> j & 1u) light_sum += visible[j] * radiance[j] * reflectance[j];
       }
     }
     sum += light_sum / static_cast<float>(count);
