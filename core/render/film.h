@@ -72,9 +72,10 @@ class FilmTile {
 struct Film {
   Image color;  // linear RGB
   // FilmPixel's samples and depth per pixel, row-major, when the render asked for them
-  // (RenderView::pixel_counts); else empty. Only debug images and the watch page read them, and
-  // at 1920 x 1440 their 8 MB of first touches and stores were 6% of antialias.json's wall
-  // (docs/benchmark.md, "Round two, a twelfth session"): the totals are RenderStats'.
+  // (RenderView::pixel_counts); else empty. Only debug images and the watch page read them; at
+  // 1920 x 1440 their 8 MB of first touches and stores, and the walk that summed them, were 3-6%
+  // of antialias.json's wall (docs/benchmark.md, "Round two, a twelfth session"). The totals are
+  // RenderStats'.
   ZeroedVector<uint16_t> samples;
   ZeroedVector<uint8_t> depth;
   // The first hit's layers (aovs.h), when the render asked for them (RenderView::aovs); else empty.
