@@ -50,14 +50,6 @@ class FilmTile {
   // (x, y) in image coordinates, inside the tile.
   FilmPixel& at(int x, int y) { return pixels_[index(x, y)]; }
   const FilmPixel& at(int x, int y) const { return pixels_[index(x, y)]; }
-  PixelTotals totals() const {
-    PixelTotals t;
-    for (const FilmPixel& p : pixels_) {
-      t.refined += p.depth > 0;
-      t.samples += p.samples;
-    }
-    return t;
-  }
 
  private:
   size_t index(int x, int y) const {
@@ -151,14 +143,18 @@ struct Film {
   size_t index(int x, int y) const {
     return static_cast<size_t>(y) * static_cast<size_t>(color.width) + static_cast<size_t>(x);
   }
-  void store(const FilmTile& t) {
+  // Copies the tile in; returns its pixels' totals, counted in the same pass.
+  PixelTotals store(const FilmTile& t) {
     const Tile& r = t.tile();
     const bool counts = has_counts();
+    PixelTotals totals;
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) {
         const FilmPixel& p = t.at(x, y);
         const size_t i = index(x - x0, y - y0);
         color.pixels[i] = p.color;
+        totals.refined += p.depth > 0;
+        totals.samples += p.samples;
         if (counts) {
           samples[i] = p.samples;
           depth[i] = p.depth;
@@ -171,6 +167,7 @@ struct Film {
           variance[i] = p.variance;
         }
       }
+    return totals;
   }
 };
 

@@ -68,8 +68,7 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
         const uint64_t rays_before = mine.total();
         tile_film.reset(tile);
         if (sampler->render_tile(tile, ctx, tile_film)) {
-          film.store(tile_film);
-          tile_totals[static_cast<size_t>(tile.index)] = tile_film.totals();
+          tile_totals[static_cast<size_t>(tile.index)] = film.store(tile_film);
         } else {
           stopped = true;
         }
