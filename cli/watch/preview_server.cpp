@@ -1,7 +1,5 @@
 #include "cli/watch/preview_server.h"
 
-#include <httplib.h>
-
 #include <cmath>
 #include <cstdlib>
 
@@ -20,16 +18,19 @@ namespace {
 
 constexpr size_t kMaxBody = 4096;  // the page sends no bodies at all
 
-void fail_request(httplib::Response& res, int status, const std::string& why) {
+void fail_request(HttpResponse& res, int status, const std::string& why) {
   res.status = status;
   res.set_content(why + "\n", "text/plain; charset=utf-8");
 }
 
+void not_found(const HttpRequest& req, HttpResponse& res) {
+  fail_request(res, 404, "not found: " + req.path + " (the page is at /)");
+}
+
 // A number parameter in [lo, hi]; the whole text must be the number.
-std::optional<double> number_param(const httplib::Request& req, const char* key, double fallback, double lo,
-                                   double hi) {
+std::optional<double> number_param(const HttpRequest& req, const char* key, double fallback, double lo, double hi) {
   if (!req.has_param(key)) return fallback;
-  const std::string text = req.get_param_value(key);
+  const std::string text = req.param(key);
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi) return std::nullopt;
@@ -42,12 +43,11 @@ struct PictureRequest {
   DisplayTransform display;
 };
 
-std::optional<PictureRequest> picture_request(const httplib::Request& req, const PreviewImage& image,
-                                              httplib::Response& res) {
+std::optional<PictureRequest> picture_request(const HttpRequest& req, const PreviewImage& image, HttpResponse& res) {
   PictureRequest p;
   p.display = image.display;
   if (req.has_param("layer")) {
-    const auto layer = kPreviewLayers.parse(req.get_param_value("layer"));
+    const auto layer = kPreviewLayers.parse(req.param("layer"));
     if (!layer) {
       std::string names;
       for (const std::string& n : kPreviewLayers.names()) names += (names.empty() ? "" : ", ") + n;
@@ -63,7 +63,7 @@ std::optional<PictureRequest> picture_request(const httplib::Request& req, const
   }
   p.display.exposure = static_cast<float>(*exposure);
   if (req.has_param("tone")) {
-    const auto tone = kToneMaps.parse(req.get_param_value("tone"));
+    const auto tone = kToneMaps.parse(req.param("tone"));
     if (!tone) {
       fail_request(res, 400, "tone: expected clamp or filmic");
       return std::nullopt;
@@ -121,29 +121,29 @@ PreviewServer::PreviewServer(PreviewBoard& board, std::function<bool(int)> show_
     : board_(board),
       show_frame_(std::move(show_frame)),
       show_orbit_(std::move(show_orbit)),
-      download_name_(std::move(download_name)),
-      server_(std::make_unique<httplib::Server>()) {
-  routes();
-}
+      download_name_(std::move(download_name)) {}
 
 PreviewServer::~PreviewServer() { stop(); }
 
 bool PreviewServer::bind(const std::string& host, int port, std::string& error) {
   host_ = host;
-  if (port == 0) {
-    port_ = server_->bind_to_any_port(host);
-    if (port_ > 0) return true;
-  } else if (server_->bind_to_port(host, port)) {
-    port_ = port;
-    return true;
+  std::string why;
+  module_ = LoadableModule::open("rtcli-http", why);
+  MakeHttpServer* make = module_ ? module_->function<MakeHttpServer>(kMakeHttpServerSymbol, why) : nullptr;
+  if (!make) {
+    error = "the preview page's HTTP server is not available: " + why;
+    return false;
   }
+  server_.reset(make(routes(), HttpLimits{kMaxBody}));
+  port_ = server_->bind(host, port);
+  if (port_ > 0) return true;
   error = "could not listen on " + host + ":" + std::to_string(port) +
           (port == 0 ? "" : " (is another program using the port? --port 0 picks a free one)");
   return false;
 }
 
 void PreviewServer::start() {
-  thread_ = std::thread([this] { server_->listen_after_bind(); });
+  thread_ = std::thread([this] { server_->listen(); });
 }
 
 void PreviewServer::stop() {
@@ -151,62 +151,52 @@ void PreviewServer::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void PreviewServer::routes() {
-  httplib::Server& s = *server_;
-  s.set_payload_max_length(kMaxBody);
-  s.set_read_timeout(5, 0);
-  s.set_write_timeout(5, 0);
-  s.set_keep_alive_max_count(100);
-  s.set_keep_alive_timeout(2);
-  s.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
-    fail_request(res, 500, "the request could not be answered");
-  });
-  s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return;
-    if (res.status == 404) fail_request(res, 404, "not found: " + req.path + " (the page is at /)");
-    else fail_request(res, res.status, "bad request");
-  });
+HttpRoutes PreviewServer::routes() {
+  HttpRoutes r;
   // Only the names this server answers to: a page served from another name (DNS rebinding)
   // must not read the render.
-  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    const std::string host = req.get_header_value("Host");
+  r.admit = [this](const HttpRequest& req, HttpResponse& res) {
+    const std::string& host = req.host;
     const std::string port = ":" + std::to_string(port_);
     const bool ok = host == host_ + port || host == "localhost" + port || host == "127.0.0.1" + port ||
                     host == "[::1]" + port ||
                     (host_ == "0.0.0.0" && host.size() > port.size() &&
                      host.compare(host.size() - port.size(), port.size(), port) == 0);
-    if (ok) return httplib::Server::HandlerResponse::Unhandled;
-    fail_request(res, 403, "this server answers to " + host_ + port + " and localhost" + port + " only");
-    return httplib::Server::HandlerResponse::Handled;
-  });
+    if (!ok) fail_request(res, 403, "this server answers to " + host_ + port + " and localhost" + port + " only");
+    return ok;
+  };
+  r.error = [](const HttpRequest& req, HttpResponse& res) {
+    if (res.status == 404) not_found(req, res);
+    else if (res.status == 500) fail_request(res, 500, "the request could not be answered");
+    else fail_request(res, res.status, "bad request");
+  };
+  r.get = [this](const HttpRequest& req, HttpResponse& res) { get(req, res); };
+  r.post = [this](const HttpRequest& req, HttpResponse& res) { post(req, res); };
+  return r;
+}
 
-  s.Get("/", [](const httplib::Request&, httplib::Response& res) {
+void PreviewServer::get(const HttpRequest& req, HttpResponse& res) {
+  if (req.path == "/") {
     res.set_header("Cache-Control", "no-store");
     res.set_content(preview_page_html(), "text/html; charset=utf-8");
-  });
-  s.Get("/status", [this](const httplib::Request&, httplib::Response& res) {
+  } else if (req.path == "/status") {
     res.set_header("Cache-Control", "no-store");
     res.set_content(status_json(board_.status()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
                     "application/json");
-  });
-  const auto picture = [this](bool save) {
-    return [this, save](const httplib::Request& req, httplib::Response& res) {
-      const std::shared_ptr<const PreviewImage> image = board_.image();
-      if (!image) return fail_request(res, 503, "no image yet: the first render has not finished");
-      const std::optional<PictureRequest> p = picture_request(req, *image, res);
-      if (!p) return;
-      const std::vector<uint8_t> png = encode_png(preview_layer(*image, p->layer, p->display));
-      res.set_header("Cache-Control", "no-store");
-      if (save)
-        res.set_header("Content-Disposition", "attachment; filename=\"" + download_name_ + "-" +
-                                                  std::string(kPreviewLayers.name(p->layer)) + "-" +
-                                                  std::to_string(image->samples) + "spp.png\"");
-      res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
-    };
-  };
-  s.Get("/image.png", picture(false));
-  s.Get("/save.png", picture(true));
-  s.Get("/save.exr", [this](const httplib::Request&, httplib::Response& res) {
+  } else if (req.path == "/image.png" || req.path == "/save.png") {
+    const bool save = req.path == "/save.png";
+    const std::shared_ptr<const PreviewImage> image = board_.image();
+    if (!image) return fail_request(res, 503, "no image yet: the first render has not finished");
+    const std::optional<PictureRequest> p = picture_request(req, *image, res);
+    if (!p) return;
+    const std::vector<uint8_t> png = encode_png(preview_layer(*image, p->layer, p->display));
+    res.set_header("Cache-Control", "no-store");
+    if (save)
+      res.set_header("Content-Disposition", "attachment; filename=\"" + download_name_ + "-" +
+                                                std::string(kPreviewLayers.name(p->layer)) + "-" +
+                                                std::to_string(image->samples) + "spp.png\"");
+    res.set_content(std::string(png.begin(), png.end()), "image/png");
+  } else if (req.path == "/save.exr") {
     const std::shared_ptr<const PreviewImage> image = board_.image();
     if (!image) return fail_request(res, 503, "no image yet: the first render has not finished");
     std::vector<uint8_t> exr;
@@ -214,23 +204,29 @@ void PreviewServer::routes() {
     if (!preview_exr(*image, exr, error)) return fail_request(res, 500, error);
     res.set_header("Content-Disposition",
                    "attachment; filename=\"" + download_name_ + "-" + std::to_string(image->samples) + "spp.exr\"");
-    res.set_content(reinterpret_cast<const char*>(exr.data()), exr.size(), "image/x-exr");
-  });
-  s.Post("/frame", [this](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(std::string(exr.begin(), exr.end()), "image/x-exr");
+  } else {
+    not_found(req, res);
+  }
+}
+
+void PreviewServer::post(const HttpRequest& req, HttpResponse& res) {
+  if (req.path == "/frame") {
     const auto n = number_param(req, "n", NAN, -1e9, 1e9);
     if (!n || !std::isfinite(*n) || *n != std::floor(*n)) return fail_request(res, 400, "n: expected a frame number");
     if (!show_frame_(static_cast<int>(*n)))
       return fail_request(res, 400, "n: expected a frame of the scene's animation");
     res.status = 204;
-  });
-  s.Post("/view", [this](const httplib::Request& req, httplib::Response& res) {
+  } else if (req.path == "/view") {
     const auto yaw = number_param(req, "yaw", 0.0, -360.0, 360.0);
     const auto pitch = number_param(req, "pitch", 0.0, -kMaxOrbitPitch, kMaxOrbitPitch);
     if (!yaw || !pitch)
       return fail_request(res, 400, "yaw: expected degrees in [-360, 360]; pitch: degrees in [-89, 89]");
     show_orbit_(static_cast<float>(*yaw), static_cast<float>(*pitch));
     res.status = 204;
-  });
+  } else {
+    not_found(req, res);
+  }
 }
 
 }  // namespace rt

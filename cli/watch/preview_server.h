@@ -1,4 +1,5 @@
-// The page of `rtcli watch` and what it asks for, served by cpp-httplib on its own threads. It
+// The page of `rtcli watch` and what it asks for, served by cpp-httplib on its own threads (through
+// librtcli-http.so, cli/watch/http_module.h, loaded by bind()). It
 // serves nothing from disk: the page is built in, and every other answer is made from the board
 // (cli/watch/preview_board.h): the status as JSON, the picture as PNG (a layer, an exposure, a
 // tone map), the film as EXR. Requests are checked, not trusted: unknown paths and methods get
@@ -12,11 +13,9 @@
 #include <string>
 #include <thread>
 
+#include "cli/watch/http_module.h"
 #include "cli/watch/preview_board.h"
-
-namespace httplib {
-class Server;
-}
+#include "io/base/loadable_module.h"
 
 namespace rt {
 
@@ -30,7 +29,8 @@ class PreviewServer {
   PreviewServer(const PreviewServer&) = delete;
   PreviewServer& operator=(const PreviewServer&) = delete;
 
-  // Binds `host`:`port` (port 0: any free one). False, with `error`, when it cannot.
+  // Loads the HTTP module and binds `host`:`port` (port 0: any free one). False, with `error`,
+  // when it cannot.
   bool bind(const std::string& host, int port, std::string& error);
   int port() const { return port_; }
   // Serves on its own thread until stop().
@@ -38,13 +38,16 @@ class PreviewServer {
   void stop();
 
  private:
-  void routes();
+  HttpRoutes routes();
+  void get(const HttpRequest& req, HttpResponse& res);
+  void post(const HttpRequest& req, HttpResponse& res);
 
   PreviewBoard& board_;
   std::function<bool(int)> show_frame_;
   std::function<void(float, float)> show_orbit_;
-  std::string download_name_;  // the scene's name, for saved files
-  std::unique_ptr<httplib::Server> server_;
+  std::string download_name_;                     // the scene's name, for saved files
+  std::shared_ptr<const LoadableModule> module_;  // declared before server_: outlives it
+  std::unique_ptr<HttpServer> server_;
   std::string host_;
   int port_ = 0;
   std::thread thread_;

@@ -277,6 +277,13 @@ TEST_CASE("cli: watch answers bad requests with errors and keeps rendering", "[c
   const auto status_of = [&](const httplib::Result& r) { return r ? r->status : -1; };
   CHECK(status_of(c.Get("/../../../etc/passwd")) == 404);
   CHECK(status_of(c.Get("/ball.json")) == 404);  // nothing from disk, not even the scene
+  const auto unknown = c.Get("/nothing");
+  REQUIRE(unknown);
+  CHECK(unknown->body == "not found: /nothing (the page is at /)\n");
+  CHECK(status_of(c.Delete("/status")) == 404);  // another method
+  CHECK(status_of(c.Get("/frame")) == 404);      // a POST route asked with GET
+  CHECK(status_of(c.Post("/status", "", "text/plain")) == 404);
+  CHECK(status_of(c.Head("/")) == 200);
   CHECK(status_of(c.Get("/image.png?layer=secret")) == 400);
   CHECK(status_of(c.Get("/image.png?exposure=nan")) == 400);
   CHECK(status_of(c.Get("/image.png?tone=%00")) == 400);
