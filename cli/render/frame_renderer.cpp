@@ -38,6 +38,12 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
                  "rtcli: warning: --denoise weighs each pixel's noise by its variance, which only the path tracer "
                  "estimates; under %s the image is left as rendered\n",
                  settings.integrator.c_str());
+  // A PNG (or PNG sequence) that is all the render writes from the film: the film keeps the
+  // display codes (RenderView::display8), not 33 MB of linear colour at 1920 x 1440.
+  const OutputKind kind = sinks[0].kind();
+  const bool codes_only = (kind == OutputKind::kPng || kind == OutputKind::kPngSequence) && !stereo.enabled() &&
+                          !denoiser && !content.view && content.aovs.empty() && !content.keep_sums && !job.aa_debug &&
+                          !job.samples_debug;
   for (int index = 0; index < frames.count(); ++index) {
     const int frame = frames.frames[static_cast<size_t>(index)];
     const Scene& scene = scenes.at(frame);
@@ -71,6 +77,7 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
       if (content.resume) view.resume_from = &*content.resume;
       view.pixel_counts = job.aa_debug || job.samples_debug;
       view.keep_sums = content.keep_sums;
+      if (codes_only) view.display8 = &settings.display;
       totals.last = render(scene, settings, film, control, static_cast<uint32_t>(frame), view);
       bar.clear();
       if (totals.last.cancelled) {
@@ -122,7 +129,9 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
     bool ok = true;
     const DisplayTransform& display = settings.display;
     const ViewTransform* display_view = content.view.get();
-    if (!stereo.enabled()) {
+    if (codes_only) {
+      ok = sinks[0].add(Rgb8Image{film.width(), film.height(), std::move(film.display8)}, frame, error);
+    } else if (!stereo.enabled()) {
       ok = sinks[0].add(picture, display, display_view, frame, error);
     } else if (stereo.mode == StereoMode::kPair) {
       ok = sinks[0].add(left, display, display_view, frame, error) &&

@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "core/display_codes.h"
 #include "core/image.h"
 #include "core/render/aovs.h"
 #include "core/render/sample_sums.h"
@@ -59,10 +61,24 @@ class FilmTile {
   std::vector<FilmPixel> pixels_;
 };
 
+// What a film keeps besides the colour (Film::allocate).
+struct FilmChannels {
+  bool aovs = false;                           // the first hit's layers
+  bool counts = true;                          // samples and depth
+  const DisplayTransform* display8 = nullptr;  // the colour as these display codes only
+};
+
 // The pixels of a window of the image (all of it unless a render asked for part): (0, 0) of
 // `color` and of the channels is the window's corner (x0, y0) of the image.
 struct Film {
-  Image color;  // linear RGB
+  // Linear RGB; its pixels empty (its size set) when the film keeps display codes instead.
+  Image color;
+  // The colour as the 8-bit codes a PNG holds, 3 bytes a pixel, row-major, when the render asked
+  // for them (RenderView::display8: a picture that is only written): each tile encoded as it is
+  // stored (core/display_codes.h), and no linear colour kept. Else empty. At 1920 x 1440 the linear
+  // colour is 33 MB whose every page is a first touch the kernel zeroes: 5% of antialias.json's
+  // CPU time; these codes are 8 MB.
+  ZeroedVector<uint8_t> display8;
   // FilmPixel's samples and depth per pixel, row-major, when the render asked for them
   // (RenderView::pixel_counts); else empty. Only debug images and the watch page read them; at
   // 1920 x 1440 their 8 MB of first touches and stores, and the walk that summed them, were 3-6%
@@ -88,12 +104,15 @@ struct Film {
   // `counts`. With `aovs`, the first hit's layers too: their distance and variance are written, at
   // 8192 x 8192 a quarter of a gigabyte each, and Ctrl-C must not wait for them. False (the film
   // left partly grown) once `cancel` is set.
-  bool allocate(int width, int height, const std::atomic<bool>* cancel, bool aovs = false, bool counts = true) {
+  bool allocate(int width, int height, const std::atomic<bool>* cancel, FilmChannels channels = {}) {
+    const bool aovs = channels.aovs, counts = channels.counts;
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     color.width = albedo.width = normal.width = emission.width = width;
     color.height = albedo.height = normal.height = emission.height = height;
     // Released, not cleared: a ZeroedVector grows from zero only into fresh storage.
     release(color.pixels);
+    release(display8);
+    display_ = channels.display8 ? std::optional<DisplayTransform>(*channels.display8) : std::nullopt;
     release(samples);
     release(depth);
     release(albedo.pixels);
@@ -102,7 +121,8 @@ struct Film {
     distance.clear();
     variance.clear();
     sums.clear();
-    color.pixels.reserve(n);
+    if (display_) display8.reserve(3 * n);
+    else color.pixels.reserve(n);
     if (counts) {
       samples.reserve(n);
       depth.reserve(n);
@@ -115,10 +135,12 @@ struct Film {
       variance.reserve(n);
     }
     constexpr size_t kSlice = size_t{1} << 20;
-    while (color.pixels.size() < n) {
+    for (size_t done = 0; done < n;) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return false;
-      const size_t next = std::min(n, color.pixels.size() + kSlice);
-      color.pixels.resize(next);  // zero, not written (ZeroedVector)
+      const size_t next = std::min(n, done + kSlice);
+      done = next;
+      if (display_) display8.resize(3 * next);  // zero, not written (ZeroedVector)
+      else color.pixels.resize(next);
       if (counts) {
         samples.resize(next);
         depth.resize(next);
@@ -148,11 +170,21 @@ struct Film {
     const Tile& r = t.tile();
     const bool counts = has_counts();
     PixelTotals totals;
+    // Display codes: each run of a row's colours gathered, then encoded together.
+    constexpr int kRun = 64;
+    Vec3 run[kRun];
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) {
         const FilmPixel& p = t.at(x, y);
         const size_t i = index(x - x0, y - y0);
-        color.pixels[i] = p.color;
+        if (display_) {
+          const int k = (x - r.x0) % kRun;
+          run[k] = p.color;
+          if (k + 1 == kRun || x + 1 == r.x1)
+            display_codes(run, static_cast<size_t>(k + 1), *display_, &display8[3 * (i - static_cast<size_t>(k))]);
+        } else {
+          color.pixels[i] = p.color;
+        }
         totals.refined += p.depth > 0;
         totals.samples += p.samples;
         if (counts) {
@@ -169,6 +201,9 @@ struct Film {
       }
     return totals;
   }
+
+ private:
+  std::optional<DisplayTransform> display_;  // set: the colour is kept as display8's codes
 };
 
 }  // namespace rt

@@ -25,7 +25,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
 
   film.x0 = window.x0;
   film.y0 = window.y0;
-  if (!film.allocate(window.width(), window.height(), control.cancel, view.aovs, view.pixel_counts)) {
+  if (!film.allocate(window.width(), window.height(), control.cancel,
+                     FilmChannels{view.aovs, view.pixel_counts, view.display8})) {
     RenderStats stats;
     stats.seconds = elapsed();
     stats.cancelled = true;
@@ -92,6 +93,8 @@ RenderStats render(const Scene& scene, const RenderSettings& settings, Film& fil
   };
   RenderStats stats;
   const bool resumed = view.resume_from != nullptr;
+  if (view.display8 && (view.aovs || view.keep_sums || control.pass_done))
+    throw std::invalid_argument("a film of display codes keeps no layers, sums or passes to show");
   if ((resumed || view.keep_sums) && !sampler->renders_passes())
     throw std::invalid_argument("this integrator keeps no sample sums to resume from");
   if (resumed && !sampler->resume(*view.resume_from, window))

@@ -74,6 +74,10 @@ struct RenderView {
   // Whether the film keeps each pixel's sample count and refinement depth (Film::samples, depth):
   // the debug images and the watch page read them. Their totals are in RenderStats either way.
   bool pixel_counts = true;
+  // When set, the film keeps the colour only as the 8-bit codes this display transform gives
+  // (Film::display8), not as linear RGB: for a picture that is only written as a PNG. Not with
+  // aovs, keep_sums or RenderControl::pass_done (which show or keep the linear colour).
+  const DisplayTransform* display8 = nullptr;
 };
 
 // Renders frame `frame` into `film` (resized to the view's window of the settings.width x

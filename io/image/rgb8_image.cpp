@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/color.h"
+#include "core/display_codes.h"
 #include "core/parallel_for.h"
 #include "io/image/view_transform.h"
 
@@ -14,14 +14,7 @@ namespace {
 
 // Pixels [begin, end) of `image` as 8-bit codes from dst on.
 void encode_pixels(const Image& image, const DisplayTransform& display, size_t begin, size_t end, uint8_t* dst) {
-  const bool identity = display.identity();
-  const Srgb8Table& codes = srgb8_table();
-  for (size_t i = begin; i < end; ++i) {
-    const Vec3 p = identity ? image.pixels[i] : display.apply(image.pixels[i]);
-    *dst++ = codes.encode(p.x);
-    *dst++ = codes.encode(p.y);
-    *dst++ = codes.encode(p.z);
-  }
+  display_codes(image.pixels.data() + begin, end - begin, display, dst);
 }
 
 }  // namespace

@@ -45,12 +45,12 @@ TEST_CASE("zeroed vector: a film reallocated over a rendered one starts at zero"
   for (const uint8_t d : film.depth) REQUIRE(d == 0);
   for (Vec3& p : film.color.pixels) p = Vec3(1.0f);
   for (uint16_t& n : film.samples) n = 4;
-  REQUIRE(film.allocate(80, 60, nullptr, true));  // the same size
+  REQUIRE(film.allocate(80, 60, nullptr, rt::FilmChannels{.aovs = true}));  // the same size
   for (const Vec3& p : film.color.pixels) REQUIRE(p == Vec3(0.0f));
   for (const uint16_t n : film.samples) REQUIRE(n == 0);
   for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
   for (Vec3& p : film.albedo.pixels) p = Vec3(1.0f);
-  REQUIRE(film.allocate(80, 60, nullptr, true));  // the layers too
+  REQUIRE(film.allocate(80, 60, nullptr, rt::FilmChannels{.aovs = true}));  // the layers too
   for (const Vec3& p : film.albedo.pixels) REQUIRE(p == Vec3(0.0f));
   CHECK(Image(3, 2).pixels == ZeroedVector<Vec3>(6, Vec3(0.0f)));
 }
