@@ -38,10 +38,9 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
                  "rtcli: warning: --denoise weighs each pixel's noise by its variance, which only the path tracer "
                  "estimates; under %s the image is left as rendered\n",
                  settings.integrator.c_str());
-  // A PNG (or PNG sequence) that is all the render writes from the film: the film keeps the
-  // display codes (RenderView::display8), not 33 MB of linear colour at 1920 x 1440.
-  const OutputKind kind = sinks[0].kind();
-  const bool codes_only = (kind == OutputKind::kPng || kind == OutputKind::kPngSequence) && !stereo.enabled() &&
+  // An 8-bit picture (PNG, JPEG, GIF) that is all the render writes from the film: the film keeps
+  // the display codes (RenderView::display8), not 33 MB of linear colour at 1920 x 1440.
+  const bool codes_only = !is_exr(sinks[0].kind()) && !stereo.enabled() &&
                           !denoiser && !content.view && content.aovs.empty() && !content.keep_sums && !job.aa_debug &&
                           !job.samples_debug;
   for (int index = 0; index < frames.count(); ++index) {
