@@ -40,9 +40,8 @@ std::optional<int> render_frames(const RenderJob& job, const LoadedScene& loaded
                  settings.integrator.c_str());
   // An 8-bit picture (PNG, JPEG, GIF) that is all the render writes from the film: the film keeps
   // the display codes (RenderView::display8), not 33 MB of linear colour at 1920 x 1440.
-  const bool codes_only = !is_exr(sinks[0].kind()) && !stereo.enabled() &&
-                          !denoiser && !content.view && content.aovs.empty() && !content.keep_sums && !job.aa_debug &&
-                          !job.samples_debug;
+  const bool codes_only = !is_exr(sinks[0].kind()) && !stereo.enabled() && !denoiser && !content.view &&
+                          content.aovs.empty() && !content.keep_sums && !job.aa_debug && !job.samples_debug;
   for (int index = 0; index < frames.count(); ++index) {
     const int frame = frames.frames[static_cast<size_t>(index)];
     const Scene& scene = scenes.at(frame);
