@@ -10,26 +10,14 @@
 #include "io/image/rgb8_image.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
+#include "tests/support/render_cases.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
 
 TEST_CASE("a film of display codes holds the linear film's colour, encoded", "[render][display8]") {
-  struct Case {
-    const char* scene;
-    const char* integrator;
-    const char* antialias;
-  };
-  for (const Case c :
-       {Case{"scenes/antialias.json", "whitted", "adaptive"}, Case{"scenes/glossy.json", "whitted", "uniform"},
-        Case{"scenes/cornell_box.json", "path", "none"}}) {
-    const LoadedScene s = rt::test::load_scene_file(rt::test::source_path(c.scene));
-    RenderSettings settings = s.settings;
-    settings.width = 150;  // wider than the encoder's runs of 64
-    settings.height = 31;
-    settings.integrator = c.integrator;
-    settings.antialias.mode = c.antialias;
-    settings.path.samples_per_pixel = 4;
+  for (const rt::test::RenderCase& c : rt::test::kRenderCases) {
+    auto [s, settings] = rt::test::load_render_case(c, 150, 31);  // wider than the encoder's runs of 64
     for (const DisplayTransform display :
          {DisplayTransform{}, DisplayTransform{1.3f, ToneMap::kFilmic}, DisplayTransform{-2.0f, ToneMap::kClamp}}) {
       for (const PixelWindow w : {PixelWindow{}, PixelWindow{13, 7, 141, 29}}) {

@@ -6,6 +6,7 @@
 #include "core/render/renderer.h"
 #include "io/scene_loader.h"
 #include "tests/support/loading.h"
+#include "tests/support/render_cases.h"
 #include "tests/support/test_paths.h"
 
 using namespace rt;
@@ -17,24 +18,10 @@ LoadedScene load(const std::string& path) { return rt::test::load_scene_file(pat
 }  // namespace
 
 TEST_CASE("a window of the image renders the whole render's pixels", "[render][window]") {
-  struct Case {
-    const char* scene;
-    const char* integrator;
-    const char* antialias;
-  };
-  // Adaptive anti-aliasing shares lattice samples across tile borders; a window's border pixels
-  // compute their own and must still agree. glossy: random numbers per pixel.
-  for (const Case c :
-       {Case{"scenes/antialias.json", "whitted", "adaptive"}, Case{"scenes/glossy.json", "whitted", "uniform"},
-        Case{"scenes/primitives.json", "whitted", "none"}, Case{"scenes/cornell_box.json", "path", "none"}}) {
+  // A window's border pixels compute their own lattice samples and must still agree.
+  for (const rt::test::RenderCase& c : rt::test::kRenderCases) {
     INFO(c.scene << " " << c.integrator << " " << c.antialias);
-    const LoadedScene s = load(rt::test::source_path(c.scene));
-    RenderSettings settings = s.settings;
-    settings.width = 67;
-    settings.height = 41;
-    settings.integrator = c.integrator;
-    settings.antialias.mode = c.antialias;
-    settings.path.samples_per_pixel = 4;
+    auto [s, settings] = rt::test::load_render_case(c, 67, 41);
     settings.threads = 2;
     Film whole;
     render(s.scene, settings, whole);
