@@ -102,8 +102,11 @@ std::vector<unsigned char> glb_with_json(const std::string& json, const std::vec
   std::string padded = json;
   while (padded.size() % 4) padded.push_back(' ');
   const size_t rest = 20 + read_u32(glb.data() + 12);
-  std::vector<unsigned char> out;
-  out.insert(out.end(), glb.begin(), glb.begin() + 8);
+  // The header's first 8 bytes, then the rest in one allocation. (Built from the range rather
+  // than inserted into an empty vector, which GCC 12's -Wstringop-overflow misreads as a write
+  // past its end.)
+  std::vector<unsigned char> out(glb.begin(), glb.begin() + 8);
+  out.reserve(20 + padded.size() + (glb.size() > rest ? glb.size() - rest : 0));
   append_u32(out, 0);  // total length, below
   append_u32(out, static_cast<uint32_t>(padded.size()));
   append_u32(out, 0x4E4F534Au);  // "JSON"
