@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/camera_ray_batch.h"
 #include "core/render/adaptive_sampler.h"
 #include "core/render/path_sampler.h"
 
@@ -14,7 +15,18 @@ void CameraBatch::trace(PixelContext& ctx) {
   Ray rays[kPacketSize];
   int ray_of[kPacketSize];  // which ray a sample has; -1: none (outside a fisheye's circle)
   int rays_made = 0;
-  for (int i = 0; i < count; ++i) {
+  if (batches_camera_rays(camera)) {  // every sample sees, none reads a lens sample
+    float px[kPacketSize], py[kPacketSize];
+    for (int i = 0; i < count; ++i) {
+      px[i] = sample[i].px;
+      py[i] = sample[i].py;
+      ray_of[i] = i;
+    }
+    static_assert(kPacketSize == kCameraRayBatch);
+    perspective_ray_batch(camera, px, py, count, s.width, s.height, rays);
+    rays_made = count;
+  }
+  for (int i = rays_made; i < count; ++i) {
     const CameraSample& c = sample[i];
     if (!camera.sees(c.px, c.py, s.width, s.height)) {
       ray_of[i] = -1;
