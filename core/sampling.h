@@ -65,13 +65,21 @@ class SampleStream {
     uint64_t key = 0;
   };
   static FrameKey frame_key(uint64_t seed, uint32_t frame) { return {mix64(mix64(seed) ^ frame)}; }
+  // And of one point (a pixel), worked out once for its samples.
+  struct PointKey {
+    uint64_t key = 0;
+  };
+  static PointKey point_key(FrameKey frame, uint64_t point) { return {mix64(frame.key ^ point)}; }
   // The numbers of one camera sample: the same for the same (seed, frame, point, sample) anywhere.
   SampleStream(uint64_t seed, uint32_t frame, uint64_t point, uint32_t sample,
                SampleSequence sequence = SampleSequence::kSobol)
       : SampleStream(frame_key(seed, frame), point, sample, sequence) {}
   SampleStream(FrameKey frame, uint64_t point, uint32_t sample, SampleSequence sequence = SampleSequence::kSobol)
-      : point_key_(mix64(frame.key ^ point)),
-        key_(mix64(point_key_ ^ sample)),
+      : SampleStream(point_key(frame, point), sample, sequence) {}
+  SampleStream(PointKey point, uint32_t sample, SampleSequence sequence = SampleSequence::kSobol)
+      : point_key_(point.key),
+        // Only the independent sequence reads it: not hashed for the Sobol points.
+        key_(sequence == SampleSequence::kSobol ? 0 : mix64(point_key_ ^ sample)),
         reversed_sample_(reverse_bits(sample)),
         sequence_(sequence) {}
 

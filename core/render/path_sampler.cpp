@@ -19,8 +19,8 @@ float pixel_relative_error(double sum, double sum_squares, int n) {
 
 FilmPixel PathSampler::sample_pixel(int x, int y, PixelState& state, int end, PixelContext& ctx) const {
   const int spp = std::max(1, settings_.samples_per_pixel);
-  const uint64_t pixel = ctx.pixel_point(x, y);
   CameraBatch batch;
+  const SampleStream::PointKey pixel = batch.key(ctx, ctx.pixel_point(x, y));
   int& n = state.n;
   while (!state.stopped && n < std::min(end, spp)) {
     const int count = std::min(kPacketSize, spp - n);

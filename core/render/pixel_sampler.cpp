@@ -98,7 +98,7 @@ class UniformSampler final : public PixelSampler {
       };
       for (int x = tile.x0; x < tile.x1; ++x) {
         if (ctx.cancelled()) return false;
-        const uint64_t pixel = ctx.pixel_point(x, y);
+        const SampleStream::PointKey pixel = batch.key(ctx, ctx.pixel_point(x, y));
         for (int j = 0; j < n_; ++j)
           for (int i = 0; i < n_; ++i) {
             CameraSample& c = batch.add(ctx, pixel, static_cast<uint32_t>(j * n_ + i), static_cast<uint32_t>(x));

@@ -143,7 +143,11 @@ struct CameraBatch {
   Vec3 radiance[kPacketSize];
   Aovs aovs[kPacketSize];
   int count = 0;
-  SampleStream::FrameKey frame;  // the render's seed and frame hashed, once for the packet
+  // The render's seed and frame hashed, once for the batch (key()), and what it was made of.
+  SampleStream::FrameKey frame;
+  uint64_t frame_seed = 0;
+  uint32_t frame_number = 0;
+  bool frame_known = false;
 
   bool full() const { return count == kPacketSize; }
   // Queues sample `index` of image point `point` (the render's seed and frame, the context's eye)
@@ -151,9 +155,12 @@ struct CameraBatch {
   // built in the slot: a sample built on the stack and copied in was read back by wide loads of
   // its narrow stores, which stalled (twice measured: see the commits).
   CameraSample& add(const PixelContext& ctx, uint64_t point, uint32_t index, uint32_t t) {
-    if (count == 0) frame = SampleStream::frame_key(ctx.settings.seed, ctx.frame);
+    return add(ctx, key(ctx, point), index, t);
+  }
+  // The same, for a point's key from key(): a pixel's samples hash the point once.
+  CameraSample& add(const PixelContext& ctx, SampleStream::PointKey point, uint32_t index, uint32_t t) {
     CameraSample& slot = sample[count];
-    std::construct_at(&slot.samples, frame, ctx.point_key(point), index, ctx.settings.sampler);
+    std::construct_at(&slot.samples, point, index, ctx.settings.sampler);
     slot.spacing = 1.0f;
     tag[count++] = t;
     return slot;
@@ -161,6 +168,16 @@ struct CameraBatch {
   // Fills radiance[0, count) (and aovs, if PixelContext::aovs); counts the camera rays.
   void trace(PixelContext& ctx);
   void clear() { count = 0; }
+  // Image point `point`'s key (the render's seed and frame, the context's eye).
+  SampleStream::PointKey key(const PixelContext& ctx, uint64_t point) {
+    if (!frame_known || frame_seed != ctx.settings.seed || frame_number != ctx.frame) {
+      frame = SampleStream::frame_key(ctx.settings.seed, ctx.frame);
+      frame_seed = ctx.settings.seed;
+      frame_number = ctx.frame;
+      frame_known = true;
+    }
+    return SampleStream::point_key(frame, ctx.point_key(point));
+  }
 };
 
 }  // namespace rt

@@ -179,3 +179,24 @@ TEST_CASE("direction sampling: the quarter-range cos and sin are within 2 ulp of
   CHECK(q.y < 0.0f);
   CHECK(std::fabs(q.x) < std::fabs(q.y));
 }
+
+TEST_CASE("sampling: a point's key made once gives its samples the numbers they had", "[sampling]") {
+  const SampleStream::FrameKey frame = SampleStream::frame_key(11, 3);
+  for (const SampleSequence sequence : {SampleSequence::kSobol, SampleSequence::kIndependent})
+    for (const uint64_t point : std::initializer_list<uint64_t>{0, 4567, uint64_t{1} << 62}) {
+      const SampleStream::PointKey key = SampleStream::point_key(frame, point);
+      std::set<float> seen;
+      for (const uint32_t sample : {0u, 1u, 2u, 3u, 70000u}) {
+        const SampleStream whole(11, 3, point, sample, sequence), keyed(key, sample, sequence);
+        for (const uint64_t index : {0u, 1u, 9u}) {
+          const Vec2 a = whole.get2(SamplePurpose::kPixel, 0, index), b = keyed.get2(SamplePurpose::kPixel, 0, index);
+          INFO("sequence " << static_cast<int>(sequence) << ", point " << point << ", sample " << sample);
+          CHECK(a.x == b.x);
+          CHECK(a.y == b.y);
+          CHECK(whole.get1(SamplePurpose::kLight, 5, index) == keyed.get1(SamplePurpose::kLight, 5, index));
+        }
+        seen.insert(keyed.get2(SamplePurpose::kPixel, 0, 0).x);
+      }
+      CHECK(seen.size() == 5);  // each sample its own numbers, in either sequence
+    }
+}
