@@ -1,7 +1,8 @@
 #include "core/render/pixel_sampler.h"
 
 #include <algorithm>
-#include <optional>
+#include <new>
+#include <type_traits>
 
 #include "core/camera_ray_batch.h"
 #include "core/render/adaptive_sampler.h"
@@ -40,18 +41,26 @@ void CameraBatch::trace(PixelContext& ctx) {
   SceneHit met[kPacketSize];
   ctx.scene.intersect_packet(rays, met, rays_made);
   ctx.counters[RayKind::kCamera] += static_cast<uint64_t>(rays_made);
-  // Each ray's context, in ray order, shaded together (Integrator::radiance_from_hits).
-  std::optional<TraceContext> traces[kPacketSize];
+  // Each ray's context, in ray order, shaded together (Integrator::radiance_from_hits), made in
+  // place where there is a ray (storage only: no flags to set and test, nothing to destroy).
+  static_assert(std::is_trivially_destructible_v<TraceContext>);
+  union Traces {
+    Traces() {}
+    TraceContext at[kPacketSize];
+  } traces;
   TraceContext* trace_of[kPacketSize];
+  const float spread = camera.pixel_spread(s.width, s.height), footprint = camera.pixel_footprint(s.width, s.height);
   for (int i = 0; i < count; ++i) {
     if (ctx.aovs) aovs[i] = Aovs{};
     if (ray_of[i] < 0) continue;
     const CameraSample& c = sample[i];
-    // (Braces, then moved in: Clang before 16 cannot make an aggregate from emplace's parentheses.)
-    TraceContext& trace = traces[ray_of[i]].emplace(
-        TraceContext{ctx.scene, s, ctx.counters, c.samples, c.spacing * camera.pixel_spread(s.width, s.height),
-                     c.spacing * camera.pixel_footprint(s.width, s.height), ctx.aovs ? &aovs[i] : nullptr});
-    trace_of[ray_of[i]] = &trace;
+    trace_of[ray_of[i]] = new (&traces.at[ray_of[i]]) TraceContext{ctx.scene,
+                                                                   s,
+                                                                   ctx.counters,
+                                                                   c.samples,
+                                                                   c.spacing * spread,
+                                                                   c.spacing * footprint,
+                                                                   ctx.aovs ? &aovs[i] : nullptr};
   }
   Vec3 found[kPacketSize];
   ctx.integrator.radiance_from_hits(rays, met, rays_made, trace_of, found);
