@@ -4,8 +4,8 @@
 #include <new>
 #include <type_traits>
 
-#include "core/camera_ray_batch.h"
 #include "core/render/adaptive_sampler.h"
+#include "core/render/camera_ray_batch.h"
 #include "core/render/path_sampler.h"
 
 namespace rt {

@@ -1,4 +1,4 @@
-#include "core/camera_ray_batch.h"
+#include "core/render/camera_ray_batch.h"
 
 #include <cstring>
 

@@ -1,11 +1,11 @@
-// A packet's pinhole rays (core/camera_ray_batch.h) are generate_ray's, bit for bit: several
+// A packet's pinhole rays (core/render/camera_ray_batch.h) are generate_ray's, bit for bit: several
 // cameras (wide and tall images, a shifted window, a stereo eye's offset), full and partial
 // packets, points across the image and beyond its edges.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 
-#include "core/camera_ray_batch.h"
+#include "core/render/camera_ray_batch.h"
 #include "core/rng.h"
 
 using namespace rt;
