@@ -111,6 +111,10 @@ inline constexpr NameTable<bool> kSecondaryShadows{kSecondaryShadowEntries};
 // ceil(samples * weight), between 1 and samples. The samples a pixel's ray tree takes then follow
 // what each hit adds to the pixel, as the glossy split already makes its rays do.
 inline int secondary_shadow_samples(int samples, float weight) {
+  // A camera ray's hit (weight 1) and a single sample keep theirs: what the rule below gives them,
+  // without its ceil (baseline x86-64 has no rounding instruction: a branchy sequence of
+  // conversions, a tenth of direct lighting's own time on reflection.json).
+  if (samples <= 1 || weight >= 1.0f) return samples;
   const float scaled = std::ceil(static_cast<float>(samples) * weight);
   return scaled >= static_cast<float>(samples) ? samples : std::max(1, static_cast<int>(scaled));
 }

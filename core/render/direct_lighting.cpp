@@ -213,7 +213,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           if (reaching >> j & 1u) light_sum += visible[j] * radiance[j] * reflectance[j];
       }
     }
-    sum += light_sum / static_cast<float>(count);
+    sum += count == 1 ? light_sum : light_sum / static_cast<float>(count);  // x / 1 is x: not divided
   }
   if (!scene.emitters.empty()) sum += emitted_light(s, path, samples, shadow_ray, lit, ctx);
   return sum;

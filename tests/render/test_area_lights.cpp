@@ -205,6 +205,18 @@ TEST_CASE("secondary shadows: an area light's samples follow the hit's weight in
   CHECK(secondary_shadow_samples(16, 0.0f) == 1);
   CHECK(secondary_shadow_samples(1, 0.5f) == 1);
   CHECK(secondary_shadow_samples(1024, 1.5f) == 1024);  // never more than asked
+  // Its shortcut (single samples, weight 1 or more) gives the rule's own answer (at least one
+  // sample asked: the scene's minimum; 0 x infinity would make the rule's own number NaN).
+  int checked = 0;
+  for (int n = 1; n <= 64; ++n)
+    for (const float w : {0.0f, 1e-6f, 0.3f, 0.5f, 0.999999f, 1.0f, 1.000001f, 2.0f, 1e30f, kInfinity}) {
+      const float scaled = std::ceil(static_cast<float>(n) * w);
+      const int rule = scaled >= static_cast<float>(n) ? n : std::max(1, static_cast<int>(scaled));
+      INFO(n << " samples, weight " << w);
+      CHECK(secondary_shadow_samples(n, w) == rule);
+      ++checked;
+    }
+  CHECK(checked == 640);
 
   // A mirror of reflectivity 0.5 facing a lit floor: its hits on the floor take 8 samples of 16.
   const LoadedScene s = rt::test::load_scene_text("mirror_shadows.json", R"({
