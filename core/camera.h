@@ -72,7 +72,9 @@ struct Camera {
     return projection != CameraProjection::kFisheye || inside_fisheye_circle(x, y, width, height);
   }
   // Primary ray through continuous pixel position (x, y) of a width x height image. The
-  // perspective case, by far the most common, is inline: a camera ray costs no call.
+  // perspective case, by far the most common, is inline: a camera ray costs no call. Its
+  // operations are repeated eight lanes at a time by core/render/camera_ray_batch.cpp: change
+  // both (tests/render/test_camera_ray_batch.cpp holds them to the same bits).
   Ray generate_ray(float x, float y, int width, int height) const {
     if (projection != CameraProjection::kPerspective) return generate_other_ray(x, y, width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
