@@ -57,33 +57,22 @@ inline uint32_t sobol_dimension1_bitwise(uint32_t index) {
   return result;
 }
 
-// The same, a byte of the index at a time: the sum (xor) of the direction numbers of the index's
-// set bits is linear, so four tables of each byte's sums give it in four lookups (4 KiB, in L1).
-// The shuffled index has all 32 bits in play, so the loop took 32 rounds a sample: 15% of a
-// soft-shadow render went there (docs/benchmark.md, "Speed, round two").
-struct SobolByteTables {
-  uint32_t sums[4][256];
-};
-constexpr SobolByteTables make_sobol_dimension1_tables() {
-  SobolByteTables t{};
-  uint32_t v[32] = {};
-  v[0] = 1u << 31;
-  for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
-  for (int byte = 0; byte < 4; ++byte)
-    for (uint32_t b = 0; b < 256; ++b) {
-      uint32_t sum = 0;
-      for (int j = 0; j < 8; ++j)
-        if (b >> j & 1u) sum ^= v[8 * byte + j];
-      t.sums[byte][b] = sum;
-    }
-  return t;
+// The same with its bits mirrored, in five shift-and-xor steps on all 32 bits at once. Direction
+// number k is (1 + shift)^k applied to the top bit, so bit 31 - j of the result is the xor of the
+// index's bits k with C(k, j) odd: by Lucas's theorem, those k whose set bits include j's. Each
+// step below adds, for one bit of j, the bits whose j has it set (a superset sum). Byte tables did
+// it in four lookups, which eight vector lanes took one lane at a time (docs/benchmark.md, "Round
+// two, a fifteenth session"); the scramble wants the reversal anyway, which this is without one.
+template <class U>
+inline U sobol_dimension1_reversed(U index) {
+  index ^= (index >> 1) & 0x55555555u;
+  index ^= (index >> 2) & 0x33333333u;
+  index ^= (index >> 4) & 0x0f0f0f0fu;
+  index ^= (index >> 8) & 0x00ff00ffu;
+  index ^= (index >> 16) & 0x0000ffffu;
+  return index;
 }
-inline constexpr SobolByteTables kSobolDimension1 = make_sobol_dimension1_tables();
-
-inline uint32_t sobol_dimension1(uint32_t index) {
-  const auto& t = kSobolDimension1.sums;
-  return t[0][index & 0xffu] ^ t[1][index >> 8 & 0xffu] ^ t[2][index >> 16 & 0xffu] ^ t[3][index >> 24];
-}
+inline uint32_t sobol_dimension1(uint32_t index) { return reverse_bits(sobol_dimension1_reversed(index)); }
 
 // The top 24 bits as a float in [0, 1): never rounded up to 1.
 inline float unit_float(uint32_t bits) { return static_cast<float>(bits >> 8) * 0x1p-24f; }
@@ -100,7 +89,8 @@ inline float owen_sobol_x(uint32_t shuffled, uint32_t x_seed) {
   return unit_float(reverse_bits(upward_hash(shuffled, x_seed)));  // owen_scramble(sobol_dimension0(i), x_seed)
 }
 inline float owen_sobol_y(uint32_t shuffled, uint32_t y_seed) {
-  return unit_float(owen_scramble(sobol_dimension1(shuffled), y_seed));
+  // owen_scramble(sobol_dimension1(shuffled), y_seed), the reversal that starts it left out.
+  return unit_float(reverse_bits(upward_hash(sobol_dimension1_reversed(shuffled), y_seed)));
 }
 inline Vec2 owen_sobol2(uint32_t index, uint32_t shuffle_seed, uint32_t x_seed, uint32_t y_seed) {
   const uint32_t i = shuffled_index(reverse_bits(index), shuffle_seed);

@@ -11,7 +11,7 @@ namespace {
 template <int K>
 [[gnu::always_inline]] inline void pairs(uint64_t point_key, const uint64_t* dimension, int count,
                                          uint32_t reversed_sample, float* x, float* y) {
-  Uint8 shuffle_seed[K], x_seed[K], y_seed[K], shuffled[K], sobol1[K], xs[K], ys[K];
+  Uint8 shuffle_seed[K], x_seed[K], y_seed[K], shuffled[K], xs[K], ys[K];
   for (int v = 0; v < K; ++v)
     for (int j = 0; j < 8; ++j) {
       const int lane = 8 * v + j;
@@ -21,11 +21,9 @@ template <int K>
       y_seed[v][j] = static_cast<uint32_t>(mix64(h));
     }
   for (int v = 0; v < K; ++v) shuffled[v] = reverse_bits(upward_hash(Uint8{} + reversed_sample, shuffle_seed[v]));
-  for (int v = 0; v < K; ++v)
-    for (int j = 0; j < 8; ++j) sobol1[v][j] = sobol_dimension1(shuffled[v][j]);  // table lookups: a lane at a time
   for (int v = 0; v < K; ++v) {
     xs[v] = reverse_bits(upward_hash(shuffled[v], x_seed[v])) >> 8;
-    ys[v] = reverse_bits(upward_hash(reverse_bits(sobol1[v]), y_seed[v])) >> 8;
+    ys[v] = reverse_bits(upward_hash(sobol_dimension1_reversed(shuffled[v]), y_seed[v])) >> 8;
   }
   for (int lane = 0; lane < count; ++lane) {  // unit_float's conversion
     x[lane] = static_cast<float>(xs[lane / 8][lane % 8]) * 0x1p-24f;

@@ -69,15 +69,21 @@ TEST_CASE("Sobol's first two dimensions make a (0, 2)-sequence, scrambled or not
   }
 }
 
-TEST_CASE("Sobol's second dimension by byte tables is the bit-by-bit definition, for every bit", "[sampling]") {
+TEST_CASE("Sobol's second dimension by superset sums is the bit-by-bit definition, for every bit", "[sampling]") {
   for (uint32_t bit = 0; bit < 32; ++bit) CHECK(sobol_dimension1(1u << bit) == sobol_dimension1_bitwise(1u << bit));
   uint32_t x = 0x9e3779b9u;
   for (int i = 0; i < 100000; ++i) {
-    x = x * 1664525u + 1013904223u;  // every byte of the index in play
+    x = x * 1664525u + 1013904223u;  // every bit of the index in play
     REQUIRE(sobol_dimension1(x) == sobol_dimension1_bitwise(x));
+    REQUIRE(sobol_dimension1_reversed(x) == reverse_bits(sobol_dimension1_bitwise(x)));
   }
   CHECK(sobol_dimension1(0xffffffffu) == sobol_dimension1_bitwise(0xffffffffu));
   CHECK(sobol_dimension1(0) == 0u);
+  // Eight lanes at once (the batch's form), each its own index's.
+  Uint8 lanes;
+  for (int j = 0; j < 8; ++j) lanes[j] = 0x01000193u * static_cast<uint32_t>(j + 1) ^ (1u << (4 * j));
+  const Uint8 reversed = sobol_dimension1_reversed(lanes);
+  for (int j = 0; j < 8; ++j) CHECK(reversed[j] == reverse_bits(sobol_dimension1_bitwise(lanes[j])));
 }
 
 TEST_CASE("a pixel's Sobol samples stratify every pair of dimensions, independent ones do not", "[sampling]") {
