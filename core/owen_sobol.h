@@ -59,10 +59,11 @@ inline uint32_t sobol_dimension1_bitwise(uint32_t index) {
 
 // The same with its bits mirrored, in five shift-and-xor steps on all 32 bits at once. Direction
 // number k is (1 + shift)^k applied to the top bit, so bit 31 - j of the result is the xor of the
-// index's bits k with C(k, j) odd: by Lucas's theorem, those k whose set bits include j's. Each
-// step below adds, for one bit of j, the bits whose j has it set (a superset sum). Byte tables did
-// it in four lookups, which eight vector lanes took one lane at a time (docs/benchmark.md, "Round
-// two, a fifteenth session"); the scramble wants the reversal anyway, which this is without one.
+// index's bits k with C(k, j) odd: by Lucas's theorem, those k whose set bits include j's (a
+// superset sum). Step b xors into each bit j whose bit b is clear the bit j + 2^b; after the five,
+// bit j holds the xor over all k that include j. The mirrored form is what the Owen scramble
+// starts from, so owen_sobol_y needs no reversal; byte tables did it in four lookups, which eight
+// vector lanes took one lane at a time (docs/benchmark.md, "Round two, a fifteenth session").
 template <class U>
 inline U sobol_dimension1_reversed(U index) {
   index ^= (index >> 1) & 0x55555555u;
