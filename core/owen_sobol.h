@@ -83,15 +83,25 @@ inline float unit_float(uint32_t bits) { return static_cast<float>(bits >> 8) * 
 // coordinates scrambled. Written without the bit reversals that cancel: the shuffled index's
 // first dimension is its reversal, which the coordinate's scramble reverses back.
 // `reversed_index`: reverse_bits(index), which a sample's many dimensions share.
-inline uint32_t shuffled_index(uint32_t reversed_index, uint32_t shuffle_seed) {
+template <class U>
+inline U shuffled_index(U reversed_index, U shuffle_seed) {
   return reverse_bits(upward_hash(reversed_index, shuffle_seed));
 }
+// Both coordinates' 32 bits, for one number or eight lanes (core/owen_sobol_batch.cpp).
+template <class U>
+inline U owen_sobol_x_bits(U shuffled, U x_seed) {
+  return reverse_bits(upward_hash(shuffled, x_seed));  // owen_scramble(sobol_dimension0(i), x_seed)
+}
+template <class U>
+inline U owen_sobol_y_bits(U shuffled, U y_seed) {
+  // owen_scramble(sobol_dimension1(shuffled), y_seed), the reversal that starts it left out.
+  return reverse_bits(upward_hash(sobol_dimension1_reversed(shuffled), y_seed));
+}
 inline float owen_sobol_x(uint32_t shuffled, uint32_t x_seed) {
-  return unit_float(reverse_bits(upward_hash(shuffled, x_seed)));  // owen_scramble(sobol_dimension0(i), x_seed)
+  return unit_float(owen_sobol_x_bits(shuffled, x_seed));
 }
 inline float owen_sobol_y(uint32_t shuffled, uint32_t y_seed) {
-  // owen_scramble(sobol_dimension1(shuffled), y_seed), the reversal that starts it left out.
-  return unit_float(reverse_bits(upward_hash(sobol_dimension1_reversed(shuffled), y_seed)));
+  return unit_float(owen_sobol_y_bits(shuffled, y_seed));
 }
 inline Vec2 owen_sobol2(uint32_t index, uint32_t shuffle_seed, uint32_t x_seed, uint32_t y_seed) {
   const uint32_t i = shuffled_index(reverse_bits(index), shuffle_seed);

@@ -20,10 +20,10 @@ template <int K>
       x_seed[v][j] = static_cast<uint32_t>(h >> 32);
       y_seed[v][j] = static_cast<uint32_t>(mix64(h));
     }
-  for (int v = 0; v < K; ++v) shuffled[v] = reverse_bits(upward_hash(Uint8{} + reversed_sample, shuffle_seed[v]));
+  for (int v = 0; v < K; ++v) shuffled[v] = shuffled_index(Uint8{} + reversed_sample, shuffle_seed[v]);
   for (int v = 0; v < K; ++v) {
-    xs[v] = reverse_bits(upward_hash(shuffled[v], x_seed[v])) >> 8;
-    ys[v] = reverse_bits(upward_hash(sobol_dimension1_reversed(shuffled[v]), y_seed[v])) >> 8;
+    xs[v] = owen_sobol_x_bits(shuffled[v], x_seed[v]) >> 8;
+    ys[v] = owen_sobol_y_bits(shuffled[v], y_seed[v]) >> 8;
   }
   for (int lane = 0; lane < count; ++lane) {  // unit_float's conversion
     x[lane] = static_cast<float>(xs[lane / 8][lane % 8]) * 0x1p-24f;
