@@ -16,17 +16,15 @@ Vec2 height_gradient(const BumpMap& bump, const std::vector<Texture>& textures, 
                      TextureFilter filter) {
   const Texture& map = textures[bump.height.texture];
   const TextureMapping& m = bump.height.mapping;
-  const float level = map.filter_level(filter, footprint);  // once for all four
-  const auto height = [&](Vec2 at) {
-    const Vec3 t = map.sample_at_level(at, m.wrap, filter, level);
-    return (t.x + t.y + t.z) / 3.0f;
-  };
   const float eu =
       std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.width()), 0.5f * footprint.width());
   const float ev =
       std::max(bump.epsilon > 0.0f ? bump.epsilon : 1.0f / static_cast<float>(map.height()), 0.5f * footprint.width());
-  const float bu = (height(uv + Vec2(eu, 0.0f)) - height(uv - Vec2(eu, 0.0f))) / (2.0f * eu);
-  const float bv = (height(uv + Vec2(0.0f, ev)) - height(uv - Vec2(0.0f, ev))) / (2.0f * ev);
+  // The four points at one mip level (the footprint's), in one lookup.
+  const std::array<Vec3, 4> t = map.sample_cross(uv, Vec2(eu, ev), m.wrap, filter, map.filter_level(filter, footprint));
+  const auto height = [&](size_t k) { return (t[k].x + t[k].y + t[k].z) / 3.0f; };
+  const float bu = (height(0) - height(1)) / (2.0f * eu);
+  const float bv = (height(2) - height(3)) / (2.0f * ev);
   return bump.strength * Vec2(bu, bv);
 }
 

@@ -56,17 +56,32 @@ Vec3 Texture::nearest(Vec2 uv, WrapModes wrap, int level) const {
   return texel(x, y, level);
 }
 
-Vec3 Texture::bilinear(Vec2 uv, WrapModes wrap, int level) const {
-  const int w = width(level), h = height(level);
+Texture::TexelPair Texture::texel_pair(float u, int n, TextureWrap wrap) {
   // Texel centres sit at half-integers: shift by half a texel so that they become integers.
-  const float x = texel_coordinate(uv.x, w, wrap.u) - 0.5f, y = texel_coordinate(uv.y, h, wrap.v) - 0.5f;
-  const float x0 = std::floor(x), y0 = std::floor(y);
-  const float fx = x - x0, fy = y - y0;
-  const int i0 = wrap_texel(static_cast<int>(x0), w, wrap.u), i1 = wrap_texel(static_cast<int>(x0) + 1, w, wrap.u);
-  const int j0 = wrap_texel(static_cast<int>(y0), h, wrap.v), j1 = wrap_texel(static_cast<int>(y0) + 1, h, wrap.v);
-  const Vec3 top = (1.0f - fx) * texel(i0, j0, level) + fx * texel(i1, j0, level);
-  const Vec3 bottom = (1.0f - fx) * texel(i0, j1, level) + fx * texel(i1, j1, level);
-  return (1.0f - fy) * top + fy * bottom;
+  const float x = texel_coordinate(u, n, wrap) - 0.5f;
+  const float x0 = std::floor(x);
+  return {wrap_texel(static_cast<int>(x0), n, wrap), wrap_texel(static_cast<int>(x0) + 1, n, wrap), x - x0};
+}
+
+Vec3 Texture::blend(const TexelPair& x, const TexelPair& y, int level) const {
+  const Vec3 top = (1.0f - x.f) * texel(x.i0, y.i0, level) + x.f * texel(x.i1, y.i0, level);
+  const Vec3 bottom = (1.0f - x.f) * texel(x.i0, y.i1, level) + x.f * texel(x.i1, y.i1, level);
+  return (1.0f - y.f) * top + y.f * bottom;
+}
+
+Vec3 Texture::bilinear(Vec2 uv, WrapModes wrap, int level) const {
+  return blend(texel_pair(uv.x, width(level), wrap.u), texel_pair(uv.y, height(level), wrap.v), level);
+}
+
+// The points (u +- du, v) share v's row pair and (u, v +- dv) u's column pair: six pairs, not
+// eight. A coordinate plus 0 is itself here (texel_coordinate maps -0 and +0 alike).
+void Texture::bilinear_cross(Vec2 uv, Vec2 delta, WrapModes wrap, int level, std::array<Vec3, 4>& out) const {
+  const int w = width(level), h = height(level);
+  const TexelPair x = texel_pair(uv.x, w, wrap.u), y = texel_pair(uv.y, h, wrap.v);
+  out[0] = blend(texel_pair(uv.x + delta.x, w, wrap.u), y, level);
+  out[1] = blend(texel_pair(uv.x - delta.x, w, wrap.u), y, level);
+  out[2] = blend(x, texel_pair(uv.y + delta.y, h, wrap.v), level);
+  out[3] = blend(x, texel_pair(uv.y - delta.y, h, wrap.v), level);
 }
 
 float Texture::mip_level(const UvFootprint& footprint) const {
@@ -92,6 +107,30 @@ Vec3 Texture::sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, flo
     case TextureFilter::kBilinear:
     default: return bilinear(uv, wrap);
   }
+}
+
+std::array<Vec3, 4> Texture::sample_cross(Vec2 uv, Vec2 delta, WrapModes wrap, TextureFilter filter,
+                                          float level) const {
+  std::array<Vec3, 4> out;
+  if (filter == TextureFilter::kNearest) {
+    const Vec2 at[4] = {uv + Vec2(delta.x, 0.0f), uv - Vec2(delta.x, 0.0f), uv + Vec2(0.0f, delta.y),
+                        uv - Vec2(0.0f, delta.y)};
+    for (int k = 0; k < 4; ++k) out[static_cast<size_t>(k)] = nearest(at[k], wrap);
+    return out;
+  }
+  if (filter != TextureFilter::kTrilinear) {
+    bilinear_cross(uv, delta, wrap, 0, out);
+    return out;
+  }
+  // As sample_at_level: the level below, blended with the one above by the fraction.
+  const int lower = static_cast<int>(level);
+  const float t = level - static_cast<float>(lower);
+  bilinear_cross(uv, delta, wrap, lower, out);
+  if (t == 0.0f || lower + 1 >= level_count()) return out;
+  std::array<Vec3, 4> upper;
+  bilinear_cross(uv, delta, wrap, lower + 1, upper);
+  for (size_t k = 0; k < 4; ++k) out[k] = (1.0f - t) * out[k] + t * upper[k];
+  return out;
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -67,9 +68,10 @@ class Texture {
   // The texture at (u, v). `footprint`: how much of the texture one pixel's ray covers; only
   // trilinear filtering reads it.
   Vec3 sample(Vec2 uv, WrapModes wrap, TextureFilter filter, const UvFootprint& footprint = {}) const;
-  // The same with the footprint's mip level worked out already (filter_level): for several
-  // lookups with one footprint, as a bump map's four.
-  Vec3 sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const;
+  // The texture at (u + du, v), (u - du, v), (u, v + dv) and (u, v - dv), in that order, at the
+  // (fractional) mip level `level` (filter_level): a bump map's central differences. The same
+  // floats as four lookups, with the row or column that two points share worked out once.
+  std::array<Vec3, 4> sample_cross(Vec2 uv, Vec2 delta, WrapModes wrap, TextureFilter filter, float level) const;
   // The level a lookup with `filter` reads: the footprint's for trilinear filtering, else 0.
   float filter_level(TextureFilter filter, const UvFootprint& footprint) const {
     return filter == TextureFilter::kTrilinear ? mip_level(footprint) : 0.0f;
@@ -88,6 +90,17 @@ class Texture {
     std::vector<Vec3> texels;
   };
   std::vector<Level> levels_;  // level 0 the image; each next one half the size, down to 1 x 1
+
+  // One axis of a bilinear lookup: the two texels either side of the coordinate, wrapped, and
+  // the weight of the second.
+  struct TexelPair {
+    int i0, i1;
+    float f;
+  };
+  static TexelPair texel_pair(float u, int n, TextureWrap wrap);
+  Vec3 blend(const TexelPair& x, const TexelPair& y, int level) const;  // four texels by weight
+  Vec3 sample_at_level(Vec2 uv, WrapModes wrap, TextureFilter filter, float level) const;
+  void bilinear_cross(Vec2 uv, Vec2 delta, WrapModes wrap, int level, std::array<Vec3, 4>& out) const;
 };
 
 // Texel index i wrapped into [0, n) by the wrap mode. The lookups' indices lie within one period

@@ -1,7 +1,9 @@
 // Texture sampling with real numbers: the texel-centre convention, bilinear weights, wrap modes
 // at the borders, mip levels.
 #include <catch2/catch.hpp>
+#include <cstring>
 
+#include "core/rng.h"
 #include "core/texture/texture.h"
 
 using namespace rt;
@@ -119,4 +121,38 @@ TEST_CASE("the mip level counts texels along each axis of the footprint", "[text
   CHECK(label.mip_level(UvFootprint(8.0f / 1024)) == Approx(3.0f));
   const Texture square(256, 256, std::vector<Vec3>(256 * 256, Vec3(0.5f)));
   CHECK(square.mip_level(UvFootprint(Vec2(0.0f, 0.0f), Vec2(3.0f / 256, 4.0f / 256))) == Approx(std::log2(5.0f)));
+}
+
+TEST_CASE("a cross of four lookups gives the floats of four single lookups", "[texture]") {
+  // sample_cross shares rows and columns between the points; each must still be what sample
+  // returns on its own, bit for bit, for every filter, wrap mode and level (a bump map's normals
+  // may not move). Coordinates run far outside [0, 1], to -0, and the footprints from none to
+  // past the chain's end.
+  std::vector<Vec3> texels;
+  Rng rng(7);
+  for (int i = 0; i < 13 * 6; ++i) texels.emplace_back(rng.next_float(), rng.next_float(), rng.next_float());
+  const Texture t(13, 6, std::move(texels));
+  const TextureWrap modes[] = {TextureWrap::kRepeat, TextureWrap::kClamp, TextureWrap::kMirror};
+  const TextureFilter filters[] = {TextureFilter::kNearest, TextureFilter::kBilinear, TextureFilter::kTrilinear};
+  int compared = 0;
+  for (int n = 0; n < 400; ++n) {
+    const Vec2 uv = n == 0 ? Vec2(-0.0f, -0.0f) : Vec2(6.0f * rng.next_float() - 3.0f, 6.0f * rng.next_float() - 3.0f);
+    const Vec2 delta(0.3f * rng.next_float(), 0.3f * rng.next_float());
+    const UvFootprint footprint(n % 5 == 0 ? 0.0f : 2.0f * rng.next_float() * rng.next_float());
+    const Vec2 at[4] = {uv + Vec2(delta.x, 0.0f), uv - Vec2(delta.x, 0.0f), uv + Vec2(0.0f, delta.y),
+                        uv - Vec2(0.0f, delta.y)};
+    for (const TextureFilter filter : filters)
+      for (const TextureWrap u : modes)
+        for (const TextureWrap v : modes) {
+          const WrapModes wrap(u, v);
+          const std::array<Vec3, 4> cross = t.sample_cross(uv, delta, wrap, filter, t.filter_level(filter, footprint));
+          for (size_t k = 0; k < 4; ++k) {
+            const Vec3 single = t.sample(at[k], wrap, filter, footprint);
+            INFO("point " << n << ", lookup " << k << ", filter " << static_cast<int>(filter));
+            REQUIRE(std::memcmp(&cross[k], &single, sizeof single) == 0);
+            ++compared;
+          }
+        }
+  }
+  CHECK(compared == 400 * 3 * 9 * 4);
 }
