@@ -66,23 +66,26 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
     raise(p2, mesh.normals[i2], hit.b2);
   }
   SurfaceInteraction si;
-  si.texcoord[0] = interpolate_uv_frame(mesh.uvs, i0, i1, i2, hit, e1, e2, object_normal);
-  si.texcoord[1] =
-      mesh.uvs1.empty() ? si.texcoord[0] : interpolate_uv_frame(mesh.uvs1, i0, i1, i2, hit, e1, e2, object_normal);
+  // Each set's frame goes out to the world as it is made; the second set, where the mesh has
+  // none, is the first's (its world frame copied, not transformed again).
+  const auto world_frame = [&](const std::vector<Vec2>& uvs) {
+    UvFrame f = interpolate_uv_frame(uvs, i0, i1, i2, hit, e1, e2, object_normal);
+    f.dpdu = placement.vector_to_world(f.dpdu);
+    f.dpdv = placement.vector_to_world(f.dpdv);
+    return f;
+  };
+  si.texcoord[0] = world_frame(mesh.uvs);
+  si.texcoord[1] = mesh.uvs1.empty() ? si.texcoord[0] : world_frame(mesh.uvs1);
   if (!mesh.colors.empty()) si.color = b0 * mesh.colors[i0] + hit.b1 * mesh.colors[i1] + hit.b2 * mesh.colors[i2];
   if (!mesh.tangents.empty())
     si.tangent = b0 * mesh.tangents[i0] + hit.b1 * mesh.tangents[i1] + hit.b2 * mesh.tangents[i2];
 
-  // Then out to the world.
+  // Then the rest out to the world.
   // pbrt-v4's bound for a point from barycentrics (section 6.8.5).
   const Vec3 error = float_gamma(7) * (glm::abs(b0 * p0) + glm::abs(hit.b1 * p1) + glm::abs(hit.b2 * p2));
   si.position = placement.point_to_world(position, error, si.position_error);
   si.geometric_normal = placement.normal_to_world_unit(geometric);
   si.shading_normal = placement.normal_to_world_unit(shading);
-  for (UvFrame& f : si.texcoord) {
-    f.dpdu = placement.vector_to_world(f.dpdu);
-    f.dpdv = placement.vector_to_world(f.dpdv);
-  }
   if (si.tangent.w != 0.0f) {
     // The bitangent is cross(normal, tangent) * w; a mirror flips that cross product, so w flips too.
     const bool mirrors = glm::determinant(Mat3(placement.to_world)) < 0.0f;
