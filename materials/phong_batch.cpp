@@ -3,18 +3,16 @@
 #include <cstring>
 
 #include "core/accel/simd.h"
+#include "core/avx2_clones.h"
 #include "materials/lobe_power.h"
 
 namespace rt {
 
 static_assert(kPacketSize == 8, "a batch is one Float8");
 
-// GCC only (clang and the sanitizers get the baseline: the same floats; no contraction in either).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy,
-                 const float* dz, unsigned lanes, PhongBatch& out) {
+RT_AVX2_CLONES
+void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy, const float* dz,
+                 unsigned lanes, PhongBatch& out) {
   const Float8 lx = load8(dx), ly = load8(dy), lz = load8(dz);
   const Float8 n_dot_l = lx * n.x + ly * n.y + lz * n.z;
   // reflect(-l, n) = -l - 2 dot(-l, n) n, then its dot with v.

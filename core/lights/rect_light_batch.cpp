@@ -2,12 +2,11 @@
 
 #include <cstring>
 
+#include "core/avx2_clones.h"
+
 namespace rt {
 
-// GCC only (clang and the sanitizers get the baseline: the same floats).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+RT_AVX2_CLONES
 void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point, const float (&u)[2][kPacketSize],
                       RectLightBatch& out) {
   const Vec3 c = light.corner, e1 = light.edge1, e2 = light.edge2, n = frame.unit_normal;

@@ -3,13 +3,11 @@
 #include <cstring>
 
 #include "core/accel/simd.h"
+#include "core/avx2_clones.h"
 
 namespace rt {
 
-// GCC only (clang and the sanitizers get the baseline: the same floats, IEEE lane by lane).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+RT_AVX2_CLONES
 void perspective_ray_batch(const Camera& camera, const float* x, const float* y, int count, int width, int height,
                            Ray* out) {
   Float8 px = splat8(0.0f), py = splat8(0.0f);  // unused lanes: any finite point
