@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "core/avx2_clones.h"
+
 namespace rt {
 namespace {
 
@@ -56,25 +58,30 @@ Vec3 Texture::nearest(Vec2 uv, WrapModes wrap, int level) const {
   return texel(x, y, level);
 }
 
-Texture::TexelPair Texture::texel_pair(float u, int n, TextureWrap wrap) {
+// Both inlined into every bilinear lookup: GCC left them out of line, a call each. The lookups are
+// also cloned for AVX2 (RT_AVX2_CLONES), where SSE4.1's roundss is a floor in one instruction and
+// baseline x86-64 takes about ten (a path-traced bump-mapped floor: 3% fewer instructions).
+__attribute__((always_inline)) inline Texture::TexelPair Texture::texel_pair(float u, int n, TextureWrap wrap) {
   // Texel centres sit at half-integers: shift by half a texel so that they become integers.
   const float x = texel_coordinate(u, n, wrap) - 0.5f;
   const float x0 = std::floor(x);
   return {wrap_texel(static_cast<int>(x0), n, wrap), wrap_texel(static_cast<int>(x0) + 1, n, wrap), x - x0};
 }
 
-Vec3 Texture::blend(const TexelPair& x, const TexelPair& y, int level) const {
+__attribute__((always_inline)) inline Vec3 Texture::blend(const TexelPair& x, const TexelPair& y, int level) const {
   const Vec3 top = (1.0f - x.f) * texel(x.i0, y.i0, level) + x.f * texel(x.i1, y.i0, level);
   const Vec3 bottom = (1.0f - x.f) * texel(x.i0, y.i1, level) + x.f * texel(x.i1, y.i1, level);
   return (1.0f - y.f) * top + y.f * bottom;
 }
 
+RT_AVX2_CLONES
 Vec3 Texture::bilinear(Vec2 uv, WrapModes wrap, int level) const {
   return blend(texel_pair(uv.x, width(level), wrap.u), texel_pair(uv.y, height(level), wrap.v), level);
 }
 
 // The points (u +- du, v) share v's row pair and (u, v +- dv) u's column pair: six pairs, not
 // eight. A coordinate plus 0 is itself here (texel_coordinate maps -0 and +0 alike).
+RT_AVX2_CLONES
 void Texture::bilinear_cross(Vec2 uv, Vec2 delta, WrapModes wrap, int level, std::array<Vec3, 4>& out) const {
   const int w = width(level), h = height(level);
   const TexelPair x = texel_pair(uv.x, w, wrap.u), y = texel_pair(uv.y, h, wrap.v);
