@@ -96,8 +96,9 @@ class Bsdf {
   float layer_ = 1.0f;  // 1 - transmission: what the opaque layer keeps
   Vec3 base_color_{0.0f};
   float metallic_ = 0.0f;
-  Ggx ggx_;        // the specular lobe's (anisotropic with KHR_materials_anisotropy)
-  Ggx glass_ggx_;  // the rough dielectric's
+  Ggx ggx_;                 // the specular lobe's (anisotropic with KHR_materials_anisotropy)
+  float ggx_g1_wo_ = 0.0f;  // its masking of wo: the same for every light's direction, so once
+  Ggx glass_ggx_;           // the rough dielectric's
   // the layered extensions (EvaluatedLayers)
   bool general_fresnel_ = false;  // F0, F90 or iridescence other than the core model's
   Vec3 dielectric_f0_{0.04f};

@@ -28,6 +28,7 @@ void Bsdf::init_gltf(const EvaluatedSurface& s, float cos_o, float* weight) {
   // KHR_materials_anisotropy: rougher along the direction (the frame's x), alpha across it.
   const float along = alpha + (1.0f - alpha) * l.anisotropy * l.anisotropy;
   ggx_ = Ggx(l.anisotropy > 0.0f ? along : alpha, alpha);
+  ggx_g1_wo_ = ggx_.g1(wo_local_);
   glass_ggx_ = Ggx(alpha);
   general_fresnel_ = !l.default_fresnel();
   dielectric_f0_ = l.dielectric_f0;
@@ -122,8 +123,7 @@ Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi) const {
   Vec3 dielectric;
   const Vec3 fresnel = gltf_fresnel(wo_h, dielectric);
   Vec3 base = base_diffuse_ * (Vec3(1.0f) - dielectric) * (wi.z / kPi);
-  if (probability_[kSpecular] > 0.0f)
-    base += layer_ * fresnel * (ggx_.d(h) * ggx_.g1(wi) * ggx_.g1(wo) / (4.0f * wo.z));
+  if (probability_[kSpecular] > 0.0f) base += layer_ * fresnel * (ggx_.d(h) * ggx_.g1(wi) * ggx_g1_wo_ / (4.0f * wo.z));
   if (sheen_max_ > 0.0f) {
     // The base keeps what the sheen leaves on the way in and out (the smaller share: reciprocal).
     base *= std::min(sheen_keep_o_, 1.0f - sheen_max_ * sheen_albedo(wi.z, sheen_roughness_));
@@ -147,7 +147,8 @@ float Bsdf::pdf_gltf(Vec3 wi_world, Vec3 wi) const {
   }
   if (wi.z <= 0.0f || wo.z <= 0.0f) return p;
   p += (probability_[kDiffuse] + probability_[kSheen]) * wi.z / kPi;
-  if (probability_[kSpecular] > 0.0f) p += probability_[kSpecular] * ggx_.reflected_pdf(wo, glm::normalize(wo + wi));
+  if (probability_[kSpecular] > 0.0f)
+    p += probability_[kSpecular] * ggx_.reflected_pdf(ggx_g1_wo_, wo, glm::normalize(wo + wi));
   return p;
 }
 
