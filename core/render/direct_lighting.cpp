@@ -23,9 +23,7 @@ constexpr int kMinShadowVolume = 4;
 
 // The shadow rays from one surface point. Where they start: shadow_ray_origin depends on the
 // direction only by the side of the geometric normal it leaves on, so the two origins are made
-// once per point, not per sample (4% of a soft-shadow render went there; the same floats). As
-// ShadowOrigins (direct_lighting.h), but both at once, the back only where a lift lets a light
-// behind through (make refuses the rest): that one's lazy back cost 1% more instructions here.
+// once per point, not per sample (4% of a soft-shadow render went there; the same floats).
 class ShadowRays {
  public:
   explicit ShadowRays(const EvaluatedSurface& s)

@@ -3,8 +3,6 @@
 // fully, glass partly). Area lights average render.shadow_samples stratified samples: soft shadows.
 #pragma once
 
-#include <optional>
-
 #include "core/render/integrator.h"
 #include "materials/evaluated_surface.h"
 
@@ -41,25 +39,5 @@ void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, c
 // Where a shadow ray from the surface towards `direction` starts: off the surface by its rounding
 // bound, from the lifted point on a smooth mesh (Hanika; SurfaceInteraction::shadow_lift).
 Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction);
-
-// The shadow rays' origins at one surface point. shadow_ray_origin depends on the direction only
-// by the side of the geometric normal it leaves on, so each side's origin is made once per point,
-// not once per light or sample (the same floats; 2% of a path-traced glTF scene's instructions
-// went there with three lights): the front's at once, the back's when a light first lies behind.
-class ShadowOrigins {
- public:
-  explicit ShadowOrigins(const EvaluatedSurface& s) : s_(&s), front_(shadow_ray_origin(s, s.ng)) {}
-  Vec3 front() const { return front_; }  // the side the geometric normal faces
-  Vec3 towards(Vec3 direction) const { return glm::dot(direction, s_->ng) < 0.0f ? back() : front_; }
-
- private:
-  Vec3 back() const {
-    if (!back_) back_ = shadow_ray_origin(*s_, -s_->ng);
-    return *back_;
-  }
-  const EvaluatedSurface* s_;
-  Vec3 front_;
-  mutable std::optional<Vec3> back_;  // a cache: worked out for the first light behind
-};
 
 }  // namespace rt

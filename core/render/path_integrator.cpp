@@ -13,9 +13,9 @@ constexpr float kScatteredSpread = 0.05f;
 
 // A shadow ray from the surface to a point `distance` away along unit `direction`; false when
 // something blocks it. Stops just short of the point, so the surface the point lies on does not.
-bool visible(const ShadowOrigins& from, Vec3 direction, float distance, TraceContext& ctx) {
+bool visible(const EvaluatedSurface& s, Vec3 direction, float distance, TraceContext& ctx) {
   Ray shadow;
-  shadow.origin = from.towards(direction);
+  shadow.origin = shadow_ray_origin(s, direction);
   shadow.direction = direction;
   shadow.tmin = 0.0f;
   shadow.tmax = distance * (1.0f - kShadowEpsilon);
@@ -45,14 +45,13 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
   const uint64_t path = static_cast<uint64_t>(bounce);
   const PathSettings::Strategy strategy = ctx.settings.path.strategy;
   const bool sample_areas = strategy != PathSettings::Strategy::kBsdf;  // all but the delta lights
-  const ShadowOrigins origins(s);
   const auto one_light = [&](size_t l, float chosen) {
     if (!light_present(scene, l) || (!sample_areas && !light_is_delta(scene, l))) return Vec3(0.0f);
     const LightSample ls = sample_li(scene, l, s.position, ctx.samples, path, ctx.settings.detail);
     if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) return Vec3(0.0f);
     const Vec3 f = bsdf.eval(ls.direction);
     if (max_component(f) <= 0.0f) return Vec3(0.0f);
-    if (!visible(origins, ls.direction, ls.distance, ctx)) return Vec3(0.0f);
+    if (!visible(s, ls.direction, ls.distance, ctx)) return Vec3(0.0f);
     if (ls.delta) return f * ls.radiance * (kDeltaLightScale / chosen);
     const float pdf = ls.pdf * chosen;
     return f * ls.radiance * (light_weight(strategy, pdf, bsdf.pdf(ls.direction)) / pdf);
