@@ -13,10 +13,8 @@ float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 // Shirley's denominator) keeps it reciprocal, gives back at most ks at every angle and close to ks
 // wherever the lobe stays above the surface; the classic normalisation, (n + 2) / (2 pi) cos^n,
 // gives back only about ks cos(theta_o), so glossy rims went dark.
-float phong_lobe(Vec3 wi, Vec3 wo, Vec3 r, float exponent) {
-  const float c = glm::dot(wi, r);
-  return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * lobe_power(c, exponent) / std::max(wi.z, wo.z) : 0.0f;
-}
+// The normalised Phong lobe about r: sampling's density, and f |cos| / cos(wi) / max(cos(wi),
+// cos(wo)) (eval_local).
 float phong_pdf(Vec3 wi, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
   return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * lobe_power(c, exponent) : 0.0f;
@@ -121,27 +119,25 @@ void Bsdf::rough_glass(Vec3 wi, Vec3& f, float& pdf) const {
   }
 }
 
-Vec3 Bsdf::eval_local(Vec3 wi_world, Vec3 wi) const {
-  if (pbr_) return eval_gltf(wi_world, wi);
+Vec3 Bsdf::eval_local(Vec3 wi_world, Vec3 wi, float* pdf) const {
+  if (pbr_) return eval_gltf(wi_world, wi, pdf);
   const Vec3 wo = wo_local_;
+  if (pdf) *pdf = 0.0f;
   if (wi.z <= 0.0f || wo.z <= 0.0f) return Vec3(0.0f);
   const Vec3 r = mirror_local(wo);
   Vec3 f = diffuse_ * (wi.z / kPi);
-  if (probability_[kSpecular] > 0.0f) f += specular_ * (phong_lobe(wi, wo, r, specular_exponent_) * wi.z);
-  if (probability_[kGlossy] > 0.0f) f += glossy_ * (phong_lobe(wi, wo, r, glossy_exponent_) * wi.z);
+  float density = probability_[kDiffuse] * wi.z / kPi;
+  // Each Phong lobe's power once, for its f and its density.
+  const auto lobe = [&](Lobe l, Vec3 colour, float exponent) {
+    if (!(probability_[l] > 0.0f)) return;
+    const float lobe_pdf = phong_pdf(wi, r, exponent);
+    f += colour * (lobe_pdf / std::max(wi.z, wo.z) * wi.z);
+    density += probability_[l] * lobe_pdf;
+  };
+  lobe(kSpecular, specular_, specular_exponent_);
+  lobe(kGlossy, glossy_, glossy_exponent_);
+  if (pdf) *pdf = density;
   return f;
-}
-
-float Bsdf::pdf_local(Vec3 wi_world, Vec3 wi) const {
-  if (pbr_) return pdf_gltf(wi_world, wi);
-  const Vec3 wo = wo_local_;
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
-  const float p = probability_[kDiffuse] * wi.z / kPi;
-  const Vec3 r = mirror_local(wo);
-  float lobes = p;
-  if (probability_[kSpecular] > 0.0f) lobes += probability_[kSpecular] * phong_pdf(wi, r, specular_exponent_);
-  if (probability_[kGlossy] > 0.0f) lobes += probability_[kGlossy] * phong_pdf(wi, r, glossy_exponent_);
-  return lobes;
 }
 
 // wi must be on the same side of the geometric surface as of the shading one: a shading normal
@@ -156,13 +152,20 @@ bool Bsdf::sides_agree(Vec3 wi, Vec3 wi_local) const {
 Vec3 Bsdf::eval(Vec3 wi) const {
   if (!smooth_) return Vec3(0.0f);
   const Vec3 local = frame_.to_local(wi);
-  return sides_agree(wi, local) ? eval_local(wi, local) : Vec3(0.0f);
+  return sides_agree(wi, local) ? eval_local(wi, local, nullptr) : Vec3(0.0f);
 }
 
 float Bsdf::pdf(Vec3 wi) const {
-  if (!smooth_) return 0.0f;
+  float density = 0.0f;
+  eval(wi, density);
+  return density;
+}
+
+Vec3 Bsdf::eval(Vec3 wi, float& pdf) const {
+  pdf = 0.0f;
+  if (!smooth_) return Vec3(0.0f);
   const Vec3 local = frame_.to_local(wi);
-  return sides_agree(wi, local) ? pdf_local(wi, local) : 0.0f;
+  return sides_agree(wi, local) ? eval_local(wi, local, &pdf) : Vec3(0.0f);
 }
 
 bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
@@ -243,11 +246,12 @@ bool Bsdf::sample(float u_lobe, Vec2 u, BsdfSample& out) const {
   }
   if (lobe != kClearcoat && lobe != kSheen) wi = frame_.to_world(wi_local);
   if (!sides_agree(wi, wi_local)) return false;
-  const float density = pdf_local(wi, wi_local);
+  float density = 0.0f;
+  const Vec3 f = eval_local(wi, wi_local, &density);
   if (!(density > 0.0f)) return false;
   out.wi = wi;
   out.pdf = density;
-  out.weight = eval_local(wi, wi_local) / density;
+  out.weight = f / density;
   out.transmitted = wi_local.z < 0.0f;
   return true;
 }

@@ -51,6 +51,9 @@ class Bsdf {
   Vec3 eval(Vec3 wi) const;
   // The density with which sample() returns wi through a smooth lobe.
   float pdf(Vec3 wi) const;
+  // Both at once (multiple importance sampling wants both): the same floats, with the work they
+  // share (the half vector, its microfacet density, Phong's power) done once.
+  Vec3 eval(Vec3 wi, float& pdf) const;
   // A direction from the lobes, picked by u_lobe; u places it within its lobe. False: the
   // sample was lost (below the surface), contributing nothing.
   bool sample(float u_lobe, Vec2 u, BsdfSample& out) const;
@@ -64,14 +67,14 @@ class Bsdf {
   // The specular lobe's Fresnel at cos(v.h), and the dielectric's part of it (for the diffuse
   // layer under it).
   Vec3 gltf_fresnel(float cos_h, Vec3& dielectric) const;
-  Vec3 eval_gltf(Vec3 wi, Vec3 wi_local) const;
-  float pdf_gltf(Vec3 wi, Vec3 wi_local) const;
+  Vec3 eval_gltf(Vec3 wi, Vec3 wi_local, float* pdf) const;
   // The clear coat's f |cos| and density at wi (world), 0 when it is a mirror.
   Vec3 coat_f(Vec3 wi) const;
   float coat_pdf(Vec3 wi) const;
   bool sample_gltf_lobe(Lobe lobe, Vec2 u, Vec3& wi) const;
-  Vec3 eval_local(Vec3 wi, Vec3 wi_local) const;
-  float pdf_local(Vec3 wi, Vec3 wi_local) const;
+  // f |cos| at wi (world) and wi_local (the lobes' frame), and where `pdf` is given the density
+  // of drawing wi there too.
+  Vec3 eval_local(Vec3 wi, Vec3 wi_local, float* pdf) const;
   // The rough dielectric's f |cos| and its density (with its own reflect / refract split) at wi.
   void rough_glass(Vec3 wi, Vec3& f, float& pdf) const;
   bool sides_agree(Vec3 wi, Vec3 wi_local) const;

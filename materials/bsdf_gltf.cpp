@@ -108,22 +108,32 @@ float Bsdf::coat_pdf(Vec3 wi) const {
   return probability_[kClearcoat] * coat_ggx_.reflected_pdf(coat_wo_, glm::normalize(coat_wo_ + w));
 }
 
-Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi) const {
+Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi, float* pdf) const {
   const Vec3 wo = wo_local_;
   Vec3 f = coat_f(wi_world);
+  float density = pdf ? coat_pdf(wi_world) : 0.0f;
   if (probability_[kRoughGlass] > 0.0f) {
     Vec3 glass;
-    float unused;
-    rough_glass(wi, glass, unused);
+    float glass_pdf;
+    rough_glass(wi, glass, glass_pdf);
     f += glass;  // (weighted by what the layers above let through, seen from wo)
+    density += glass_pdf * probability_[kRoughGlass];
   }
+  if (pdf) *pdf = density;
   if (wi.z <= 0.0f || wo.z <= 0.0f) return f;
   const Vec3 h = glm::normalize(wo + wi);
   const float wo_h = std::max(glm::dot(wo, h), 0.0f);
   Vec3 dielectric;
   const Vec3 fresnel = gltf_fresnel(wo_h, dielectric);
   Vec3 base = base_diffuse_ * (Vec3(1.0f) - dielectric) * (wi.z / kPi);
-  if (probability_[kSpecular] > 0.0f) base += layer_ * fresnel * (ggx_.d(h) * ggx_.g1(wi) * ggx_g1_wo_ / (4.0f * wo.z));
+  density += (probability_[kDiffuse] + probability_[kSheen]) * wi.z / kPi;
+  if (probability_[kSpecular] > 0.0f) {
+    const float d = ggx_.d(h);
+    base += layer_ * fresnel * (d * ggx_.g1(wi) * ggx_g1_wo_ / (4.0f * wo.z));
+    // Drawn by the visible normals: G1(wo) D(h) / (4 wo.z) (Ggx::reflected_pdf; wo.z > 0 here).
+    density += probability_[kSpecular] * (ggx_g1_wo_ * d / (4.0f * wo.z));
+  }
+  if (pdf) *pdf = density;
   if (sheen_max_ > 0.0f) {
     // The base keeps what the sheen leaves on the way in and out (the smaller share: reciprocal).
     base *= std::min(sheen_keep_o_, 1.0f - sheen_max_ * sheen_albedo(wi.z, sheen_roughness_));
@@ -136,24 +146,8 @@ Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi) const {
   return f + keep * base;
 }
 
-float Bsdf::pdf_gltf(Vec3 wi_world, Vec3 wi) const {
-  const Vec3 wo = wo_local_;
-  float p = coat_pdf(wi_world);
-  if (probability_[kRoughGlass] > 0.0f) {
-    Vec3 unused;
-    float glass;
-    rough_glass(wi, unused, glass);
-    p += glass * probability_[kRoughGlass];
-  }
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return p;
-  p += (probability_[kDiffuse] + probability_[kSheen]) * wi.z / kPi;
-  if (probability_[kSpecular] > 0.0f)
-    p += probability_[kSpecular] * ggx_.reflected_pdf(ggx_g1_wo_, wo, glm::normalize(wo + wi));
-  return p;
-}
-
 // A direction (world) from the clear coat's rough lobe or the sheen's (cosine-distributed: the
-// sheen is broad, and its density is the cosine's in pdf_gltf).
+// sheen is broad, and its density is the cosine's in eval_gltf).
 bool Bsdf::sample_gltf_lobe(Lobe lobe, Vec2 u, Vec3& wi) const {
   if (lobe == kSheen) {
     wi = frame_.to_world(cosine_hemisphere(u));

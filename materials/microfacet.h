@@ -56,11 +56,9 @@ struct Ggx {
   }
   // Density of the reflected direction wi = reflect(-wo, h) when h is drawn by sample_visible:
   // d_visible / (4 wo.h) = G1(wo) D(h) / (4 wo.z).
-  float reflected_pdf(Vec3 wo, Vec3 h) const { return reflected_pdf(g1(wo), wo, h); }
-  // The same with G1(wo) worked out already (once per hit, for every light).
-  float reflected_pdf(float g1_wo, Vec3 wo, Vec3 h) const {
+  float reflected_pdf(Vec3 wo, Vec3 h) const {
     if (wo.z <= 0.0f) return 0.0f;
-    return g1_wo * d(h) / (4.0f * wo.z);
+    return g1(wo) * d(h) / (4.0f * wo.z);
   }
 };
 

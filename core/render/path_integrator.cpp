@@ -49,12 +49,14 @@ Vec3 PathIntegrator::direct_light(const EvaluatedSurface& s, const Bsdf& bsdf, i
     if (!light_present(scene, l) || (!sample_areas && !light_is_delta(scene, l))) return Vec3(0.0f);
     const LightSample ls = sample_li(scene, l, s.position, ctx.samples, path, ctx.settings.detail);
     if (!(ls.pdf > 0.0f) || max_component(ls.radiance) <= 0.0f) return Vec3(0.0f);
-    const Vec3 f = bsdf.eval(ls.direction);
+    // An area light's sample is weighted against BSDF sampling's density: with f, in one go.
+    float bsdf_pdf = 0.0f;
+    const Vec3 f = ls.delta ? bsdf.eval(ls.direction) : bsdf.eval(ls.direction, bsdf_pdf);
     if (max_component(f) <= 0.0f) return Vec3(0.0f);
     if (!visible(s, ls.direction, ls.distance, ctx)) return Vec3(0.0f);
     if (ls.delta) return f * ls.radiance * (kDeltaLightScale / chosen);
     const float pdf = ls.pdf * chosen;
-    return f * ls.radiance * (light_weight(strategy, pdf, bsdf.pdf(ls.direction)) / pdf);
+    return f * ls.radiance * (light_weight(strategy, pdf, bsdf_pdf) / pdf);
   };
   const LightSelection& selection = scene.light_selection;
   if (selection.active()) {
