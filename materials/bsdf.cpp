@@ -13,8 +13,8 @@ float average(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 // Shirley's denominator) keeps it reciprocal, gives back at most ks at every angle and close to ks
 // wherever the lobe stays above the surface; the classic normalisation, (n + 2) / (2 pi) cos^n,
 // gives back only about ks cos(theta_o), so glossy rims went dark.
-// The normalised Phong lobe about r: sampling's density, and f |cos| / cos(wi) / max(cos(wi),
-// cos(wo)) (eval_local).
+// The normalised Phong lobe about r: the density sample_phong draws wi with. eval_local's
+// f |cos| is this / max(cos wi, cos wo) x cos wi.
 float phong_pdf(Vec3 wi, Vec3 r, float exponent) {
   const float c = glm::dot(wi, r);
   return c > 0.0f ? (exponent + 1.0f) * (0.5f / kPi) * lobe_power(c, exponent) : 0.0f;
