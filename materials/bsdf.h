@@ -67,8 +67,10 @@ class Bsdf {
   // The specular lobe's Fresnel at cos(v.h), and the dielectric's part of it (for the diffuse
   // layer under it).
   Vec3 gltf_fresnel(float cos_h, Vec3& dielectric) const;
+  Vec3 layered_fresnel(float cos_h, Vec3& dielectric) const;  // its general_fresnel_ case, out of line
   Vec3 eval_gltf(Vec3 wi, Vec3 wi_local, float* pdf) const;
-  // The clear coat's f |cos| and density at wi (world), 0 when it is a mirror.
+  // The clear coat's f |cos| and density at wi (world), 0 when it is a mirror (or there is no
+  // coat: coat_ 0, which callers test first, as most materials have none).
   Vec3 coat_f(Vec3 wi) const;
   float coat_pdf(Vec3 wi) const;
   bool sample_gltf_lobe(Lobe lobe, Vec2 u, Vec3& wi) const;

@@ -73,11 +73,15 @@ void Bsdf::init_gltf(const EvaluatedSurface& s, float cos_o, float* weight) {
   if (sheen_max_ > 0.0f) weight[kSheen] = coat_keep_ * sheen_max_ * sheen_albedo(cos_o, sheen_roughness_);
 }
 
-Vec3 Bsdf::gltf_fresnel(float cos_h, Vec3& dielectric) const {
-  if (!general_fresnel_) {
-    dielectric = Vec3(dielectric_schlick(cos_h));
-    return schlick_fresnel(f0_, cos_h);
-  }
+// The core model's Schlick inline (the common case, at every light's direction); the layers'
+// general form out of line, so that this stays small enough to be inlined.
+inline Vec3 Bsdf::gltf_fresnel(float cos_h, Vec3& dielectric) const {
+  if (general_fresnel_) return layered_fresnel(cos_h, dielectric);
+  dielectric = Vec3(dielectric_schlick(cos_h));
+  return schlick_fresnel(f0_, cos_h);
+}
+
+Vec3 Bsdf::layered_fresnel(float cos_h, Vec3& dielectric) const {
   const float m = std::clamp(1.0f - cos_h, 0.0f, 1.0f);
   const float m5 = (m * m) * (m * m) * m;
   dielectric = dielectric_f0_ + (Vec3(dielectric_f90_) - dielectric_f0_) * m5;
@@ -110,8 +114,12 @@ float Bsdf::coat_pdf(Vec3 wi) const {
 
 Vec3 Bsdf::eval_gltf(Vec3 wi_world, Vec3 wi, float* pdf) const {
   const Vec3 wo = wo_local_;
-  Vec3 f = coat_f(wi_world);
-  float density = pdf ? coat_pdf(wi_world) : 0.0f;
+  Vec3 f(0.0f);
+  float density = 0.0f;
+  if (coat_ > 0.0f) {
+    f = coat_f(wi_world);
+    if (pdf) density = coat_pdf(wi_world);
+  }
   if (probability_[kRoughGlass] > 0.0f) {
     Vec3 glass;
     float glass_pdf;
