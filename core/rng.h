@@ -6,13 +6,16 @@
 
 namespace rt {
 
-// SplitMix64 finaliser: a strong 64-bit mixer used to derive stream seeds from keys.
-constexpr uint64_t mix64(uint64_t z) {
+// SplitMix64 finaliser: a strong 64-bit mixer used to derive stream seeds from keys. For one
+// number or vector lanes of 64 bits (core/owen_sobol_batch.cpp).
+template <class U>
+constexpr U splitmix64_finaliser(U z) {
   z += 0x9e3779b97f4a7c15ull;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   return z ^ (z >> 31);
 }
+constexpr uint64_t mix64(uint64_t z) { return splitmix64_finaliser(z); }
 
 // PCG32 (O'Neill, pcg-random.org): small state, good statistics, cheap to construct per pixel.
 class Rng {
