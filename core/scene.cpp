@@ -40,14 +40,15 @@ namespace {
 
 // The area lights' faces, each taking the ray's place as what it meets when nearer; a camera ray
 // passes through those hidden from the camera.
-void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out, bool camera_ray) {
+void meet_area_lights(const Scene& scene, Ray& ray, SceneHit& out, bool camera_ray) {
   out.light = nullptr;
-  for (const Light& light : lights) {
+  for (const Light& light : scene.lights) {
     const RectLight* rect = std::get_if<RectLight>(&light);
+    if (!rect || !(rect->camera_visible || !camera_ray)) continue;
     float t;
     Vec2 uv;  // written by a light the ray misses too: kept only for one it meets
-    if (rect && (rect->camera_visible || !camera_ray) &&
-        rect->intersect(ray, t, &uv)) {  // nearer than the surface and the lights before
+    const auto l = static_cast<size_t>(&light - scene.lights.data());
+    if (intersect_rect(*rect, scene.rect_frame(l), ray, t, &uv)) {  // nearer than the surface and the lights before
       ray.tmax = t;
       out.light = rect;
       out.light_uv = uv;
@@ -60,7 +61,7 @@ void meet_area_lights(const std::vector<Light>& lights, Ray& ray, SceneHit& out,
 
 bool Scene::intersect(Ray& ray, SceneHit& out) const {
   out.surface = bvh.intersect(ray, out.hit);
-  meet_area_lights(lights, ray, out, false);
+  meet_area_lights(*this, ray, out, false);
   return out.surface || out.light;
 }
 
@@ -70,7 +71,7 @@ void Scene::intersect_packet(Ray* rays, SceneHit* out, int count) const {
   for (int i = 0; i < count; ++i) {
     out[i].surface = (found >> i & 1u) != 0;
     out[i].hit = hits[i];
-    meet_area_lights(lights, rays[i], out[i], true);
+    meet_area_lights(*this, rays[i], out[i], true);
   }
 }
 

@@ -47,16 +47,43 @@ inline LightSample sample_li(const DirectionalLight& light, Vec3 /*point*/, Vec2
   return s;
 }
 
-// What sampling a rect light needs of its shape, worked out once for many samples.
+// What sampling a rect light and meeting it need of its shape, worked out once for many samples
+// and rays.
 struct RectFrame {
   Vec3 normal_area{0.0f};  // edge1 x edge2: the normal, as long as the area
   float area = 0.0f;
   Vec3 unit_normal{0.0f};
+  // The edges' dot products and their determinant: a point's coordinates along the edges, which
+  // need not be perpendicular, are solved in the edges' basis (intersect_rect).
+  float e11 = 0.0f, e12 = 0.0f, e22 = 0.0f, det = 0.0f;
   explicit RectFrame(const RectLight& light)
       : normal_area(glm::cross(light.edge1, light.edge2)),
         area(glm::length(normal_area)),
-        unit_normal(glm::normalize(normal_area)) {}
+        unit_normal(glm::normalize(normal_area)),
+        e11(glm::dot(light.edge1, light.edge1)),
+        e12(glm::dot(light.edge1, light.edge2)),
+        e22(glm::dot(light.edge2, light.edge2)),
+        det(e11 * e22 - e12 * e12) {}
 };
+
+// Where the ray meets the rectangle's face that shows light, in (ray.tmin, ray.tmax), and the
+// point's coordinates along the edges (each in [0, 1]); false if it misses it or meets the dark
+// back of a one-sided light.
+inline bool intersect_rect(const RectLight& light, const RectFrame& frame, const Ray& ray, float& t,
+                           Vec2* along = nullptr) {
+  const float facing = glm::dot(ray.direction, frame.normal_area);
+  if (facing == 0.0f || (!light.two_sided && facing > 0.0f)) return false;
+  t = glm::dot(light.corner - ray.origin, frame.normal_area) / facing;
+  if (!(t > ray.tmin && t < ray.tmax)) return false;
+  const Vec3 q = ray.at(t) - light.corner;
+  const float q1 = glm::dot(q, light.edge1), q2 = glm::dot(q, light.edge2);
+  const float s = (q1 * frame.e22 - q2 * frame.e12) / frame.det, u = (q2 * frame.e11 - q1 * frame.e12) / frame.det;
+  if (along) *along = Vec2(s, u);
+  return s >= 0.0f && s <= 1.0f && u >= 0.0f && u <= 1.0f;
+}
+inline bool intersect_rect(const RectLight& light, const Ray& ray, float& t, Vec2* along = nullptr) {
+  return intersect_rect(light, RectFrame(light), ray, t, along);
+}
 
 // A point of the rectangle drawn uniformly by area: density d^2 / (cos_light area) per solid
 // angle, carrying the face's radiance towards the point (RectLight::lighting_radiance). (The cosine is worked out

@@ -42,25 +42,6 @@ struct RectLight {
   Vec3 lighting_radiance(float distance, float area) const {
     return color * (kPi * attenuation(distance) * distance * distance / area);
   }
-
-  // Where the ray meets the rectangle's face that shows light, in (ray.tmin, ray.tmax), and the
-  // point's coordinates along the edges (each in [0, 1]); false if it misses it or meets the dark
-  // back of a one-sided light.
-  bool intersect(const Ray& ray, float& t, Vec2* along = nullptr) const {
-    const Vec3 n = glm::cross(edge1, edge2);
-    const float facing = glm::dot(ray.direction, n);
-    if (facing == 0.0f || (!two_sided && facing > 0.0f)) return false;
-    t = glm::dot(corner - ray.origin, n) / facing;
-    if (!(t > ray.tmin && t < ray.tmax)) return false;
-    const Vec3 q = ray.at(t) - corner;
-    // Coordinates along the edges, which need not be perpendicular: solve in the edges' basis.
-    const float e11 = glm::dot(edge1, edge1), e12 = glm::dot(edge1, edge2), e22 = glm::dot(edge2, edge2);
-    const float q1 = glm::dot(q, edge1), q2 = glm::dot(q, edge2);
-    const float det = e11 * e22 - e12 * e12;
-    const float s = (q1 * e22 - q2 * e12) / det, u = (q2 * e11 - q1 * e12) / det;
-    if (along) *along = Vec2(s, u);
-    return s >= 0.0f && s <= 1.0f && u >= 0.0f && u <= 1.0f;
-  }
 };
 
 // The attenuation under which a rect light's colour is the radiance of its face in both

@@ -94,13 +94,13 @@ TEST_CASE("rect light: emits towards edge1 x edge2, Whitted lights like a point 
   ray.origin = Vec3(0.6f, 0.0f, 0.5f);
   ray.direction = Vec3(0, 1, 0);
   float t = 0.0f;
-  CHECK(skew.intersect(ray, t));
+  CHECK(intersect_rect(skew, ray, t));
   CHECK(t == Approx(4.0f));
   ray.origin = Vec3(-0.3f, 0.0f, 0.9f);  // left of the slanted edge
-  CHECK_FALSE(skew.intersect(ray, t));
+  CHECK_FALSE(intersect_rect(skew, ray, t));
   ray.origin = Vec3(0.6f, 8.0f, 0.5f);  // from above: the dark back
   ray.direction = Vec3(0, -1, 0);
-  CHECK_FALSE(skew.intersect(ray, t));
+  CHECK_FALSE(intersect_rect(skew, ray, t));
 }
 
 TEST_CASE("area light samples: each stratum of the grid gets exactly one", "[lights][sampling]") {

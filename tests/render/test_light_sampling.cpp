@@ -40,7 +40,7 @@ std::vector<float> pdfs_along(const Scene& scene, size_t l, Vec3 point, Vec3 dir
   if (l < n) {
     const RectLight* rect = std::get_if<RectLight>(&scene.lights[l]);
     float t = 0.0f;
-    if (rect && rect->intersect(Ray(point, direction), t)) add(pdf_li(*rect, direction, t), t);
+    if (rect && intersect_rect(*rect, Ray(point, direction), t)) add(pdf_li(*rect, direction, t), t);
     return out;
   }
   if (l == n + 1) {
