@@ -128,10 +128,18 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       if (known->lit >> l & 1u) light_sum += lit(known->direction[l], known->radiance[l], Vec3(1.0f));
     } else if (!rect) {  // a point, spot or directional light: one sample, one shadow ray
       const LightSample ls = sample_li(light, s.position, Vec2(0.5f));
+      // Without kd (glass, a mirror), Phong's factor first: away from the narrow highlight it is 0,
+      // the light adds exactly nothing, and no shadow ray is traced to find that out. (With kd it
+      // is never 0 where the light is in front, and a shadowed point's power is not worked out.)
+      const bool specular_only = s.diffuse == Vec3(0.0f);
+      const Vec3 reflectance = specular_only
+                                   ? phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo)
+                                   : Vec3(1.0f);
       Ray shadow;
-      if (shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) {
+      if (reflectance != Vec3(0.0f) && shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) {
         const Vec3 visible = shadow_transmittance(scene, shadow);
-        if (max_component(visible) > 0.0f) light_sum += lit(ls.direction, ls.radiance, visible);
+        if (max_component(visible) > 0.0f)
+          light_sum += specular_only ? visible * ls.radiance * reflectance : lit(ls.direction, ls.radiance, visible);
       }
     } else {
       // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
@@ -184,13 +192,18 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         const auto reflectance_of = [&](unsigned lanes) {
           phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, lanes, reflectance);
         };
+        // Without kd, every sample's factor first, as for a point light above: one of 0 gets no ray.
+        const bool specular_only = s.diffuse == Vec3(0.0f);
+        if (specular_only) reflectance_of((1u << batch) - 1u);
         Vec3 radiance[kPacketSize];
         Ray shadows[kPacketSize];
         int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
         int rays = 0;
         for (int j = 0; j < batch; ++j) {
           radiance[j] = rect->color * drawn.scale[j];
-          ray_of[j] = shadow_ray(drawn.direction(j), drawn.distance[j], radiance[j], shadows[rays]) ? rays++ : -1;
+          const bool reflects = !specular_only || reflectance[j] != Vec3(0.0f);
+          ray_of[j] =
+              reflects && shadow_ray(drawn.direction(j), drawn.distance[j], radiance[j], shadows[rays]) ? rays++ : -1;
         }
         unsigned reaching = 0;  // the samples that reach the light
         Vec3 visible[kPacketSize];
@@ -198,7 +211,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           const unsigned blocked = scene.occluded_packet(shadows, rays);
           for (int j = 0; j < batch; ++j)
             if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) reaching |= 1u << j;
-          reflectance_of(reaching);
+          if (!specular_only) reflectance_of(reaching);
           for (int j = 0; j < batch; ++j)
             if (reaching >> j & 1u) light_sum += radiance[j] * reflectance[j];
           continue;
@@ -208,7 +221,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           visible[j] = shadow_transmittance(scene, shadows[ray_of[j]], reach);
           if (max_component(visible[j]) > 0.0f) reaching |= 1u << j;
         }
-        reflectance_of(reaching);
+        if (!specular_only) reflectance_of(reaching);
         for (int j = 0; j < batch; ++j)
           if (reaching >> j & 1u) light_sum += visible[j] * radiance[j] * reflectance[j];
       }
