@@ -158,9 +158,10 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // walked one by one for their transmittance (a scene with glass): the query costs about
       // what the packets' walk of a point's 16 rays saved, soft_shadows.json 1.13x (measured in
       // docs/benchmark.md, "Round two, a ninth session").
+      // Not asked at a point without kd, which traces few rays, if any (below).
       BvhLeafSet among;
       const BvhLeafSet* reach = nullptr;
-      if (!scene.all_opaque && count >= kMinShadowVolume) {
+      if (!scene.all_opaque && count >= kMinShadowVolume && s.diffuse != Vec3(0.0f)) {
         if (!rays_from) rays_from.emplace(s);
         if (rays_from->leaves_towards(*rect, scene.bvh, among)) reach = &among;
       }
