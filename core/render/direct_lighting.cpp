@@ -256,6 +256,11 @@ void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, c
             if (!has[i]) continue;
             out[i].known |= bit;  // a point without a ray is known too: the light does not reach it
             const LightSample ls = sample_li(typed, s[i].position, Vec2(0.5f));
+            // As direct_lighting: no ray where a point without kd reflects none of the light.
+            const EvaluatedSurface& p = s[i];
+            if (p.diffuse == Vec3(0.0f) &&
+                phong_reflectance(p.diffuse, p.specular, p.shininess, p.n, ls.direction, p.wo) == Vec3(0.0f))
+              continue;
             if (!from[i]->make(ls.direction, ls.distance, ls.radiance, rays[made])) continue;
             out[i].direction[l] = ls.direction;
             out[i].radiance[l] = ls.radiance;
