@@ -132,9 +132,8 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // the light adds exactly nothing, and no shadow ray is traced to find that out. (With kd it
       // is never 0 where the light is in front, and a shadowed point's power is not worked out.)
       const bool specular_only = s.diffuse == Vec3(0.0f);
-      const Vec3 reflectance = specular_only
-                                   ? phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo)
-                                   : Vec3(1.0f);
+      const Vec3 reflectance =
+          specular_only ? phong_reflectance(s.diffuse, s.specular, s.shininess, s.n, ls.direction, s.wo) : Vec3(1.0f);
       Ray shadow;
       if (reflectance != Vec3(0.0f) && shadow_ray(ls.direction, ls.distance, ls.radiance, shadow)) {
         const Vec3 visible = shadow_transmittance(scene, shadow);
