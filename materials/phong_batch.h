@@ -19,7 +19,7 @@ struct PhongBatch {
 
 // phong_reflectance(kd, ks, shininess, n, l_j, v) for the unit directions l_j = (dx[j], dy[j],
 // dz[j]), for each lane j whose bit is set in `lanes` (the others are left undefined: their
-// highlights' powers, libm calls one lane at a time, are not worked out).
+// highlights' powers are not worked out).
 void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy, const float* dz,
                  unsigned lanes, PhongBatch& out);
 
