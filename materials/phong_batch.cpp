@@ -1,6 +1,8 @@
 #include "materials/phong_batch.h"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "core/accel/simd.h"
 #include "core/avx2_clones.h"
@@ -25,37 +27,31 @@ void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float*
   const Float8 r_dot_v = rx * v.x + ry * v.y + rz * v.z;
   // The powers where phong_reflectance asks for one, as lobe_power works them out: by squaring
   // on all lanes at once for a whole exponent, std::pow lane by lane otherwise.
-  alignas(32) float cosines[kPacketSize], lit[kPacketSize];
-  std::memcpy(cosines, &r_dot_v, sizeof r_dot_v);
-  std::memcpy(lit, &n_dot_l, sizeof n_dot_l);
-  alignas(32) float power[kPacketSize] = {};
-  alignas(32) int32_t has_power[kPacketSize] = {};
-  const bool whole = is_whole_exponent(shininess);
-  alignas(32) double base[kPacketSize];  // 1 in a lane without a power: no denormal to square
-  unsigned squared = 0;                  // the lanes whose power comes from the squarings
-  for (int j = 0; j < kPacketSize; ++j) {
-    base[j] = 1.0;
-    if (!(lanes >> j & 1u) || !(lit[j] > 0.0f) || !(cosines[j] > 0.0f)) continue;
-    has_power[j] = -1;
-    if (lobe_power_vanishes(cosines[j], shininess)) continue;
-    if (whole) {
-      base[j] = cosines[j];
-      squared |= 1u << j;
-    } else {
-      power[j] = std::pow(cosines[j], shininess);
-    }
-  }
-  if (squared) {
-    Double4 half[2];
-    std::memcpy(half, base, sizeof half);
-    for (Double4& h : half) h = whole_power(h, static_cast<uint32_t>(shininess));
-    std::memcpy(base, half, sizeof half);
+  const Mask8 lane_bits = {1, 2, 4, 8, 16, 32, 64, 128};
+  const Mask8 with_power = ((static_cast<int32_t>(lanes) & lane_bits) != 0) & (n_dot_l > 0.0f) & (r_dot_v > 0.0f);
+  // lobe_power_vanishes, lane by lane: the same operations on the same floats.
+  const Mask8 bits = reinterpret_cast<Mask8>(r_dot_v);
+  const Float8 e = __builtin_convertvector((bits >> 23) - 127, Float8);
+  const Float8 m = __builtin_convertvector(bits & 0x7fffff, Float8) * 0x1p-23f;
+  const Mask8 vanishes =
+      (r_dot_v >= std::numeric_limits<float>::min()) & (splat8(shininess) * (e + 1.4427f * m) < -151.0f);
+  const Mask8 raised = with_power & ~vanishes;
+  Float8 p = splat8(0.0f);
+  if (is_whole_exponent(shininess)) {
+    // 1 in a lane without a power: no denormal to square.
+    const Float8 c = raised ? r_dot_v : splat8(1.0f);
+    const auto exponent = static_cast<uint32_t>(shininess);
+    const Double4 lo =
+        whole_power(__builtin_convertvector(__builtin_shufflevector(c, c, 0, 1, 2, 3), Double4), exponent);
+    const Double4 hi =
+        whole_power(__builtin_convertvector(__builtin_shufflevector(c, c, 4, 5, 6, 7), Double4), exponent);
+    const Float4 lo_f = __builtin_convertvector(lo, Float4), hi_f = __builtin_convertvector(hi, Float4);
+    p = __builtin_shufflevector(lo_f, hi_f, 0, 1, 2, 3, 4, 5, 6, 7);
+  } else {
     for (int j = 0; j < kPacketSize; ++j)
-      if (squared >> j & 1u) power[j] = static_cast<float>(base[j]);
+      if (raised[j]) p[j] = std::pow(r_dot_v[j], shininess);
   }
-  const Float8 p = load8(power);
-  Mask8 with_power;
-  std::memcpy(&with_power, has_power, sizeof with_power);
+  p = raised ? p : splat8(0.0f);
   const Mask8 front = n_dot_l > 0.0f;
   const Float8 zero = splat8(0.0f);
   const auto channel = [&](float d, float s, float* to) {
