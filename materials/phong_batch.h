@@ -23,4 +23,8 @@ struct PhongBatch {
 void phong_batch(Vec3 kd, Vec3 ks, float shininess, Vec3 n, Vec3 v, const float* dx, const float* dy, const float* dz,
                  unsigned lanes, PhongBatch& out);
 
+// sum += (color x scale[j]) x batch[j], lane after lane for the lanes set in `lanes`: the floats
+// of Vec3 arithmetic one sample at a time, the products worked out in vector registers.
+void add_lit(const PhongBatch& batch, Vec3 color, const float* scale, unsigned lanes, Vec3& sum);
+
 }  // namespace rt

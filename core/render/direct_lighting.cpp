@@ -212,8 +212,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           for (int j = 0; j < batch; ++j)
             if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) reaching |= 1u << j;
           if (!specular_only) reflectance_of(reaching);
-          for (int j = 0; j < batch; ++j)
-            if (reaching >> j & 1u) light_sum += radiance[j] * reflectance[j];
+          add_lit(reflectance, rect->color, drawn.scale, reaching, light_sum);
           continue;
         }
         for (int j = 0; j < batch; ++j) {

@@ -95,3 +95,28 @@ TEST_CASE("phong_batch: phong_reflectance's floats, lane by lane", "[materials]"
     }
   }
 }
+
+TEST_CASE("add_lit: Vec3 arithmetic's sum, sample after sample", "[materials]") {
+  uint64_t state = 11;
+  for (int round = 0; round < 2000; ++round) {
+    PhongBatch batch;
+    alignas(32) float scale[kPacketSize];
+    for (int j = 0; j < kPacketSize; ++j) {
+      batch.r[j] = unit(state);
+      batch.g[j] = unit(state);
+      batch.b[j] = unit(state);
+      scale[j] = 10.0f * unit(state);
+    }
+    const Vec3 color(unit(state), unit(state), unit(state));
+    const unsigned lanes = static_cast<unsigned>(mix64(++state)) & 0xffu;
+    const Vec3 start(unit(state), unit(state), unit(state));
+    Vec3 one_by_one = start, batched = start;
+    for (int j = 0; j < kPacketSize; ++j)
+      if (lanes >> j & 1u) one_by_one += color * scale[j] * batch[j];
+    add_lit(batch, color, scale, lanes, batched);
+    INFO("round " << round);
+    CHECK(same_bits(batched.x, one_by_one.x));
+    CHECK(same_bits(batched.y, one_by_one.y));
+    CHECK(same_bits(batched.z, one_by_one.z));
+  }
+}
