@@ -8,6 +8,7 @@
 // SSE kernels loop over single rays: GCC lowers 8-lane vectors to SSE through memory).
 #pragma once
 
+#include <limits>
 #include <new>
 
 #include "core/accel/bvh_traversal.h"
@@ -25,24 +26,42 @@ inline constexpr int kMinPacket = 4;
 
 // A packet's rays as rows of lanes, for slab tests of one child box against every ray at once.
 // Spare lanes (count < 8) repeat ray 0; callers keep them masked off.
+// A packet's rays, spare lanes (count < 8) repeating ray 0. lanes(field) gathers one number of
+// each ray into a vector's lanes in registers: the rays were just written a number at a time, and
+// stored to an array and loaded as a vector they waited for each store (no store forwards to a
+// wider load).
+struct PacketRays {
+  const Ray* ray[kPacketSize];
+
+  PacketRays(const Ray* rays, int count) {
+    for (int i = 0; i < kPacketSize; ++i) ray[i] = &rays[i < count ? i : 0];
+  }
+  template <class Field>
+  RT_SIMD_INLINE Float8 lanes(Field field) const {
+    return Float8{field(*ray[0]), field(*ray[1]), field(*ray[2]), field(*ray[3]),
+                  field(*ray[4]), field(*ray[5]), field(*ray[6]), field(*ray[7])};
+  }
+};
+
+// The reciprocals are one vector division an axis (each lane's the correctly rounded 1/d, as a
+// single ray's): eight rays' 24 scalar divisions were a sixth of a shadow packet's walk.
 struct PacketSlabs {
   Float8 origin[3], inv[3];
   Mask8 positive[3];
+  unsigned finite;  // bit i: ray i (i < count) has a finite origin and direction
 
   PacketSlabs(const Ray* rays, int count) {
-    alignas(32) float lane[6][kPacketSize];  // origin xyz, 1/direction xyz
-    for (int i = 0; i < kPacketSize; ++i) {
-      const Ray& r = rays[i < count ? i : 0];
-      for (int a = 0; a < 3; ++a) {
-        lane[a][i] = r.origin[a];
-        lane[3 + a][i] = 1.0f / r.direction[a];
-      }
-    }
+    const PacketRays r(rays, count);
+    const Float8 infinity = splat8(std::numeric_limits<float>::infinity());
+    Mask8 is_finite = Mask8{} - 1;
     for (int a = 0; a < 3; ++a) {
-      origin[a] = load8(lane[a]);
-      inv[a] = load8(lane[3 + a]);
+      origin[a] = r.lanes([a](const Ray& ray) { return ray.origin[a]; });
+      const Float8 direction = r.lanes([a](const Ray& ray) { return ray.direction[a]; });
+      inv[a] = splat8(1.0f) / direction;
       positive[a] = inv[a] >= splat8(0.0f);
+      is_finite &= (abs8(origin[a]) < infinity) & (abs8(direction) < infinity);  // NaN fails too
     }
+    finite = movemask8(is_finite) & ((1u << count) - 1u);
   }
 
   // Each lane's entry distance into child c's box within [tmin, tmax]; bit i of `enter` set when
@@ -82,11 +101,10 @@ class LaneQuadRays {
   unsigned ready_ = 0;
 };
 
-// The lanes of rays a walk may take (is_traceable); the others miss, as they do alone.
-RT_SIMD_INLINE unsigned traceable_lanes(const Ray* rays, int count) {
-  unsigned lanes = 0;
-  for (int i = 0; i < count; ++i) lanes |= static_cast<unsigned>(is_traceable(rays[i])) << i;
-  return lanes;
+// The lanes of rays a walk may take (is_traceable, lane by lane); the others miss, as they do
+// alone.
+RT_SIMD_INLINE unsigned traceable_lanes(const PacketSlabs& slabs, Float8 tmin, Float8 tmax) {
+  return slabs.finite & movemask8(tmin <= tmax);
 }
 
 // Calls blocked(leaf, i, quad_ray) for each leaf ray i, still unanswered, reaches; returns the
@@ -95,12 +113,9 @@ template <class LeafTest>
 unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTest&& blocked) {
   if (bvh.primitive_count() == 0) return 0;
   const PacketSlabs slabs(rays, count);
-  alignas(32) float interval[2][kPacketSize];
-  for (int i = 0; i < kPacketSize; ++i) {
-    interval[0][i] = rays[i < count ? i : 0].tmin;
-    interval[1][i] = rays[i < count ? i : 0].tmax;
-  }
-  const Float8 tmin = load8(interval[0]), tmax = load8(interval[1]);
+  const PacketRays packet(rays, count);
+  const Float8 tmin = packet.lanes([](const Ray& r) { return r.tmin; });
+  const Float8 tmax = packet.lanes([](const Ray& r) { return r.tmax; });
   LaneQuadRays quad_rays(rays);
 
   struct Entry {
@@ -109,7 +124,7 @@ unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTe
   };
   Entry stack[kBvhWidth * Bvh::kMaxDepth + 4];
   int top = 0;
-  const unsigned all = traceable_lanes(rays, count);
+  const unsigned all = traceable_lanes(slabs, tmin, tmax);
   if (all == 0) return 0;
   unsigned done = 0;
   stack[top++] = Entry{bvh.root(), all};
@@ -147,13 +162,10 @@ template <class LeafNearest>
 void intersect_packet_walk(const Bvh& bvh, Ray* rays, int count, LeafNearest&& nearest) {
   if (bvh.primitive_count() == 0) return;
   const PacketSlabs slabs(rays, count);
-  alignas(32) float interval[2][kPacketSize];
-  for (int i = 0; i < kPacketSize; ++i) {
-    interval[0][i] = rays[i < count ? i : 0].tmin;
-    interval[1][i] = rays[i < count ? i : 0].tmax;
-  }
-  const Float8 tmin = load8(interval[0]);
-  Float8 tmax = load8(interval[1]);
+  const PacketRays packet(rays, count);
+  const auto ray_tmax = [](const Ray& r) { return r.tmax; };
+  const Float8 tmin = packet.lanes([](const Ray& r) { return r.tmin; });
+  Float8 tmax = packet.lanes(ray_tmax);
   LaneQuadRays quad_rays(rays);
 
   struct Entry {
@@ -163,7 +175,7 @@ void intersect_packet_walk(const Bvh& bvh, Ray* rays, int count, LeafNearest&& n
   };
   Entry stack[kBvhWidth * Bvh::kMaxDepth + 4];
   int top = 0;
-  const unsigned all = traceable_lanes(rays, count);
+  const unsigned all = traceable_lanes(slabs, tmin, tmax);
   if (all == 0) return;
   stack[top++] = Entry{tmin, bvh.root(), all};
   const BvhNode* nodes = bvh.nodes().data();
@@ -191,11 +203,7 @@ void intersect_packet_walk(const Bvh& bvh, Ray* rays, int count, LeafNearest&& n
       continue;
     }
     nearest(ref, active, quad_rays);
-    for (unsigned m = active; m; m &= m - 1) {
-      const int i = __builtin_ctz(m);
-      interval[1][i] = rays[i].tmax;
-    }
-    tmax = load8(interval[1]);
+    tmax = packet.lanes(ray_tmax);
   }
 }
 
