@@ -57,6 +57,11 @@ template <int K>
     std::memcpy(xf + 8 * v, &xv, sizeof xv);
     std::memcpy(yf + 8 * v, &yv, sizeof yv);
   }
+  if (count == 8 * K) {  // whole vectors: a caller loading them as vectors waits on no narrow store
+    std::memcpy(x, xf, sizeof xf);
+    std::memcpy(y, yf, sizeof yf);
+    return;
+  }
   for (int lane = 0; lane < count; ++lane) {
     x[lane] = xf[lane];
     y[lane] = yf[lane];

@@ -6,6 +6,7 @@
 #include "core/lights/rect_light_batch.h"
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
+#include "core/stratified_grid_batch.h"
 #include "materials/phong.h"
 #include "materials/phong_batch.h"
 
@@ -167,7 +168,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
       // The numbers of samples [base - k, base - k + kMaxSobolPairs), k = base % kMaxSobolPairs.
       static_assert(kMaxSobolPairs % kPacketSize == 0);
-      float jx[kMaxSobolPairs], jy[kMaxSobolPairs];
+      float jx[kMaxSobolPairs] = {}, jy[kMaxSobolPairs] = {};  // all read, eight at a time
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};
@@ -178,11 +179,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           if (k == 0)
             ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)),
                                    std::min(kMaxSobolPairs, count - base), jx, jy);
-          for (int j = 0; j < batch; ++j) {
-            const Vec2 p = grid.point(base + j, Vec2(jx[k + j], jy[k + j]));
-            u[0][j] = p.x;
-            u[1][j] = p.y;
-          }
+          stratified_points_batch(grid, base, jx + k, jy + k, u);
         }
         RectLightBatch drawn;
         rect_light_batch(*rect, frame, s.position, u, drawn);

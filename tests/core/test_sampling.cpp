@@ -10,6 +10,7 @@
 #include "core/direction_sampling.h"
 #include "core/owen_sobol.h"
 #include "core/sampling.h"
+#include "core/stratified_grid_batch.h"
 
 using namespace rt;
 
@@ -140,6 +141,36 @@ TEST_CASE("sampling: get2_batch gives get2's numbers, 1 to 16 at a time, both se
             CHECK(x[count] == -1.0f);
             CHECK(y[count] == -1.0f);
           }
+}
+
+TEST_CASE("sampling: stratified_points_batch gives StratifiedGrid::point's floats, eight at a time", "[sampling]") {
+  // Every grid of 1 to 1024 samples (the shadow_samples a scene may ask), each batch of eight
+  // from sample 0 past the grid's end, and near 2^22 where the quotient's float is tightest.
+  uint64_t state = 5;
+  const auto unit = [&state] { return static_cast<float>(mix64(++state) >> 40) * 0x1p-24f; };
+  long differ = 0, tested = 0;
+  for (int n = 1; n <= 1024; ++n) {
+    const StratifiedGrid grid(n);
+    std::vector<int> firsts;
+    for (int first = 0; first < n; first += kPacketSize) firsts.push_back(first);
+    firsts.push_back((1 << 22) - kPacketSize);
+    for (const int first : firsts) {
+      alignas(32) float jx[kPacketSize], jy[kPacketSize];
+      for (int j = 0; j < kPacketSize; ++j) {
+        jx[j] = j == 0 ? 0.0f : j == 1 ? 0x1.fffffep-1f : unit();  // the ends of [0, 1) too
+        jy[j] = j == 0 ? 0x1.fffffep-1f : j == 1 ? 0.0f : unit();
+      }
+      float u[2][kPacketSize];
+      stratified_points_batch(grid, first, jx, jy, u);
+      for (int j = 0; j < kPacketSize; ++j) {
+        const Vec2 p = grid.point(first + j, Vec2(jx[j], jy[j]));
+        ++tested;
+        differ += p.x != u[0][j] || p.y != u[1][j];
+      }
+    }
+  }
+  CHECK(tested > 70000);
+  CHECK(differ == 0);
 }
 
 TEST_CASE("Owen-Sobol: eight lanes of reverse_bits and upward_hash are the scalar ones", "[sampling]") {
