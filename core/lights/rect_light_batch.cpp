@@ -32,4 +32,20 @@ void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point
   std::memcpy(out.scale, &scale, sizeof scale);
 }
 
+RT_AVX2_CLONES
+SampleSides sample_sides(const RectLightBatch& drawn, Vec3 color, Vec3 n, Vec3 ng, bool lifted) {
+  const Float8 dx = load8(drawn.dx), dy = load8(drawn.dy), dz = load8(drawn.dz), scale = load8(drawn.scale);
+  // glm::dot's order: x, then y, then z.
+  const Float8 n_dot_l = n.x * dx + n.y * dy + n.z * dz;
+  const Float8 l_dot_ng = dx * ng.x + dy * ng.y + dz * ng.z;
+  // max_component(color * scale), std::max's way (a < b ? b : a), also for a NaN.
+  const Float8 r = color.x * scale, g = color.y * scale, b = color.z * scale;
+  const Float8 gb = g < b ? b : g;
+  const Float8 brightest = r < gb ? gb : r;
+  // make's "x <= 0: no ray", negated: a NaN passes, as it passes there.
+  Mask8 light = ~(n_dot_l <= 0.0f) & ~(brightest <= 0.0f);
+  if (!lifted) light &= ~(l_dot_ng <= 0.0f);
+  return SampleSides{movemask8(light), movemask8(l_dot_ng < 0.0f)};
+}
+
 }  // namespace rt

@@ -32,4 +32,13 @@ struct RectLightBatch {
 void rect_light_batch(const RectLight& light, const RectFrame& frame, Vec3 point, const float (&u)[2][kPacketSize],
                       RectLightBatch& out);
 
+// Which samples of a batch can light a point, ShadowRays::make's tests lane by lane on the same
+// floats (core/render/direct_lighting.cpp): in `light`, those in front of the shading normal `n`
+// and, unless the point is lifted off a smooth mesh, of the geometric normal `ng`, whose radiance
+// color x scale has a channel above 0; in `behind`, those whose direction leaves ng's back.
+struct SampleSides {
+  unsigned light = 0, behind = 0;
+};
+SampleSides sample_sides(const RectLightBatch& drawn, Vec3 color, Vec3 n, Vec3 ng, bool lifted);
+
 }  // namespace rt
