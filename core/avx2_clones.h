@@ -8,6 +8,11 @@
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 #define RT_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+// A third clone for x86-64-v4 (AVX-512 F, BW, CD, DQ, VL), for integer work on 64-bit lanes:
+// DQ and VL multiply them in one instruction, where AVX2 builds each product from three 32-bit
+// ones (core/owen_sobol_batch.cpp).
+#define RT_AVX2_V4_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define RT_AVX2_CLONES
+#define RT_AVX2_V4_CLONES
 #endif

@@ -70,9 +70,11 @@ template <int K>
 
 }  // namespace
 
-// No AVX-512 clone: GCC's code for it (512-bit multiplies, as one 16-lane vector or two 8-lane
-// ones) made csg.json 1.09x the time of AVX2's.
-RT_AVX2_CLONES
+// With x86-64-v4's clone the seeds' 64-bit multiplies are one instruction each (vpmullq on 4-lane
+// registers): soft_shadows.json 0.97x the time of AVX2's on an AMD EPYC, csg.json the same
+// (docs/benchmark.md, "Round two, an eighteenth session"). An AVX-512 clone without DQ and VL,
+// its multiplies on 512-bit registers, had made csg.json 1.09x.
+RT_AVX2_V4_CLONES
 void owen_sobol_pairs(uint64_t point_key, const uint64_t* dimension, int count, uint32_t reversed_sample, float* x,
                       float* y) {
   if (count <= 8) pairs<1>(point_key, dimension, count, reversed_sample, x, y);

@@ -1,7 +1,7 @@
 // Up to sixteen Owen-scrambled Sobol pairs at once (SampleStream::get2_batch): the scalar
-// functions of core/owen_sobol.h lane by lane, the same bits. Compiled for x86-64's baseline and
-// for AVX2 (GCC's target_clones: the loader picks the one this CPU runs, once); integer work only,
-// so either gives the same numbers. In the baseline's 4-lane registers a soft-shadow render spent a
+// functions of core/owen_sobol.h lane by lane, the same bits. Compiled for x86-64's baseline, for
+// AVX2 and for x86-64-v4 (GCC's target_clones: the loader picks the one this CPU runs, once);
+// integer work only, so each gives the same numbers. In the baseline's 4-lane registers a soft-shadow render spent a
 // fifth of its time here; sixteen lanes at once overlap two chains of dependent multiplies
 // (docs/benchmark.md, "Round two, a sixth session").
 #pragma once
