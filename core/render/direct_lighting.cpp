@@ -4,9 +4,9 @@
 #include <optional>
 
 #include "core/lights/rect_light_batch.h"
+#include "core/lights/stratified_grid_batch.h"
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
-#include "core/stratified_grid_batch.h"
 #include "materials/phong.h"
 #include "materials/phong_batch.h"
 

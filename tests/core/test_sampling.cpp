@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/direction_sampling.h"
+#include "core/lights/stratified_grid_batch.h"
 #include "core/owen_sobol.h"
 #include "core/sampling.h"
-#include "core/stratified_grid_batch.h"
 
 using namespace rt;
 

@@ -1,4 +1,4 @@
-#include "core/stratified_grid_batch.h"
+#include "core/lights/stratified_grid_batch.h"
 
 #include <cstring>
 
