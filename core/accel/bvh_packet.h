@@ -24,8 +24,6 @@ namespace RTCLI_ISA_NS {
 // than they saved).
 inline constexpr int kMinPacket = 4;
 
-// A packet's rays as rows of lanes, for slab tests of one child box against every ray at once.
-// Spare lanes (count < 8) repeat ray 0; callers keep them masked off.
 // A packet's rays, spare lanes (count < 8) repeating ray 0. lanes(field) gathers one number of
 // each ray into a vector's lanes in registers: the rays were just written a number at a time, and
 // stored to an array and loaded as a vector they waited for each store (no store forwards to a
@@ -43,8 +41,10 @@ struct PacketRays {
   }
 };
 
-// The reciprocals are one vector division an axis (each lane's the correctly rounded 1/d, as a
-// single ray's): eight rays' 24 scalar divisions were a sixth of a shadow packet's walk.
+// A packet's rays as rows of lanes, for slab tests of one child box against every ray at once.
+// Spare lanes (count < 8) repeat ray 0; callers keep them masked off. The reciprocals are one
+// vector division an axis (each lane's the correctly rounded 1/d, as a single ray's): eight rays'
+// 24 scalar divisions were a sixth of a shadow packet's walk.
 struct PacketSlabs {
   Float8 origin[3], inv[3];
   Mask8 positive[3];
