@@ -13,8 +13,11 @@
 #error "define RTCLI_ISA_NS, RTCLI_ISA and RTCLI_ISA_KERNEL before including bvh_kernels_impl.h"
 #endif
 
+#include <optional>
+
 #include "core/accel/bvh_packet.h"
 #include "core/accel/bvh_traversal.h"
+#include "core/accel/shape_lanes.h"
 
 namespace rt {
 namespace RTCLI_ISA_NS {
@@ -60,13 +63,9 @@ bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ra
 // as prim).
 bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit& hit);
 
-// The closest crossing in a leaf merged into hit, as above: the one leaf test of intersect() and
-// of the packets' walk.
-bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit) {
-  if (BvhRef::is_quad_leaf(leaf))
-    return nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
+// The closest crossing of slots [first, end) of a leaf that is not a quad leaf, merged into hit.
+bool nearest_in_slots(const Bvh& bvh, uint32_t first, uint32_t end, Ray& r, Hit& hit) {
   bool found = false;
-  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
     const uint32_t id = s.id;
@@ -82,6 +81,15 @@ bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray
     if (got) found |= take_if_first(candidate, r, hit);
   }
   return found;
+}
+
+// The closest crossing in a leaf merged into hit, as above: the one leaf test of intersect() and
+// of the packets' walk.
+bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit) {
+  if (BvhRef::is_quad_leaf(leaf))
+    return nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
+  const uint32_t first = BvhRef::first(leaf);
+  return nearest_in_slots(bvh, first, first + BvhRef::count(leaf), r, hit);
 }
 
 }  // namespace
@@ -138,16 +146,8 @@ bool occluded(const Bvh& bvh, const Ray& ray);
 
 namespace {
 
-bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay& quad_ray) {
-  if (BvhRef::is_quad_leaf(leaf)) {
-    const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
-    for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
-      Float4 t, b1, b2;
-      if (intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2)) return true;
-    }
-    return false;
-  }
-  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+// Whether anything in slots [first, end) of a leaf that is not a quad leaf crosses the ray.
+bool occluded_in_slots(const Bvh& bvh, uint32_t first, uint32_t end, const Ray& r) {
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
     Hit hit;
@@ -179,6 +179,73 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
   return false;
 }
 
+bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay& quad_ray) {
+  if (BvhRef::is_quad_leaf(leaf)) {
+    const TriangleQuad* quads = bvh.quads().data() + BvhRef::first(leaf);
+    for (uint32_t q = 0; q < BvhRef::quad_count(leaf); ++q) {
+      Float4 t, b1, b2;
+      if (intersect_quad(quads[q], quad_ray, r.tmin, r.tmax, t, b1, b2)) return true;
+    }
+    return false;
+  }
+  const uint32_t first = BvhRef::first(leaf);
+  return occluded_in_slots(bvh, first, first + BvhRef::count(leaf), r);
+}
+
+#if defined(__AVX__)
+// Fewer lanes than this in a leaf take its slots ray by ray: the shapes' lane filter
+// (core/accel/shape_lanes.h) costs about two single-ray shape tests.
+inline constexpr int kMinShapeLanes = 2;
+
+// A packet's rays as lanes for the shapes' filter, gathered when a leaf first needs them.
+class LazyRayLanes {
+ public:
+  LazyRayLanes(const Ray* rays, int count) : packet_(rays, count) {}
+  const RayLanes& get() {
+    if (!lanes_) lanes_.emplace(packet_);
+    return *lanes_;
+  }
+  // The intervals again, after hits narrowed them.
+  void narrow() {
+    if (lanes_) lanes_->tmax = packet_.lanes([](const Ray& r) { return r.tmax; });
+  }
+
+ private:
+  PacketRays packet_;
+  std::optional<RayLanes> lanes_;
+};
+
+// A leaf's occlusion answers for the packet's rays in `lanes` (bit i: rays[i] is blocked), each
+// the single ray's (occluded_in_leaf). With enough lanes the slots are taken one at a time, an
+// analytic shape's lanes first all at once (core/accel/shape_lanes.h).
+unsigned blocked_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays, const Ray* rays,
+                                LazyRayLanes& ray_lanes) {
+  unsigned blocked = 0;
+  if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) < kMinShapeLanes) {
+    for (unsigned m = lanes; m; m &= m - 1) {
+      const int i = __builtin_ctz(m);
+      if (occluded_in_leaf(bvh, leaf, rays[i], quad_rays[i])) blocked |= 1u << i;
+    }
+    return blocked;
+  }
+  const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
+  for (uint32_t slot = first; slot < end && blocked != lanes; ++slot) {
+    const uint32_t id = bvh.slots()[slot].id;
+    unsigned open = lanes & ~blocked;
+    if (bvh.kind(id) == PrimitiveKind::kShape) {
+      unsigned unsure;
+      blocked |= shape_blocks(bvh.shape(id), ray_lanes.get(), open, unsure);
+      open = unsure;
+    }
+    for (unsigned m = open; m; m &= m - 1) {
+      const int i = __builtin_ctz(m);
+      if (occluded_in_slots(bvh, slot, slot + 1, rays[i])) blocked |= 1u << i;
+    }
+  }
+  return blocked;
+}
+#endif
+
 }  // namespace
 
 // Any hit, tuned: children in the order the node lists them, and the leaf test above. The same
@@ -195,10 +262,12 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 // after another.
 [[gnu::flatten]] unsigned occluded_packet(const Bvh& bvh, const Ray* rays, int count) {
 #if defined(__AVX__)
-  if (count > 1)
-    return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, int i, const QuadRay& q) {
-      return occluded_in_leaf(bvh, leaf, rays[i], q);
+  if (count > 1) {
+    LazyRayLanes ray_lanes(rays, count);
+    return occluded_packet_walk(bvh, rays, count, [&](uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays) {
+      return blocked_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, ray_lanes);
     });
+  }
 #endif
   unsigned blocked = 0;
   for (int i = 0; i < count; ++i)
@@ -213,9 +282,10 @@ namespace {
 #if defined(__AVX__)
 // A leaf's nearest crossings for the packet's rays in `lanes`, merged into their hits. A mesh
 // instance takes the rays on into its own BVH as a packet; everything else is the single-ray
-// test, ray by ray. Flattened itself: it calls intersect_packet, so it is not inlined there.
+// test, ray by ray, an analytic shape's lanes first filtered all at once. Flattened itself: it
+// calls intersect_packet, so it is not inlined there.
 [[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays,
-                                                 Ray* rays, Hit* hits) {
+                                                 Ray* rays, Hit* hits, LazyRayLanes& ray_lanes) {
   unsigned found = 0;
   if (BvhRef::is_quad_leaf(leaf) || __builtin_popcount(lanes) < kMinPacket) {
     for (unsigned m = lanes; m; m &= m - 1) {
@@ -228,10 +298,11 @@ namespace {
   for (uint32_t slot = first; slot < end; ++slot) {
     const uint32_t id = bvh.slots()[slot].id;
     if (bvh.kind(id) != PrimitiveKind::kInstance || bvh.instance(id).cutout) {
-      const uint32_t one = BvhRef::leaf(slot, 1);  // this slot alone, as a leaf of one
-      for (unsigned m = lanes; m; m &= m - 1) {
+      unsigned open = lanes;
+      if (bvh.kind(id) == PrimitiveKind::kShape) open = shape_lanes(bvh.shape(id), ray_lanes.get(), open);
+      for (unsigned m = open; m; m &= m - 1) {
         const int i = __builtin_ctz(m);
-        if (nearest_in_leaf(bvh, one, quad_rays[i], rays[i], hits[i])) found |= 1u << i;
+        if (nearest_in_slots(bvh, slot, slot + 1, rays[i], hits[i])) found |= 1u << i;
       }
       continue;
     }
@@ -266,8 +337,10 @@ namespace {
 #if defined(__AVX__)
   if (count >= kMinPacket) {
     for (int i = 0; i < count; ++i) hits[i] = Hit{};
+    LazyRayLanes ray_lanes(rays, count);
     intersect_packet_walk(bvh, rays, count, [&](uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays) {
-      found |= nearest_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, hits);
+      ray_lanes.narrow();
+      found |= nearest_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, hits, ray_lanes);
     });
     for (unsigned m = found; m; m &= m - 1) settle(rays[__builtin_ctz(m)], hits[__builtin_ctz(m)], true);
     return found;

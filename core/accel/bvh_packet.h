@@ -107,8 +107,9 @@ RT_SIMD_INLINE unsigned traceable_lanes(const PacketSlabs& slabs, Float8 tmin, F
   return slabs.finite & movemask8(tmin <= tmax);
 }
 
-// Calls blocked(leaf, i, quad_ray) for each leaf ray i, still unanswered, reaches; returns the
-// mask of rays found blocked. Any-hit: the order of the walk does not matter.
+// Calls blocked(leaf, lanes, quad_rays) for each leaf that the rays in `lanes`, still unanswered,
+// reach; it returns those it finds blocked, and the walk returns them all. Any-hit: the order of
+// the walk does not matter.
 template <class LeafTest>
 unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTest&& blocked) {
   if (bvh.primitive_count() == 0) return 0;
@@ -145,10 +146,7 @@ unsigned occluded_packet_walk(const Bvh& bvh, const Ray* rays, int count, LeafTe
       }
       continue;
     }
-    for (unsigned m = active; m; m &= m - 1) {
-      const int i = __builtin_ctz(m);
-      if (blocked(e.ref, i, quad_rays[i])) done |= 1u << i;
-    }
+    done |= blocked(e.ref, active, quad_rays);
     if (done == all) break;
   }
   return done;

@@ -1,0 +1,240 @@
+// A packet's eight rays against one analytic shape at once, in the packet walks' leaves
+// (core/accel/bvh_kernels_impl.h). The single-ray test (intersect_shape) first looks for a
+// crossing inside the ray's interval in object space; that look is done here for all lanes, with
+// the same float and double operations in the same order as Transform's (core/transform.h, glm's
+// column sums) and the shapes' own (core/shapes/sphere.cpp, plane.cpp, cube.cpp, cylinder.cpp,
+// quadratic.h), so that lane by lane it finds the same crossing at the same t. A lane where it
+// finds none needs no single-ray test; for a closest hit every other lane takes that test, and
+// for any-hit only those whose crossing lies within the origin's rounding. Every answer stays the
+// single ray's (the packet tests in tests/core/test_bvh_isa.cpp). A lane given a longer interval
+// than its ray's is only kept more often. Cones are not worked out here: their lanes all take the
+// single-ray test.
+#pragma once
+
+#include "core/accel/bvh_packet.h"
+#include "core/float_error.h"
+#include "core/shapes/analytic_shape.h"
+
+namespace rt {
+namespace RTCLI_ISA_NS {
+
+#if defined(__AVX__)
+
+typedef double Double4 __attribute__((vector_size(32)));
+typedef int64_t Mask4d __attribute__((vector_size(32)));
+
+// A packet's rays as lanes: origins, directions and intervals.
+struct RayLanes {
+  Float8 origin[3], direction[3], tmin, tmax;
+
+  RayLanes(const PacketRays& r) {
+    for (int a = 0; a < 3; ++a) {
+      origin[a] = r.lanes([a](const Ray& ray) { return ray.origin[a]; });
+      direction[a] = r.lanes([a](const Ray& ray) { return ray.direction[a]; });
+    }
+    tmin = r.lanes([](const Ray& ray) { return ray.tmin; });
+    tmax = r.lanes([](const Ray& ray) { return ray.tmax; });
+  }
+};
+
+// Lanes 4h to 4h + 3 of v, widened to double.
+RT_SIMD_INLINE Double4 wide(Float8 v, int h) {
+  const Float4 part = h == 0 ? __builtin_shufflevector(v, v, 0, 1, 2, 3) : __builtin_shufflevector(v, v, 4, 5, 6, 7);
+  return __builtin_convertvector(part, Double4);
+}
+RT_SIMD_INLINE Double4 splat4d(double x) { return Double4{x, x, x, x}; }
+RT_SIMD_INLINE unsigned movemask4d(Mask4d m) {
+  return static_cast<unsigned>(__builtin_ia32_movmskpd256(reinterpret_cast<Double4>(m)));
+}
+
+// The rays in the shape's object space: transformed_ray's origin (to_object * (p, 1), glm's
+// (m0 x + m1 y) + (m2 z + m3 1)) and direction (Mat3(to_object) * d, summed left to right).
+struct ObjectLanes {
+  Float8 o[3], d[3];
+
+  RT_SIMD_INLINE ObjectLanes(const Mat4& m, const RayLanes& r) {
+    for (int i = 0; i < 3; ++i) {
+      const Float8 m0 = splat8(m[0][i]), m1 = splat8(m[1][i]), m2 = splat8(m[2][i]), m3 = splat8(m[3][i]);
+      o[i] = (m0 * r.origin[0] + m1 * r.origin[1]) + (m2 * r.origin[2] + m3 * splat8(1.0f));
+      d[i] = (m0 * r.direction[0] + m1 * r.direction[1]) + m2 * r.direction[2];
+    }
+  }
+};
+
+// Where the single-ray test first finds a shape crossed: bit i of `lanes` set where it finds a
+// crossing inside lane i's interval, and t[i] the hit's t it then reports (hit.t, a float).
+struct LaneCrossings {
+  unsigned lanes = 0;
+  Float8 t{};
+};
+
+// Four lanes' crossings in double: bit j of the mask for lane j, their ts narrowed to float.
+struct HalfCrossings {
+  Mask4d found;
+  Double4 t;
+};
+
+RT_SIMD_INLINE LaneCrossings join(HalfCrossings lo, HalfCrossings hi) {
+  const Float4 t_lo = __builtin_convertvector(lo.t, Float4), t_hi = __builtin_convertvector(hi.t, Float4);
+  return {movemask4d(lo.found) | movemask4d(hi.found) << 4,
+          __builtin_shufflevector(t_lo, t_hi, 0, 1, 2, 3, 4, 5, 6, 7)};
+}
+
+// intersect_sphere's roots (sphere_roots, solve_quadratic) and the nearer of them inside the
+// interval (nearer_root).
+RT_SIMD_INLINE HalfCrossings sphere_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+  const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h), oz = wide(r.o[2], h);
+  const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h), dz = wide(r.d[2], h);
+  const Double4 a = dx * dx + dy * dy + dz * dz;
+  const Double4 b = splat4d(2.0) * (ox * dx + oy * dy + oz * dz);
+  const Double4 c = (ox * ox + oy * oy + oz * oz) - splat4d(1.0);
+  const Double4 disc = b * b - splat4d(4.0) * a * c;
+  const Double4 root = __builtin_ia32_sqrtpd256(disc);
+  const Double4 q = b < splat4d(0.0) ? splat4d(-0.5) * (b - root) : splat4d(-0.5) * (b + root);
+  const Mask4d linear = a == splat4d(0.0);
+  const Double4 line_t = -c / b;
+  Double4 t0 = q / a, t1 = c / q;
+  const Mask4d q_zero = q == splat4d(0.0);
+  t0 = q_zero ? splat4d(0.0) : t0;
+  t1 = q_zero ? splat4d(0.0) : t1;
+  const Mask4d swap = t0 > t1;
+  Double4 lo = swap ? t1 : t0, hi = swap ? t0 : t1;
+  lo = linear ? line_t : lo;
+  hi = linear ? line_t : hi;
+  const Mask4d solved = linear ? b != splat4d(0.0) : ~(disc < splat4d(0.0));
+  const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
+  const Mask4d lo_in = (lo > tmin) & (lo < tmax), hi_in = (hi > tmin) & (hi < tmax);
+  return {solved & (lo_in | hi_in), lo_in ? lo : hi};
+}
+
+// intersect_cube's slabs: entering at t_near, else leaving at t_far.
+RT_SIMD_INLINE HalfCrossings cube_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+  Double4 t_near = splat4d(-HUGE_VAL), t_far = splat4d(HUGE_VAL);
+  Mask4d outside = Mask4d{}, any_axis = Mask4d{};
+  for (int a = 0; a < 3; ++a) {
+    const Double4 o = wide(r.o[a], h), d = wide(r.d[a], h);
+    const Mask4d parallel = d == splat4d(0.0);
+    outside |= parallel & ((o < splat4d(-1.0)) | (o > splat4d(1.0)));
+    const Double4 t0 = (splat4d(-1.0) - o) / d, t1 = (splat4d(1.0) - o) / d;
+    const Mask4d swap = t0 > t1;
+    const Double4 lo = swap ? t1 : t0, hi = swap ? t0 : t1;
+    const Mask4d nearer = ~parallel & (lo > t_near), farther = ~parallel & (hi < t_far);
+    t_near = nearer ? lo : t_near;
+    t_far = farther ? hi : t_far;
+    any_axis |= nearer;
+  }
+  const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
+  const Mask4d near_in = (t_near > tmin) & (t_near < tmax), far_in = (t_far > tmin) & (t_far < tmax);
+  return {~outside & any_axis & ~(t_near > t_far) & (near_in | far_in), near_in ? t_near : t_far};
+}
+
+// intersect_cylinder's side (a > 0, solve_quadratic, side_root_in_height) and two caps
+// (intersect_unit_disc); the nearest of those it finds.
+RT_SIMD_INLINE HalfCrossings cylinder_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+  const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h), oz = wide(r.o[2], h);
+  const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h), dz = wide(r.d[2], h);
+  const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
+  const auto in_interval = [&](Double4 t) { return (t > tmin) & (t < tmax); };
+  const Double4 a = dx * dx + dy * dy;
+  const Double4 b = splat4d(2.0) * (ox * dx + oy * dy);
+  const Double4 c = ox * ox + oy * oy - splat4d(1.0);
+  const Double4 disc = b * b - splat4d(4.0) * a * c;
+  const Double4 root = __builtin_ia32_sqrtpd256(disc);
+  const Double4 q = b < splat4d(0.0) ? splat4d(-0.5) * (b - root) : splat4d(-0.5) * (b + root);
+  const Mask4d q_zero = q == splat4d(0.0);
+  const Double4 t0 = q_zero ? splat4d(0.0) : q / a, t1 = q_zero ? splat4d(0.0) : c / q;
+  const Mask4d solved = (a > splat4d(0.0)) & ~(disc < splat4d(0.0));
+  HalfCrossings best{Mask4d{}, splat4d(HUGE_VAL)};
+  // The nearest found: the side's roots in either order (the sorted first that counts is the
+  // smaller), then each cap where nearer.
+  const auto take = [&](Mask4d found, Double4 t) {
+    const Mask4d nearer = found & (t < best.t);
+    best.t = nearer ? t : best.t;
+    best.found |= found;
+  };
+  for (const Double4 t : {t0, t1}) {
+    const Double4 z = oz + t * dz;
+    take(solved & in_interval(t) & (z >= splat4d(0.0)) & (z <= splat4d(1.0)), t);
+  }
+  for (const float z_cap : {0.0f, 1.0f}) {
+    const Double4 t = (splat4d(z_cap) - oz) / dz;
+    const Double4 x = ox + t * dx, y = oy + t * dy;
+    take((dz != splat4d(0.0)) & in_interval(t) & (x * x + y * y <= splat4d(1.0)), t);
+  }
+  return best;
+}
+
+// intersect_plane: the plane y = 0 within |x|, |z| <= 1, in float.
+RT_SIMD_INLINE LaneCrossings plane_lanes(const ObjectLanes& r, const RayLanes& ray) {
+  const Float8 t = -r.o[1] / r.d[1];
+  const Float8 x = r.o[0] + t * r.d[0], z = r.o[2] + t * r.d[2];
+  const Float8 one = splat8(1.0f);
+  const Mask8 found = (r.d[1] != splat8(0.0f)) & (t > ray.tmin) & (t < ray.tmax) & ~(abs8(x) > one) & ~(abs8(z) > one);
+  return {movemask8(found), t};
+}
+
+// The crossings the single-ray test of `shape` first finds, for the lanes of `lanes`; a cone's
+// are not worked out here: all its lanes, t = +infinity.
+RT_SIMD_INLINE LaneCrossings shape_crossings(const AnalyticShape& shape, const ObjectLanes& r, const RayLanes& ray,
+                                             unsigned lanes) {
+  LaneCrossings c;
+  switch (shape.kind) {
+    case ShapeKind::kSphere: c = join(sphere_half(r, ray, 0), sphere_half(r, ray, 1)); break;
+    case ShapeKind::kCube: c = join(cube_half(r, ray, 0), cube_half(r, ray, 1)); break;
+    case ShapeKind::kCylinder: c = join(cylinder_half(r, ray, 0), cylinder_half(r, ray, 1)); break;
+    case ShapeKind::kPlane: c = plane_lanes(r, ray); break;
+    case ShapeKind::kCone: return {lanes, splat8(kInfinity)};
+  }
+  c.lanes &= lanes;
+  return c;
+}
+
+// The lanes of `lanes` whose single-ray test of `shape` may find it crossed.
+RT_SIMD_INLINE unsigned shape_lanes(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes) {
+  if (shape.kind == ShapeKind::kCone) return lanes;
+  return shape_crossings(shape, ObjectLanes(shape.transform.to_object, ray), ray, lanes).lanes;
+}
+
+// origin_rounding (core/transform.h) lane by lane: transformed_point_error's bound on the
+// object-space origin (its input error zero), along the object-space direction.
+RT_SIMD_INLINE Float8 origin_rounding_lanes(const Mat4& m, const RayLanes& ray, const ObjectLanes& r) {
+  const Float8 zero = splat8(0.0f);
+  Float8 e[3];
+  for (int i = 0; i < 3; ++i) {
+    const Float8 magnitude = abs8(splat8(m[0][i]) * ray.origin[0]) + abs8(splat8(m[1][i]) * ray.origin[1]) +
+                             abs8(splat8(m[2][i]) * ray.origin[2]) + splat8(std::fabs(m[3][i]));
+    const Float8 carried =
+        splat8(std::fabs(m[0][i])) * zero + splat8(std::fabs(m[1][i])) * zero + splat8(std::fabs(m[2][i])) * zero;
+    e[i] = splat8(float_gamma(3)) * magnitude + splat8(1.0f + float_gamma(3)) * carried;
+  }
+  const Float8 length2 = r.d[0] * r.d[0] + r.d[1] * r.d[1] + r.d[2] * r.d[2];
+  const Float8 along = (abs8(r.d[0]) * e[0] + abs8(r.d[1]) * e[1] + abs8(r.d[2]) * e[2]) / length2;
+  return length2 > zero ? along : zero;
+}
+
+// Any-hit for a leaf's shape: the lanes of `lanes` that it certainly blocks, and in `unsure` those
+// still to be asked of the single-ray test. intersect_shape takes its first crossing when it lies
+// beyond the origin's rounding; one short of it needs that test's second look (rare: a ray that
+// leaves the shape's own surface).
+RT_SIMD_INLINE unsigned shape_blocks(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes,
+                                     unsigned& unsure) {
+  if (shape.kind == ShapeKind::kCone) {
+    unsure = lanes;
+    return 0;
+  }
+  const ObjectLanes r(shape.transform.to_object, ray);
+  const LaneCrossings c = shape_crossings(shape, r, ray, lanes);
+  if (c.lanes == 0) {
+    unsure = 0;
+    return 0;
+  }
+  const Float8 floor = ray.tmin + origin_rounding_lanes(shape.transform.to_object, ray, r);
+  const unsigned sure = c.lanes & movemask8(c.t > floor);
+  unsure = c.lanes & ~sure;
+  return sure;
+}
+
+#endif
+
+}  // namespace RTCLI_ISA_NS
+}  // namespace rt
