@@ -233,8 +233,9 @@ unsigned blocked_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, L
     const uint32_t id = bvh.slots()[slot].id;
     unsigned open = lanes & ~blocked;
     if (bvh.kind(id) == PrimitiveKind::kShape) {
+      LaneCrossings crossings;
       unsigned unsure;
-      blocked |= shape_blocks(bvh.shape(id), ray_lanes.get(), open, unsure);
+      blocked |= shape_hits(bvh.shape(id), ray_lanes.get(), open, crossings, unsure);
       open = unsure;
     }
     for (unsigned m = open; m; m &= m - 1) {
@@ -280,6 +281,32 @@ unsigned intersect_packet(const Bvh& bvh, Ray* rays, Hit* hits, int count);
 namespace {
 
 #if defined(__AVX__)
+// Shape `id`'s crossings for the packet's rays in `lanes`, merged into their hits (found: bit i
+// where rays[i]'s hit changed) where the lanes' test (core/accel/shape_lanes.h) knows the single
+// ray's; returns the lanes still to be tested alone. Its t was found under the interval the leaf
+// started with, which a nearer hit since may have cut short: the same crossing is the single
+// ray's under the shorter one if it lies before its end, and none is if beyond. A float t equal
+// to the end is left to the single-ray test, whose double t may lie on either side.
+unsigned nearest_shape_packet(const Bvh& bvh, uint32_t id, unsigned lanes, Ray* rays, Hit* hits,
+                              LazyRayLanes& ray_lanes, unsigned& found) {
+  LaneCrossings c;
+  unsigned unsure;
+  const unsigned sure = shape_hits(bvh.shape(id), ray_lanes.get(), lanes, c, unsure);
+  for (unsigned m = sure; m; m &= m - 1) {
+    const int i = __builtin_ctz(m);
+    if (c.t[i] == rays[i].tmax) {
+      unsure |= 1u << i;
+    } else if (c.t[i] < rays[i].tmax) {
+      Hit candidate;
+      candidate.t = c.t[i];
+      candidate.prim = id;
+      candidate.part = static_cast<uint32_t>(c.part[i]);
+      if (take_if_first(candidate, rays[i], hits[i])) found |= 1u << i;
+    }
+  }
+  return unsure;
+}
+
 // A leaf's nearest crossings for the packet's rays in `lanes`, merged into their hits. A mesh
 // instance takes the rays on into its own BVH as a packet; everything else is the single-ray
 // test, ray by ray, an analytic shape's lanes first filtered all at once. Flattened itself: it
@@ -299,7 +326,8 @@ namespace {
     const uint32_t id = bvh.slots()[slot].id;
     if (bvh.kind(id) != PrimitiveKind::kInstance || bvh.instance(id).cutout) {
       unsigned open = lanes;
-      if (bvh.kind(id) == PrimitiveKind::kShape) open = shape_lanes(bvh.shape(id), ray_lanes.get(), open);
+      if (bvh.kind(id) == PrimitiveKind::kShape)
+        open = nearest_shape_packet(bvh, id, lanes, rays, hits, ray_lanes, found);
       for (unsigned m = open; m; m &= m - 1) {
         const int i = __builtin_ctz(m);
         if (nearest_in_slots(bvh, slot, slot + 1, rays[i], hits[i])) found |= 1u << i;

@@ -3,9 +3,10 @@
 // the lanes whose rays enter it. The node is read once for the packet, where eight single rays
 // would read it up to eight times: the gain is for coherent rays (a point's shadow rays to an
 // area light, neighbouring camera rays), whose walks share most nodes. Leaves are tested ray by
-// ray, by the single-ray tests, so each ray gets exactly the answer it would get alone (for the
-// closest hit, because equal distances are ordered by id, not by visiting order). AVX only (the
-// SSE kernels loop over single rays: GCC lowers 8-lane vectors to SSE through memory).
+// ray, by the single-ray tests, but for analytic shapes, tested for all lanes at once by the same
+// arithmetic (core/accel/shape_lanes.h); so each ray gets exactly the answer it would get alone
+// (for the closest hit, because equal distances are ordered by id, not by visiting order). AVX
+// only (the SSE kernels loop over single rays: GCC lowers 8-lane vectors to SSE through memory).
 #pragma once
 
 #include <limits>

@@ -3,17 +3,20 @@
 // crossing inside the ray's interval in object space; that look is done here for all lanes, with
 // the same float and double operations in the same order as Transform's (core/transform.h, glm's
 // column sums) and the shapes' own (core/shapes/sphere.cpp, plane.cpp, cube.cpp, cylinder.cpp,
-// quadratic.h), so that lane by lane it finds the same crossing at the same t. A lane where it
-// finds none needs no single-ray test; for a closest hit every other lane takes that test, and
-// for any-hit only those whose crossing lies within the origin's rounding. Every answer stays the
-// single ray's (the packet tests in tests/core/test_bvh_isa.cpp). A lane given a longer interval
-// than its ray's is only kept more often. Cones are not worked out here: their lanes all take the
+// quadratic.h), so that lane by lane it finds the same crossing at the same t and part. A lane
+// where it finds none needs no single-ray test, and one whose crossing lies beyond the origin's
+// rounding gets that crossing as its hit (or its blocker) without it; only the others take the
+// single-ray test. Every answer stays the single ray's (tests/core/test_bvh_shape_packets.cpp and
+// the packet tests of test_bvh_isa.cpp). Cones are not worked out here: their lanes all take the
 // single-ray test.
 #pragma once
+
+#include <utility>
 
 #include "core/accel/bvh_packet.h"
 #include "core/float_error.h"
 #include "core/shapes/analytic_shape.h"
+#include "core/shapes/cylinder.h"
 
 namespace rt {
 namespace RTCLI_ISA_NS {
@@ -62,22 +65,26 @@ struct ObjectLanes {
 };
 
 // Where the single-ray test first finds a shape crossed: bit i of `lanes` set where it finds a
-// crossing inside lane i's interval, and t[i] the hit's t it then reports (hit.t, a float).
+// crossing inside lane i's interval, and t[i] and part[i] the hit's t (a float) and part it then
+// reports.
 struct LaneCrossings {
   unsigned lanes = 0;
   Float8 t{};
+  Mask8 part{};
 };
 
-// Four lanes' crossings in double: bit j of the mask for lane j, their ts narrowed to float.
+// Four lanes' crossings in double.
 struct HalfCrossings {
   Mask4d found;
   Double4 t;
+  Mask4d part{};
 };
 
 RT_SIMD_INLINE LaneCrossings join(HalfCrossings lo, HalfCrossings hi) {
   const Float4 t_lo = __builtin_convertvector(lo.t, Float4), t_hi = __builtin_convertvector(hi.t, Float4);
-  return {movemask4d(lo.found) | movemask4d(hi.found) << 4,
-          __builtin_shufflevector(t_lo, t_hi, 0, 1, 2, 3, 4, 5, 6, 7)};
+  const Int4 part_lo = __builtin_convertvector(lo.part, Int4), part_hi = __builtin_convertvector(hi.part, Int4);
+  return {movemask4d(lo.found) | movemask4d(hi.found) << 4, __builtin_shufflevector(t_lo, t_hi, 0, 1, 2, 3, 4, 5, 6, 7),
+          __builtin_shufflevector(part_lo, part_hi, 0, 1, 2, 3, 4, 5, 6, 7)};
 }
 
 // intersect_sphere's roots (sphere_roots, solve_quadratic) and the nearer of them inside the
@@ -107,10 +114,12 @@ RT_SIMD_INLINE HalfCrossings sphere_half(const ObjectLanes& r, const RayLanes& r
   return {solved & (lo_in | hi_in), lo_in ? lo : hi};
 }
 
-// intersect_cube's slabs: entering at t_near, else leaving at t_far.
+// intersect_cube's slabs: entering at t_near, else leaving at t_far; the face (part) 2 axis + 1
+// where the ray crosses it towards + (entering) or - (leaving).
 RT_SIMD_INLINE HalfCrossings cube_half(const ObjectLanes& r, const RayLanes& ray, int h) {
   Double4 t_near = splat4d(-HUGE_VAL), t_far = splat4d(HUGE_VAL);
   Mask4d outside = Mask4d{}, any_axis = Mask4d{};
+  Mask4d near_face = Mask4d{}, far_face = Mask4d{};
   for (int a = 0; a < 3; ++a) {
     const Double4 o = wide(r.o[a], h), d = wide(r.d[a], h);
     const Mask4d parallel = d == splat4d(0.0);
@@ -119,13 +128,17 @@ RT_SIMD_INLINE HalfCrossings cube_half(const ObjectLanes& r, const RayLanes& ray
     const Mask4d swap = t0 > t1;
     const Double4 lo = swap ? t1 : t0, hi = swap ? t0 : t1;
     const Mask4d nearer = ~parallel & (lo > t_near), farther = ~parallel & (hi < t_far);
+    const Mask4d towards_plus = d > splat4d(0.0);  // all bits set: -1
     t_near = nearer ? lo : t_near;
     t_far = farther ? hi : t_far;
+    near_face = nearer ? Mask4d{} + int64_t{2 * a} - towards_plus : near_face;
+    far_face = farther ? Mask4d{} + int64_t{2 * a + 1} + towards_plus : far_face;
     any_axis |= nearer;
   }
   const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
   const Mask4d near_in = (t_near > tmin) & (t_near < tmax), far_in = (t_far > tmin) & (t_far < tmax);
-  return {~outside & any_axis & ~(t_near > t_far) & (near_in | far_in), near_in ? t_near : t_far};
+  return {~outside & any_axis & ~(t_near > t_far) & (near_in | far_in), near_in ? t_near : t_far,
+          near_in ? near_face : far_face};
 }
 
 // intersect_cylinder's side (a > 0, solve_quadratic, side_root_in_height) and two caps
@@ -144,22 +157,23 @@ RT_SIMD_INLINE HalfCrossings cylinder_half(const ObjectLanes& r, const RayLanes&
   const Mask4d q_zero = q == splat4d(0.0);
   const Double4 t0 = q_zero ? splat4d(0.0) : q / a, t1 = q_zero ? splat4d(0.0) : c / q;
   const Mask4d solved = (a > splat4d(0.0)) & ~(disc < splat4d(0.0));
-  HalfCrossings best{Mask4d{}, splat4d(HUGE_VAL)};
+  HalfCrossings best{Mask4d{}, splat4d(HUGE_VAL), Mask4d{} + int64_t{kCylinderSide}};
   // The nearest found: the side's roots in either order (the sorted first that counts is the
   // smaller), then each cap where nearer.
-  const auto take = [&](Mask4d found, Double4 t) {
+  const auto take = [&](Mask4d found, Double4 t, uint32_t part) {
     const Mask4d nearer = found & (t < best.t);
     best.t = nearer ? t : best.t;
+    best.part = nearer ? Mask4d{} + int64_t{part} : best.part;
     best.found |= found;
   };
   for (const Double4 t : {t0, t1}) {
     const Double4 z = oz + t * dz;
-    take(solved & in_interval(t) & (z >= splat4d(0.0)) & (z <= splat4d(1.0)), t);
+    take(solved & in_interval(t) & (z >= splat4d(0.0)) & (z <= splat4d(1.0)), t, kCylinderSide);
   }
-  for (const float z_cap : {0.0f, 1.0f}) {
+  for (const auto& [z_cap, part] : {std::pair{0.0f, kCylinderBase}, std::pair{1.0f, kCylinderTop}}) {
     const Double4 t = (splat4d(z_cap) - oz) / dz;
     const Double4 x = ox + t * dx, y = oy + t * dy;
-    take((dz != splat4d(0.0)) & in_interval(t) & (x * x + y * y <= splat4d(1.0)), t);
+    take((dz != splat4d(0.0)) & in_interval(t) & (x * x + y * y <= splat4d(1.0)), t, part);
   }
   return best;
 }
@@ -170,7 +184,7 @@ RT_SIMD_INLINE LaneCrossings plane_lanes(const ObjectLanes& r, const RayLanes& r
   const Float8 x = r.o[0] + t * r.d[0], z = r.o[2] + t * r.d[2];
   const Float8 one = splat8(1.0f);
   const Mask8 found = (r.d[1] != splat8(0.0f)) & (t > ray.tmin) & (t < ray.tmax) & ~(abs8(x) > one) & ~(abs8(z) > one);
-  return {movemask8(found), t};
+  return {movemask8(found), t, Mask8{}};
 }
 
 // The crossings the single-ray test of `shape` first finds, for the lanes of `lanes`; a cone's
@@ -187,12 +201,6 @@ RT_SIMD_INLINE LaneCrossings shape_crossings(const AnalyticShape& shape, const O
   }
   c.lanes &= lanes;
   return c;
-}
-
-// The lanes of `lanes` whose single-ray test of `shape` may find it crossed.
-RT_SIMD_INLINE unsigned shape_lanes(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes) {
-  if (shape.kind == ShapeKind::kCone) return lanes;
-  return shape_crossings(shape, ObjectLanes(shape.transform.to_object, ray), ray, lanes).lanes;
 }
 
 // origin_rounding (core/transform.h) lane by lane: transformed_point_error's bound on the
@@ -212,18 +220,18 @@ RT_SIMD_INLINE Float8 origin_rounding_lanes(const Mat4& m, const RayLanes& ray, 
   return length2 > zero ? along : zero;
 }
 
-// Any-hit for a leaf's shape: the lanes of `lanes` that it certainly blocks, and in `unsure` those
-// still to be asked of the single-ray test. intersect_shape takes its first crossing when it lies
-// beyond the origin's rounding; one short of it needs that test's second look (rare: a ray that
-// leaves the shape's own surface).
-RT_SIMD_INLINE unsigned shape_blocks(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes,
-                                     unsigned& unsure) {
+// The lanes of `lanes` where the single-ray test of `shape` certainly reports the crossing in
+// `c` (its t and part), and in `unsure` those still to be asked of that test. intersect_shape
+// takes its first crossing when it lies beyond the origin's rounding; one short of it needs that
+// test's second look (rare: a ray that leaves the shape's own surface).
+RT_SIMD_INLINE unsigned shape_hits(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes, LaneCrossings& c,
+                                   unsigned& unsure) {
   if (shape.kind == ShapeKind::kCone) {
     unsure = lanes;
     return 0;
   }
   const ObjectLanes r(shape.transform.to_object, ray);
-  const LaneCrossings c = shape_crossings(shape, r, ray, lanes);
+  c = shape_crossings(shape, r, ray, lanes);
   if (c.lanes == 0) {
     unsure = 0;
     return 0;

@@ -115,3 +115,31 @@ TEST_CASE("BVH packets: rays leaving shapes' surfaces, along axes and grazing ge
     CHECK(hits >= blocked);
   }
 }
+
+TEST_CASE("BVH packets: a shape crossed at a double t just short of the interval's end, whose float is that end",
+          "[bvh][isa]") {
+  // From z = 3 along (0, 0, -3) the unit sphere's near root is 2/3 in double, which rounds up to
+  // the float 2/3: with that float as tmax, the single ray finds the crossing (2/3 < tmax in
+  // double) and reports t = tmax. The packet must not take the equal float for "beyond the end".
+  PrimitiveSet set;
+  AnalyticShape sphere;
+  sphere.kind = ShapeKind::kSphere;
+  sphere.transform = *make_transform(Mat4(1.0f));
+  set.shapes.push_back(sphere);
+  const float end = static_cast<float>(2.0 / 3.0);
+  REQUIRE(static_cast<double>(end) > 2.0 / 3.0);
+  for (const Isa isa : kAllIsas) {
+    if (!isa_supported(isa)) continue;
+    INFO(isa_name(isa));
+    const Bvh bvh(set, BvhBuildOptions{1, isa});
+    Ray packet[kPacketSize];
+    for (Ray& r : packet) r = Ray{Vec3(0.0f, 0.0f, 3.0f), Vec3(0.0f, 0.0f, -3.0f), 0.0f, end};
+    Ray single = packet[0];
+    Hit alone;
+    REQUIRE(bvh.intersect(single, alone));
+    CHECK(alone.t == end);
+    Hit got[kPacketSize];
+    CHECK(bvh.intersect_packet(packet, got, kPacketSize) == (1u << kPacketSize) - 1u);
+    for (int i = 0; i < kPacketSize; ++i) CHECK(same_hit(alone, got[i]));
+  }
+}
