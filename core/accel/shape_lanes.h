@@ -3,12 +3,11 @@
 // crossing inside the ray's interval in object space; that look is done here for all lanes, with
 // the same float and double operations in the same order as Transform's (core/transform.h, glm's
 // column sums) and the shapes' own (core/shapes/sphere.cpp, plane.cpp, cube.cpp, cylinder.cpp,
-// quadratic.h), so that lane by lane it finds the same crossing at the same t and part. A lane
+// cone.cpp, quadratic.h), so that lane by lane it finds the same crossing at the same t and part. A lane
 // where it finds none needs no single-ray test, and one whose crossing lies beyond the origin's
 // rounding gets that crossing as its hit (or its blocker) without it; only the others take the
 // single-ray test. Every answer stays the single ray's (tests/core/test_bvh_shape_packets.cpp and
-// the packet tests of test_bvh_isa.cpp). Cones are not worked out here: their lanes all take the
-// single-ray test.
+// the packet tests of test_bvh_isa.cpp).
 #pragma once
 
 #include <utility>
@@ -16,6 +15,7 @@
 #include "core/accel/bvh_packet.h"
 #include "core/float_error.h"
 #include "core/shapes/analytic_shape.h"
+#include "core/shapes/cone.h"
 #include "core/shapes/cylinder.h"
 
 namespace rt {
@@ -87,28 +87,30 @@ RT_SIMD_INLINE LaneCrossings join(HalfCrossings lo, HalfCrossings hi) {
           __builtin_shufflevector(part_lo, part_hi, 0, 1, 2, 3, 4, 5, 6, 7)};
 }
 
-// intersect_sphere's roots (sphere_roots, solve_quadratic) and the nearer of them inside the
-// interval (nearer_root).
+// solve_quadratic (core/shapes/quadratic.h), four lanes: where it finds roots, t0 <= t1.
+RT_SIMD_INLINE Mask4d solve_quadratic_half(Double4 a, Double4 b, Double4 c, Double4& t0, Double4& t1) {
+  const Double4 disc = b * b - splat4d(4.0) * a * c;
+  const Double4 root = __builtin_ia32_sqrtpd256(disc);
+  const Double4 q = b < splat4d(0.0) ? splat4d(-0.5) * (b - root) : splat4d(-0.5) * (b + root);
+  const Mask4d linear = a == splat4d(0.0), q_zero = q == splat4d(0.0);
+  const Double4 line_t = -c / b;
+  const Double4 u = q_zero ? splat4d(0.0) : q / a, v = q_zero ? splat4d(0.0) : c / q;
+  const Mask4d swap = u > v;
+  t0 = linear ? line_t : swap ? v : u;
+  t1 = linear ? line_t : swap ? u : v;
+  return linear ? b != splat4d(0.0) : ~(disc < splat4d(0.0));
+}
+
+// intersect_sphere's roots (sphere_roots) and the nearer of them inside the interval
+// (nearer_root).
 RT_SIMD_INLINE HalfCrossings sphere_half(const ObjectLanes& r, const RayLanes& ray, int h) {
   const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h), oz = wide(r.o[2], h);
   const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h), dz = wide(r.d[2], h);
   const Double4 a = dx * dx + dy * dy + dz * dz;
   const Double4 b = splat4d(2.0) * (ox * dx + oy * dy + oz * dz);
   const Double4 c = (ox * ox + oy * oy + oz * oz) - splat4d(1.0);
-  const Double4 disc = b * b - splat4d(4.0) * a * c;
-  const Double4 root = __builtin_ia32_sqrtpd256(disc);
-  const Double4 q = b < splat4d(0.0) ? splat4d(-0.5) * (b - root) : splat4d(-0.5) * (b + root);
-  const Mask4d linear = a == splat4d(0.0);
-  const Double4 line_t = -c / b;
-  Double4 t0 = q / a, t1 = c / q;
-  const Mask4d q_zero = q == splat4d(0.0);
-  t0 = q_zero ? splat4d(0.0) : t0;
-  t1 = q_zero ? splat4d(0.0) : t1;
-  const Mask4d swap = t0 > t1;
-  Double4 lo = swap ? t1 : t0, hi = swap ? t0 : t1;
-  lo = linear ? line_t : lo;
-  hi = linear ? line_t : hi;
-  const Mask4d solved = linear ? b != splat4d(0.0) : ~(disc < splat4d(0.0));
+  Double4 lo, hi;
+  const Mask4d solved = solve_quadratic_half(a, b, c, lo, hi);
   const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
   const Mask4d lo_in = (lo > tmin) & (lo < tmax), hi_in = (hi > tmin) & (hi < tmax);
   return {solved & (lo_in | hi_in), lo_in ? lo : hi};
@@ -141,25 +143,19 @@ RT_SIMD_INLINE HalfCrossings cube_half(const ObjectLanes& r, const RayLanes& ray
           near_in ? near_face : far_face};
 }
 
-// intersect_cylinder's side (a > 0, solve_quadratic, side_root_in_height) and two caps
-// (intersect_unit_disc); the nearest of those it finds.
-RT_SIMD_INLINE HalfCrossings cylinder_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+// The nearest of a cylinder's or cone's crossings: the side's roots t0, t1 where `solved`
+// (side_root_in_height: z within [0, 1]) and the caps (intersect_unit_disc at z_cap[k], part
+// cap_part[k]), as intersect_cylinder and intersect_cone take them: the side's smaller root that
+// counts, then each cap where nearer.
+template <int Caps>
+RT_SIMD_INLINE HalfCrossings side_and_caps(const ObjectLanes& r, const RayLanes& ray, int h, Mask4d solved, Double4 t0,
+                                           Double4 t1, uint32_t side_part, const float (&z_cap)[Caps],
+                                           const uint32_t (&cap_part)[Caps]) {
   const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h), oz = wide(r.o[2], h);
   const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h), dz = wide(r.d[2], h);
   const Double4 tmin = wide(ray.tmin, h), tmax = wide(ray.tmax, h);
   const auto in_interval = [&](Double4 t) { return (t > tmin) & (t < tmax); };
-  const Double4 a = dx * dx + dy * dy;
-  const Double4 b = splat4d(2.0) * (ox * dx + oy * dy);
-  const Double4 c = ox * ox + oy * oy - splat4d(1.0);
-  const Double4 disc = b * b - splat4d(4.0) * a * c;
-  const Double4 root = __builtin_ia32_sqrtpd256(disc);
-  const Double4 q = b < splat4d(0.0) ? splat4d(-0.5) * (b - root) : splat4d(-0.5) * (b + root);
-  const Mask4d q_zero = q == splat4d(0.0);
-  const Double4 t0 = q_zero ? splat4d(0.0) : q / a, t1 = q_zero ? splat4d(0.0) : c / q;
-  const Mask4d solved = (a > splat4d(0.0)) & ~(disc < splat4d(0.0));
-  HalfCrossings best{Mask4d{}, splat4d(HUGE_VAL), Mask4d{} + int64_t{kCylinderSide}};
-  // The nearest found: the side's roots in either order (the sorted first that counts is the
-  // smaller), then each cap where nearer.
+  HalfCrossings best{Mask4d{}, splat4d(HUGE_VAL), Mask4d{} + int64_t{side_part}};
   const auto take = [&](Mask4d found, Double4 t, uint32_t part) {
     const Mask4d nearer = found & (t < best.t);
     best.t = nearer ? t : best.t;
@@ -168,14 +164,39 @@ RT_SIMD_INLINE HalfCrossings cylinder_half(const ObjectLanes& r, const RayLanes&
   };
   for (const Double4 t : {t0, t1}) {
     const Double4 z = oz + t * dz;
-    take(solved & in_interval(t) & (z >= splat4d(0.0)) & (z <= splat4d(1.0)), t, kCylinderSide);
+    take(solved & in_interval(t) & (z >= splat4d(0.0)) & (z <= splat4d(1.0)), t, side_part);
   }
-  for (const auto& [z_cap, part] : {std::pair{0.0f, kCylinderBase}, std::pair{1.0f, kCylinderTop}}) {
-    const Double4 t = (splat4d(z_cap) - oz) / dz;
+  for (int k = 0; k < Caps; ++k) {
+    const Double4 t = (splat4d(z_cap[k]) - oz) / dz;
     const Double4 x = ox + t * dx, y = oy + t * dy;
-    take((dz != splat4d(0.0)) & in_interval(t) & (x * x + y * y <= splat4d(1.0)), t, part);
+    take((dz != splat4d(0.0)) & in_interval(t) & (x * x + y * y <= splat4d(1.0)), t, cap_part[k]);
   }
   return best;
+}
+
+// intersect_cylinder: its side (where a > 0) and two caps.
+RT_SIMD_INLINE HalfCrossings cylinder_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+  const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h);
+  const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h);
+  const Double4 a = dx * dx + dy * dy;
+  Double4 t0, t1;
+  const Mask4d solved = (a > splat4d(0.0)) & solve_quadratic_half(a, splat4d(2.0) * (ox * dx + oy * dy),
+                                                                  ox * ox + oy * oy - splat4d(1.0), t0, t1);
+  static constexpr float kCaps[] = {0.0f, 1.0f};
+  static constexpr uint32_t kParts[] = {kCylinderBase, kCylinderTop};
+  return side_and_caps(r, ray, h, solved, t0, t1, kCylinderSide, kCaps, kParts);
+}
+
+// intersect_cone: its side (the nappe z >= 0) and base.
+RT_SIMD_INLINE HalfCrossings cone_half(const ObjectLanes& r, const RayLanes& ray, int h) {
+  const Double4 ox = wide(r.o[0], h), oy = wide(r.o[1], h), oz = wide(r.o[2], h);
+  const Double4 dx = wide(r.d[0], h), dy = wide(r.d[1], h), dz = wide(r.d[2], h);
+  Double4 t0, t1;
+  const Mask4d solved = solve_quadratic_half(dx * dx + dy * dy - dz * dz, splat4d(2.0) * (ox * dx + oy * dy - oz * dz),
+                                             ox * ox + oy * oy - oz * oz, t0, t1);
+  static constexpr float kCaps[] = {1.0f};
+  static constexpr uint32_t kParts[] = {kConeBase};
+  return side_and_caps(r, ray, h, solved, t0, t1, kConeSide, kCaps, kParts);
 }
 
 // intersect_plane: the plane y = 0 within |x|, |z| <= 1, in float.
@@ -187,8 +208,7 @@ RT_SIMD_INLINE LaneCrossings plane_lanes(const ObjectLanes& r, const RayLanes& r
   return {movemask8(found), t, Mask8{}};
 }
 
-// The crossings the single-ray test of `shape` first finds, for the lanes of `lanes`; a cone's
-// are not worked out here: all its lanes, t = +infinity.
+// The crossings the single-ray test of `shape` first finds, for the lanes of `lanes`.
 RT_SIMD_INLINE LaneCrossings shape_crossings(const AnalyticShape& shape, const ObjectLanes& r, const RayLanes& ray,
                                              unsigned lanes) {
   LaneCrossings c;
@@ -197,7 +217,7 @@ RT_SIMD_INLINE LaneCrossings shape_crossings(const AnalyticShape& shape, const O
     case ShapeKind::kCube: c = join(cube_half(r, ray, 0), cube_half(r, ray, 1)); break;
     case ShapeKind::kCylinder: c = join(cylinder_half(r, ray, 0), cylinder_half(r, ray, 1)); break;
     case ShapeKind::kPlane: c = plane_lanes(r, ray); break;
-    case ShapeKind::kCone: return {lanes, splat8(kInfinity)};
+    case ShapeKind::kCone: c = join(cone_half(r, ray, 0), cone_half(r, ray, 1)); break;
   }
   c.lanes &= lanes;
   return c;
@@ -226,10 +246,6 @@ RT_SIMD_INLINE Float8 origin_rounding_lanes(const Mat4& m, const RayLanes& ray, 
 // test's second look (rare: a ray that leaves the shape's own surface).
 RT_SIMD_INLINE unsigned shape_hits(const AnalyticShape& shape, const RayLanes& ray, unsigned lanes, LaneCrossings& c,
                                    unsigned& unsure) {
-  if (shape.kind == ShapeKind::kCone) {
-    unsure = lanes;
-    return 0;
-  }
   const ObjectLanes r(shape.transform.to_object, ray);
   c = shape_crossings(shape, r, ray, lanes);
   if (c.lanes == 0) {
