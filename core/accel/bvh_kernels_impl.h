@@ -193,8 +193,8 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 }
 
 #if defined(__AVX__)
-// Fewer lanes than this in a leaf take its slots ray by ray: the shapes' lane filter
-// (core/accel/shape_lanes.h) costs about two single-ray shape tests.
+// Fewer lanes than this in a leaf take its slots ray by ray, without the shapes' lanes
+// (core/accel/shape_lanes.h): a lone ray is tested alone.
 inline constexpr int kMinShapeLanes = 2;
 
 // A packet's rays as lanes for the shapes' filter, gathered when a leaf first needs them.
@@ -308,9 +308,9 @@ unsigned nearest_shape_packet(const Bvh& bvh, uint32_t id, unsigned lanes, Ray* 
 }
 
 // A leaf's nearest crossings for the packet's rays in `lanes`, merged into their hits. A mesh
-// instance takes the rays on into its own BVH as a packet; everything else is the single-ray
-// test, ray by ray, an analytic shape's lanes first filtered all at once. Flattened itself: it
-// calls intersect_packet, so it is not inlined there.
+// instance takes the rays on into its own BVH as a packet; an analytic shape is tested for all
+// lanes at once first (nearest_shape_packet); everything else is the single-ray test, ray by ray.
+// Flattened itself: it calls intersect_packet, so it is not inlined there.
 [[gnu::flatten]] unsigned nearest_in_leaf_packet(const Bvh& bvh, uint32_t leaf, unsigned lanes, LaneQuadRays& quad_rays,
                                                  Ray* rays, Hit* hits, LazyRayLanes& ray_lanes) {
   unsigned found = 0;

@@ -10,6 +10,7 @@
 // the packet tests of test_bvh_isa.cpp).
 #pragma once
 
+#include <limits>
 #include <utility>
 
 #include "core/accel/bvh_packet.h"
@@ -211,7 +212,8 @@ RT_SIMD_INLINE LaneCrossings plane_lanes(const ObjectLanes& r, const RayLanes& r
 // The crossings the single-ray test of `shape` first finds, for the lanes of `lanes`.
 RT_SIMD_INLINE LaneCrossings shape_crossings(const AnalyticShape& shape, const ObjectLanes& r, const RayLanes& ray,
                                              unsigned lanes) {
-  LaneCrossings c;
+  // A kind without a case here: every lane, at a t (NaN) that leaves each to the single-ray test.
+  LaneCrossings c{0xffu, splat8(std::numeric_limits<float>::quiet_NaN()), Mask8{}};
   switch (shape.kind) {
     case ShapeKind::kSphere: c = join(sphere_half(r, ray, 0), sphere_half(r, ray, 1)); break;
     case ShapeKind::kCube: c = join(cube_half(r, ray, 0), cube_half(r, ray, 1)); break;
