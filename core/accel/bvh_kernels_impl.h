@@ -13,8 +13,6 @@
 #error "define RTCLI_ISA_NS, RTCLI_ISA and RTCLI_ISA_KERNEL before including bvh_kernels_impl.h"
 #endif
 
-#include <optional>
-
 #include "core/accel/bvh_packet.h"
 #include "core/accel/bvh_traversal.h"
 #include "core/accel/shape_lanes.h"
@@ -196,24 +194,6 @@ bool occluded_in_leaf(const Bvh& bvh, uint32_t leaf, const Ray& r, const QuadRay
 // Fewer lanes than this in a leaf take its slots ray by ray, without the shapes' lanes
 // (core/accel/shape_lanes.h): a lone ray is tested alone.
 inline constexpr int kMinShapeLanes = 2;
-
-// A packet's rays as lanes for the shapes' filter, gathered when a leaf first needs them.
-class LazyRayLanes {
- public:
-  LazyRayLanes(const Ray* rays, int count) : packet_(rays, count) {}
-  const RayLanes& get() {
-    if (!lanes_) lanes_.emplace(packet_);
-    return *lanes_;
-  }
-  // The intervals again, after hits narrowed them.
-  void narrow() {
-    if (lanes_) lanes_->tmax = packet_.lanes([](const Ray& r) { return r.tmax; });
-  }
-
- private:
-  PacketRays packet_;
-  std::optional<RayLanes> lanes_;
-};
 
 // A leaf's occlusion answers for the packet's rays in `lanes` (bit i: rays[i] is blocked), each
 // the single ray's (occluded_in_leaf). With enough lanes the slots are taken one at a time, an

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "core/accel/bvh_packet.h"
@@ -39,6 +40,24 @@ struct RayLanes {
     tmin = r.lanes([](const Ray& ray) { return ray.tmin; });
     tmax = r.lanes([](const Ray& ray) { return ray.tmax; });
   }
+};
+
+// A packet's rays as lanes, gathered when a leaf's shape first needs them.
+class LazyRayLanes {
+ public:
+  LazyRayLanes(const Ray* rays, int count) : packet_(rays, count) {}
+  const RayLanes& get() {
+    if (!lanes_) lanes_.emplace(packet_);
+    return *lanes_;
+  }
+  // The intervals again, after hits narrowed them.
+  void narrow() {
+    if (lanes_) lanes_->tmax = packet_.lanes([](const Ray& r) { return r.tmax; });
+  }
+
+ private:
+  PacketRays packet_;
+  std::optional<RayLanes> lanes_;
 };
 
 // Lanes 4h to 4h + 3 of v, widened to double.
