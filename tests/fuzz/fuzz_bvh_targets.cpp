@@ -1,13 +1,17 @@
 // The fuzz target of the BVH: its build from arbitrary triangles and every query on arbitrary
-// rays, each held to brute force, to the baseline kernels or to another query's answer.
+// rays, each held to brute force, to the baseline kernels or to another query's answer; and the
+// packet walks on analytic shapes made from the same numbers, held to single rays.
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_traversal.h"
+#include "core/shapes/analytic_shape.h"
+#include "core/transform.h"
 #include "tests/fuzz/fuzz_targets.h"
 
 namespace rt::fuzz {
@@ -19,14 +23,70 @@ namespace {
 // counts when its point is inside the box by more than that error on every axis (so hits on
 // triangles thinner than the error in some axis are not checked here; tests/core/test_bvh.cpp
 // covers ordinary ones).
-bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) {
-  const Aabb box = tri.bounds();
+bool robust_in(const Aabb& box, const Ray& ray, float t) {
   const Vec3 p = ray.at(t);
   const float margin = 1e-5f * std::max({max_abs_component(box.lo), max_abs_component(box.hi),
                                          max_abs_component(ray.origin), max_abs_component(p), 1e-30f});
   for (int a = 0; a < 3; ++a)
     if (!(p[a] >= box.lo[a] + margin && p[a] <= box.hi[a] - margin)) return false;
   return true;
+}
+bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) { return robust_in(tri.bounds(), ray, t); }
+
+// A packet of the rays, repeated with shorter intervals.
+void fill_packet(const std::vector<Ray>& valid, Ray* packet) {
+  for (int i = 0; i < kPacketSize; ++i) {
+    packet[i] = valid[static_cast<size_t>(i) % valid.size()];
+    if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
+  }
+}
+
+// The packet walks on analytic shapes made from the triangles' numbers (each nine a translation,
+// rotation and scale, the kinds in turn), whose leaves test a packet's lanes at once
+// (core/accel/shape_lanes.h): each ray's occlusion answer is its own, and so is its closest hit
+// but where the hit lies outside the shape's own box by rounding (as for triangles below).
+std::string shape_packets(const float* v, size_t floats, unsigned threads, const std::vector<Ray>& valid) {
+  if (valid.empty()) return "";
+  const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder,
+                             ShapeKind::kCone};
+  PrimitiveSet prims;
+  for (size_t i = 0; i + 9 <= floats && prims.shapes.size() < 2000; i += 9) {
+    const std::optional<Transform> t = make_transform(compose_trs(
+        Vec3(v[i], v[i + 1], v[i + 2]), Vec3(v[i + 3], v[i + 4], v[i + 5]), Vec3(v[i + 6], v[i + 7], v[i + 8])));
+    if (!t) continue;
+    AnalyticShape shape;
+    shape.kind = kinds[i / 9 % 5];
+    shape.transform = *t;
+    const Aabb box = world_bounds(shape);
+    if (is_finite(box.lo) && is_finite(box.hi)) prims.shapes.push_back(shape);
+  }
+  if (prims.shapes.empty()) return "";
+  const Bvh bvh(prims, BvhBuildOptions{threads});
+  Ray packet[kPacketSize];
+  fill_packet(valid, packet);
+  for (int count = 1; count <= kPacketSize; ++count) {
+    const unsigned mask = bvh.occluded_packet(packet, count);
+    for (int i = 0; i < count; ++i)
+      if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "shapes: occluded_packet() and occluded() disagree";
+    Ray walked[kPacketSize];
+    Hit hits[kPacketSize];
+    std::copy(packet, packet + count, walked);
+    const unsigned found = bvh.intersect_packet(walked, hits, count);
+    for (int i = 0; i < count; ++i) {
+      Ray alone = packet[i];
+      Hit h;
+      const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
+      if (hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && h.prim == hits[i].prim &&
+                                  h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0)))
+        continue;
+      const bool robust_alone = hit && robust_in(world_bounds(bvh.shape(h.prim)), packet[i], h.t);
+      const bool robust_packet = got && robust_in(world_bounds(bvh.shape(hits[i].prim)), packet[i], hits[i].t);
+      if ((robust_alone && !(got && !robust_packet && hits[i].t <= h.t)) ||
+          (robust_packet && !(hit && !robust_alone && h.t <= hits[i].t)))
+        return "shapes: intersect_packet() and intersect() disagree";
+    }
+  }
+  return "";
 }
 
 }  // namespace
@@ -122,10 +182,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
   // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer.
   if (!valid.empty()) {
     Ray packet[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) {
-      packet[i] = valid[static_cast<size_t>(i) % valid.size()];
-      if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
-    }
+    fill_packet(valid, packet);
     for (int count = 1; count <= kPacketSize; ++count) {
       const unsigned mask = bvh.occluded_packet(packet, count);
       for (int i = 0; i < count; ++i)
@@ -157,7 +214,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
       }
     }
   }
-  return "";
+  return shape_packets(values.data(), triangle_floats, threads, valid);
 }
 
 }  // namespace rt::fuzz
