@@ -41,10 +41,49 @@ void fill_packet(const std::vector<Ray>& valid, Ray* packet) {
   }
 }
 
+// A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer,
+// and its own closest hit, bit for bit, and its tmax narrowed alike. Except where rounding at
+// extreme coordinates lets a primitive report a crossing outside its own box (not
+// robust(prim, ray, t)): whether a walk meets that depends on which boxes it entered before
+// narrowing tmax, and a packet enters them in another order. Such a hit may stand in for a
+// farther one, but a robust hit is never missed or replaced by another.
+template <class Robust>
+std::string packets_agree(const Bvh& bvh, const std::vector<Ray>& valid, const Robust& robust,
+                          const std::string& what) {
+  if (valid.empty()) return "";
+  Ray packet[kPacketSize];
+  fill_packet(valid, packet);
+  for (int count = 1; count <= kPacketSize; ++count) {
+    const unsigned mask = bvh.occluded_packet(packet, count);
+    for (int i = 0; i < count; ++i)
+      if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return what + "occluded_packet() and occluded() disagree";
+    Ray walked[kPacketSize];
+    Hit hits[kPacketSize];
+    std::copy(packet, packet + count, walked);
+    const unsigned found = bvh.intersect_packet(walked, hits, count);
+    for (int i = 0; i < count; ++i) {
+      Ray alone = packet[i];
+      Hit h;
+      const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
+      const bool same =
+          hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && std::memcmp(&h.b1, &hits[i].b1, 4) == 0 &&
+                                  std::memcmp(&h.b2, &hits[i].b2, 4) == 0 && h.prim == hits[i].prim &&
+                                  h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0));
+      if (same) continue;
+      const bool robust_alone = hit && robust(h.prim, packet[i], h.t);
+      const bool robust_packet = got && robust(hits[i].prim, packet[i], hits[i].t);
+      const bool packet_nearer_spurious = got && !robust_packet && hits[i].t <= h.t;
+      const bool alone_nearer_spurious = hit && !robust_alone && h.t <= hits[i].t;
+      if ((robust_alone && !packet_nearer_spurious) || (robust_packet && !alone_nearer_spurious))
+        return what + "intersect_packet() and intersect() disagree";
+    }
+  }
+  return "";
+}
+
 // The packet walks on analytic shapes made from the triangles' numbers (each nine a translation,
 // rotation and scale, the kinds in turn), whose leaves test a packet's lanes at once
-// (core/accel/shape_lanes.h): each ray's occlusion answer is its own, and so is its closest hit
-// but where the hit lies outside the shape's own box by rounding (as for triangles below).
+// (core/accel/shape_lanes.h), held to single rays as the triangles are (packets_agree).
 std::string shape_packets(const float* v, size_t floats, unsigned threads, const std::vector<Ray>& valid) {
   if (valid.empty()) return "";
   const ShapeKind kinds[] = {ShapeKind::kSphere, ShapeKind::kCube, ShapeKind::kPlane, ShapeKind::kCylinder,
@@ -62,31 +101,10 @@ std::string shape_packets(const float* v, size_t floats, unsigned threads, const
   }
   if (prims.shapes.empty()) return "";
   const Bvh bvh(prims, BvhBuildOptions{threads});
-  Ray packet[kPacketSize];
-  fill_packet(valid, packet);
-  for (int count = 1; count <= kPacketSize; ++count) {
-    const unsigned mask = bvh.occluded_packet(packet, count);
-    for (int i = 0; i < count; ++i)
-      if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "shapes: occluded_packet() and occluded() disagree";
-    Ray walked[kPacketSize];
-    Hit hits[kPacketSize];
-    std::copy(packet, packet + count, walked);
-    const unsigned found = bvh.intersect_packet(walked, hits, count);
-    for (int i = 0; i < count; ++i) {
-      Ray alone = packet[i];
-      Hit h;
-      const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
-      if (hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && h.prim == hits[i].prim &&
-                                  h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0)))
-        continue;
-      const bool robust_alone = hit && robust_in(world_bounds(bvh.shape(h.prim)), packet[i], h.t);
-      const bool robust_packet = got && robust_in(world_bounds(bvh.shape(hits[i].prim)), packet[i], hits[i].t);
-      if ((robust_alone && !(got && !robust_packet && hits[i].t <= h.t)) ||
-          (robust_packet && !(hit && !robust_alone && h.t <= hits[i].t)))
-        return "shapes: intersect_packet() and intersect() disagree";
-    }
-  }
-  return "";
+  const auto robust = [&](uint32_t prim, const Ray& ray, float t) {
+    return robust_in(world_bounds(bvh.shape(prim)), ray, t);
+  };
+  return packets_agree(bvh, valid, robust, "shapes: ");
 }
 
 }  // namespace
@@ -179,41 +197,8 @@ std::string bvh_build(const uint8_t* data, size_t size) {
           return "a crossing inside a shadow volume lies in none of the leaves it meets";
     }
   }
-  // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer.
-  if (!valid.empty()) {
-    Ray packet[kPacketSize];
-    fill_packet(valid, packet);
-    for (int count = 1; count <= kPacketSize; ++count) {
-      const unsigned mask = bvh.occluded_packet(packet, count);
-      for (int i = 0; i < count; ++i)
-        if (bool(mask >> i & 1u) != bvh.occluded(packet[i])) return "occluded_packet() and occluded() disagree";
-      // Each ray of a packet gets its own closest hit, bit for bit, and its tmax narrowed alike.
-      // Except where rounding at extreme coordinates lets a triangle report a crossing outside
-      // its own box (not robust_hit): whether a walk meets that depends on which boxes it
-      // entered before narrowing tmax, and a packet enters them in another order. Such a hit
-      // may stand in for a farther one, but a robust hit is never missed or replaced by another.
-      Ray walked[kPacketSize];
-      Hit hits[kPacketSize];
-      std::copy(packet, packet + count, walked);
-      const unsigned found = bvh.intersect_packet(walked, hits, count);
-      for (int i = 0; i < count; ++i) {
-        Ray alone = packet[i];
-        Hit h;
-        const bool hit = bvh.intersect(alone, h), got = (found >> i & 1u) != 0;
-        const bool same =
-            hit == got && (!hit || (std::memcmp(&h.t, &hits[i].t, 4) == 0 && std::memcmp(&h.b1, &hits[i].b1, 4) == 0 &&
-                                    std::memcmp(&h.b2, &hits[i].b2, 4) == 0 && h.prim == hits[i].prim &&
-                                    h.part == hits[i].part && std::memcmp(&alone.tmax, &walked[i].tmax, 4) == 0));
-        if (same) continue;
-        const bool robust_alone = hit && robust_hit(prims.triangles[h.prim], packet[i], h.t);
-        const bool robust_packet = got && robust_hit(prims.triangles[hits[i].prim], packet[i], hits[i].t);
-        const bool packet_nearer_spurious = got && !robust_packet && hits[i].t <= h.t;
-        const bool alone_nearer_spurious = hit && !robust_alone && h.t <= hits[i].t;
-        if ((robust_alone && !packet_nearer_spurious) || (robust_packet && !alone_nearer_spurious))
-          return "intersect_packet() and intersect() disagree";
-      }
-    }
-  }
+  const auto robust = [&](uint32_t prim, const Ray& ray, float t) { return robust_hit(prims.triangles[prim], ray, t); };
+  if (std::string problem = packets_agree(bvh, valid, robust, ""); !problem.empty()) return problem;
   return shape_packets(values.data(), triangle_floats, threads, valid);
 }
 
