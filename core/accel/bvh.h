@@ -84,8 +84,8 @@ struct BvhStats {
   size_t leaves = 0;
   int max_depth = 0;  // of the wide tree
   // Of the binary tree it was collapsed from, relative to one node visit; triangles tested four
-  // at a time count one visit a quad, a top-level primitive (shape, instance, CSG) two, as the
-  // builder counts them.
+  // at a time count 1 / kTraversalCost visits a quad (core/accel/bvh_bins.h), a top-level
+  // primitive (shape, instance, CSG) two, as the builder counts them.
   double sah_cost = 0.0;
 };
 

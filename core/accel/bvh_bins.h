@@ -12,9 +12,13 @@
 namespace rt {
 
 constexpr int kBins = 32;
-constexpr float kTraversalCost = 1.0f;  // cost of a node visit relative to one triangle quad's test
+// A node visit's cost, in triangle quad tests (the SAH's unit). A visit reads four cache lines to
+// a quad's three and tests eight boxes: at 1.5 (and at 2, no faster) the stone's incoherent rays
+// ran 1.03x and its shadow and camera rays 1.015x what they did at 1 (docs/benchmark.md, "Round
+// two, a twentieth session"); at 0.7, 0.93x.
+constexpr float kTraversalCost = 1.5f;
 
-// What testing one top-level primitive costs, in node visits. An analytic shape carries the ray
+// What testing one top-level primitive costs: two node visits (kTraversalCost each). An analytic shape carries the ray
 // into its object space (18 multiplies) before its own test, a mesh instance does that and walks
 // its BVH, a CSG solid finds every operand's spans; one node visit tests eight boxes at once.
 // Counted as 1 (a triangle's cost), the SAH kept the Cornell box's five walls and two blocks in
@@ -23,9 +27,9 @@ constexpr float kTraversalCost = 1.0f;  // cost of a node visit relative to one 
 // and 8 were no faster), other shipped scenes unchanged (docs/benchmark.md). A shadow ray through
 // glass multiplies its crossings' transmittances in the tree's order, which may round apart by
 // an ulp: panorama.json moved by at most 1 level in a few pixels.
-constexpr double kObjectTestCost = 2.0;
+constexpr double kObjectTestCost = 2.0 * kTraversalCost;
 
-// A leaf's cost in node visits: `block` primitives a test (4: a mesh's triangles, as quads), or
+// A leaf's cost in quad tests: `block` primitives a test (4: a mesh's triangles, as quads), or
 // one primitive a test (block 1: a set holding shapes, instances or CSG solids).
 inline double leaf_tests(uint32_t count, uint32_t block) {
   if (block == 1) return kObjectTestCost * count;

@@ -227,7 +227,7 @@ double binary_sah_cost(const std::vector<BinaryNode>& nodes, uint32_t block) {
   double cost = 0.0;
   for (const BinaryNode& n : nodes)
     cost += half_area(n.bounds) / root_area * (n.count ? leaf_tests(n.count, block) : double{kTraversalCost});
-  return cost;
+  return cost / kTraversalCost;  // in node visits (BvhStats)
 }
 
 }  // namespace
