@@ -21,13 +21,18 @@
 namespace rt {
 namespace {
 
-constexpr uint32_t kMaxLeafSize = 8;          // larger leaves are always split (<= BvhRef::kMaxLeafCount)
+// Larger leaves are always split (<= BvhRef::kMaxLeafCount). A mesh's leaves hold up to three
+// quads, which lie side by side in memory: on the stone, incoherent rays ran 1.09x and shadow rays
+// 1.03x what they did with at most two (docs/benchmark.md, "Round two, a twentieth session"). A
+// top level's objects, each tested alone, stay at eight.
+constexpr uint32_t kMaxQuadLeafSize = 12;
+constexpr uint32_t kMaxObjectLeafSize = 8;
 constexpr int kSahDepthLimit = 32;            // deeper nodes use median splits, so depth < Bvh::kMaxDepth
 constexpr uint32_t kParallelMinPrims = 4096;  // smaller subtrees are not worth starting a thread
 // Nodes this large bin their primitives on every spare thread: the root's binning (4 ms of a
 // 300k-triangle build) otherwise leaves the other threads waiting.
 constexpr uint32_t kParallelBinPrims = 65536;
-static_assert(kMaxLeafSize <= BvhRef::kMaxLeafCount);
+static_assert(kMaxQuadLeafSize <= BvhRef::kMaxLeafCount && kMaxObjectLeafSize <= BvhRef::kMaxLeafCount);
 
 // One primitive during the build: its box as two 4-lane vectors, the id riding in the unused
 // fourth lane of `lo`. The id's bits are offset into the range of normal floats (2.0 and up): raw
@@ -77,7 +82,8 @@ class BinaryBuilder {
     Split split;
     if (n > 1 && depth < kSahDepthLimit) split = find_split(range);
     const bool sah_prefers_leaf = split.axis < 0 || split.cost >= leaf_tests(n, block_);
-    if (n == 1 || (n <= kMaxLeafSize && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
+    const uint32_t max_leaf = block_ == 1 ? kMaxObjectLeafSize : kMaxQuadLeafSize;
+    if (n == 1 || (n <= max_leaf && sah_prefers_leaf) || depth >= Bvh::kMaxDepth - 1) {
       out[index].count = n;
       return;
     }
