@@ -51,6 +51,9 @@ TEST_CASE("gallery: --fast writes a self-contained page whose images and links a
   // The speed table, today's ratios lifted from docs/benchmark.md (POV-Ray, Cycles and Embree rows).
   CHECK(page.find("<th>against</th><th>scene</th><th>measure</th><th>ratio</th><th>target</th>") != std::string::npos);
   CHECK(page.find("<td>Cycles (Blender 3.4, CPU)</td>") != std::string::npos);
+  // The figures that meet a target are bold in the docs' Markdown: <strong> on the page, no "**".
+  CHECK(page.find("<strong>") != std::string::npos);
+  CHECK(page.find("**") == std::string::npos);
   // Each texture projection and filter, and glossy at several widths.
   for (const char* name : {"projection-uv", "projection-planar", "projection-spherical", "projection-cylindrical",
                            "filter-nearest", "filter-bilinear", "filter-trilinear", "glossy-0", "glossy-0.3"})

@@ -1,6 +1,6 @@
 """Markdown tables lifted from the project's docs into the gallery, so that a figure is written in
 one place (docs/benchmark.md, say) and the page shows the same. Only what the docs' tables use:
-header, separator, rows; `code` and [links](target) in cells and paragraphs."""
+header, separator, rows; `code`, **bold** and [links](target) in cells and paragraphs."""
 import html
 import os
 import re
@@ -10,13 +10,18 @@ def _cells(line):
     return [c.strip() for c in line.strip().strip("|").split("|")]
 
 
+def _bold(text):
+    """Escaped text with its **bold** runs (the figures that meet a target) as <strong>."""
+    return re.sub(r"\*\*([^*]+)\*\*", r"<strong>\1</strong>", html.escape(text))
+
+
 def _links(text):
     """Escaped text with its Markdown links [words](target) as HTML links (the targets are relative
-    to docs/, where the page is too)."""
+    to docs/, where the page is too), and its bold."""
     parts = re.split(r"\[([^\]]*)\]\(([^)\s]*)\)", text)
     out = []
     for i in range(0, len(parts), 3):
-        out.append(html.escape(parts[i]))
+        out.append(_bold(parts[i]))
         if i + 2 < len(parts):
             out.append('<a href="%s">%s</a>' % (html.escape(parts[i + 2], quote=True), html.escape(parts[i + 1])))
     return "".join(out)
