@@ -18,9 +18,10 @@ constexpr int kBins = 32;
 // two, a twentieth session"); at 0.7, 0.93x.
 constexpr float kTraversalCost = 1.5f;
 
-// What testing one top-level primitive costs: two node visits (kTraversalCost each). An analytic shape carries the ray
-// into its object space (18 multiplies) before its own test, a mesh instance does that and walks
-// its BVH, a CSG solid finds every operand's spans; one node visit tests eight boxes at once.
+// What testing one top-level primitive costs: two node visits (kTraversalCost each). An analytic
+// shape carries the ray into its object space (18 multiplies) before its own test, a mesh
+// instance does that and walks its BVH, a CSG solid finds every operand's spans; one node visit
+// tests eight boxes at once.
 // Counted as 1 (a triangle's cost), the SAH kept the Cornell box's five walls and two blocks in
 // one leaf, whose flat boxes a split separates: every ray tested all seven. At 2 the path-traced
 // box renders in 0.70x the time (the same bytes: the closest hit does not depend on the tree; 4

@@ -95,11 +95,12 @@ inline void push_sorted(StackEntry* stack, int base, int& top, StackEntry e) {
 }
 
 // Asks the memory for what a child put on the closest-hit walk's stack holds (a node's cache
-// lines, all of a quad leaf's quads: the second's too, 1.04x on incoherent rays) while the walk goes on with its nearer
-// sibling: incoherent rays spend most of their time waiting for nodes and quads that are not in cache (the stone's
-// incoherent rays 1.24x, camera rays 1.04x; docs/benchmark.md), and the packets' walks
-// (core/accel/bvh_packet.h) for every child they enter (1.01-1.02x). The single ray's any-hit walk,
-// which takes its children in no order, lost 3% with it and goes without.
+// lines, all of a quad leaf's quads: 1.04x on incoherent rays over its first quad alone) while
+// the walk goes on with its nearer sibling: incoherent rays spend most of their time waiting for
+// nodes and quads that are not in cache (the stone's incoherent rays 1.24x, camera rays 1.04x;
+// docs/benchmark.md), and the packets' walks (core/accel/bvh_packet.h) for every child they enter
+// (1.01-1.02x). The single ray's any-hit walk, which takes its children in no order, lost 3% with
+// it and goes without (0.97-1.00x again with three-quad leaves).
 RT_SIMD_INLINE void prefetch(const Bvh& bvh, uint32_t ref) {
   const char* p;
   int lines;
