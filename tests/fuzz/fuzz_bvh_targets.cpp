@@ -17,12 +17,12 @@
 namespace rt::fuzz {
 namespace {
 
-// Whether a hit that brute force found at distance t on `tri` is one the BVH must find too.
-// Moller-Trumbore's rounding error grows with the coordinates involved, so with huge or thin
-// triangles it reports points outside the triangle's own box, which the BVH rightly culls. A hit
-// counts when its point is inside the box by more than that error on every axis (so hits on
-// triangles thinner than the error in some axis are not checked here; tests/core/test_bvh.cpp
-// covers ordinary ones).
+// Whether a hit found at distance t on a primitive whose own box is `box` is one the BVH must find
+// too. Moller-Trumbore's rounding error (and a shape's) grows with the coordinates involved, so
+// with huge or thin triangles it reports points outside the primitive's own box, which the BVH
+// rightly culls. A hit counts when its point is inside the box by more than that error on every
+// axis (so hits on primitives thinner than the error in some axis are not checked here;
+// tests/core/test_bvh.cpp covers ordinary ones).
 bool robust_in(const Aabb& box, const Ray& ray, float t) {
   const Vec3 p = ray.at(t);
   const float margin = 1e-5f * std::max({max_abs_component(box.lo), max_abs_component(box.hi),
@@ -31,15 +31,8 @@ bool robust_in(const Aabb& box, const Ray& ray, float t) {
     if (!(p[a] >= box.lo[a] + margin && p[a] <= box.hi[a] - margin)) return false;
   return true;
 }
+// robust_in for a triangle's own box.
 bool robust_hit(const PackedTriangle& tri, const Ray& ray, float t) { return robust_in(tri.bounds(), ray, t); }
-
-// A packet of the rays, repeated with shorter intervals.
-void fill_packet(const std::vector<Ray>& valid, Ray* packet) {
-  for (int i = 0; i < kPacketSize; ++i) {
-    packet[i] = valid[static_cast<size_t>(i) % valid.size()];
-    if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
-  }
-}
 
 // A packet of the rays, repeated with shorter intervals: each gets its own occluded() answer,
 // and its own closest hit, bit for bit, and its tmax narrowed alike. Except where rounding at
@@ -52,7 +45,10 @@ std::string packets_agree(const Bvh& bvh, const std::vector<Ray>& valid, const R
                           const std::string& what) {
   if (valid.empty()) return "";
   Ray packet[kPacketSize];
-  fill_packet(valid, packet);
+  for (int i = 0; i < kPacketSize; ++i) {
+    packet[i] = valid[static_cast<size_t>(i) % valid.size()];
+    if (static_cast<size_t>(i) >= valid.size()) packet[i].tmax = static_cast<float>(i) * 0.5f;
+  }
   for (int count = 1; count <= kPacketSize; ++count) {
     const unsigned mask = bvh.occluded_packet(packet, count);
     for (int i = 0; i < count; ++i)
