@@ -109,7 +109,7 @@ RT_SIMD_INLINE void prefetch(const Bvh& bvh, uint32_t ref) {
     lines = sizeof(BvhNode) / 64;
   } else if (BvhRef::is_quad_leaf(ref)) {
     p = reinterpret_cast<const char*>(bvh.quads().data() + BvhRef::first(ref));
-    lines = BvhRef::quad_count(ref) * (sizeof(TriangleQuad) / 64);
+    lines = static_cast<int>(BvhRef::quad_count(ref) * (sizeof(TriangleQuad) / 64));
   } else {
     return;
   }
