@@ -351,35 +351,6 @@ TEST_CASE("cli: --exposure and --tone-map, and render.exposure and render.tone_m
   CHECK_THAT(r.output, Catch::Contains("/render/tone_map") && Catch::Contains("aces"));
 }
 
-TEST_CASE("cli: --time stops the path tracer after whole passes, with time enough the same bytes",
-          "[cli][progressive]") {
-  const std::string dir = rt::test::fresh_folder("cli-time");
-  const std::string base = "render scenes/cornell_box.json --width 48 --height 48 --spp 24 -q";
-  REQUIRE(rtcli(base + " -o '" + dir + "/all.png'").code == 0);
-  auto r =
-      rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 24 --time 600 -o '" + dir + "/timed.png'");
-  INFO(r.output);
-  REQUIRE(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("--time 600 s: finished after 3 passes of 8 samples: 24 samples per pixel"));
-  CHECK(rt::test::read_file(dir + "/timed.png") == rt::test::read_file(dir + "/all.png"));
-  // A limit far below one pass: the first pass still completes, a whole image of 8 samples.
-  r = rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -o '" + dir + "/quick.png'");
-  REQUIRE(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("stopped after 1 pass of 8 samples: 8 samples per pixel"));
-  r = rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -q --stats '" + dir +
-            "/s.json' -o '" + dir + "/quick2.png'");
-  REQUIRE(r.code == 0);
-  const auto stats = rt::Json::parse(rt::test::read_file(dir + "/s.json"));
-  CHECK(stats["path"]["time"]["passes"] == 1);
-  CHECK(stats["path"]["time"]["stopped"] == true);
-  CHECK(stats["path"]["mean_samples_per_pixel"] == 8.0);
-  // Whitted renders each pixel once: refused, nothing written.
-  r = rtcli("render scenes/soft_shadows.json --time 2 -o '" + dir + "/w.png'");
-  CHECK(r.code == 2);
-  CHECK_THAT(r.output, Catch::Contains("--time stops the path tracer between passes"));
-  CHECK_FALSE(std::filesystem::exists(dir + "/w.png"));
-}
-
 TEST_CASE("cli: a looping GIF whose last frame shows the first again ends one frame before it", "[cli][animation]") {
   const std::string out = rt::test::fresh_folder("gif-loop");
   const auto scene = [&](int degrees) {

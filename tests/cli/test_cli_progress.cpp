@@ -1,9 +1,12 @@
-// render --progress (a bar, lines for programs such as the Blender add-on, or nothing) and
-// --max-depth (the bounces after the camera ray, as the scene's render.max_depth).
+// render --progress (a bar, lines for programs such as the Blender add-on, or nothing),
+// --max-depth (the bounces after the camera ray, as the scene's render.max_depth) and --time (the
+// path tracer stopped between whole passes).
+#include <filesystem>
 #include <string>
 
 #include <catch2/catch.hpp>
 
+#include "io/json/document.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
 
@@ -65,4 +68,34 @@ TEST_CASE("cli: --max-depth replaces the scene's bounces: 0 traces no reflected 
   const rt::test::Run bad = rt::test::rtcli_bounded("render scenes/reflection.json --max-depth 65");
   CHECK(bad.code == 2);
   CHECK_THAT(bad.output, Catch::Contains("--max-depth: expected a whole number from 0 to 64, found 65"));
+}
+
+TEST_CASE("cli: --time stops the path tracer after whole passes, with time enough the same bytes",
+          "[cli][progressive]") {
+  const std::string dir = rt::test::fresh_folder("cli-time");
+  const std::string base = "render scenes/cornell_box.json --width 48 --height 48 --spp 24 -q";
+  REQUIRE(rt::test::rtcli(base + " -o '" + dir + "/all.png'").code == 0);
+  auto r = rt::test::rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 24 --time 600 -o '" + dir +
+                           "/timed.png'");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("--time 600 s: finished after 3 passes of 8 samples: 24 samples per pixel"));
+  CHECK(rt::test::read_file(dir + "/timed.png") == rt::test::read_file(dir + "/all.png"));
+  // A limit far below one pass: the first pass still completes, a whole image of 8 samples.
+  r = rt::test::rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -o '" + dir +
+                      "/quick.png'");
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("stopped after 1 pass of 8 samples: 8 samples per pixel"));
+  r = rt::test::rtcli("render scenes/cornell_box.json --width 48 --height 48 --spp 4096 --time 0.001 -q --stats '" +
+                      dir + "/s.json' -o '" + dir + "/quick2.png'");
+  REQUIRE(r.code == 0);
+  const auto stats = rt::Json::parse(rt::test::read_file(dir + "/s.json"));
+  CHECK(stats["path"]["time"]["passes"] == 1);
+  CHECK(stats["path"]["time"]["stopped"] == true);
+  CHECK(stats["path"]["mean_samples_per_pixel"] == 8.0);
+  // Whitted renders each pixel once: refused, nothing written.
+  r = rt::test::rtcli("render scenes/soft_shadows.json --time 2 -o '" + dir + "/w.png'");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--time stops the path tracer between passes"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/w.png"));
 }

@@ -1,13 +1,7 @@
 // `rtcli watch` as a user meets it: started on a scene of their own, its page loaded in headless
 // Chromium, the scene edited (saved by rename, as editors do), broken, fixed; bad requests sent
 // to the server; Ctrl-C. The server is asked over HTTP with cpp-httplib's client.
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <atomic>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -18,18 +12,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/watch/orbit.h"
-#include "io/image/png_file.h"
 #include "tests/support/run_rtcli.h"
 #include "tests/support/test_paths.h"
-
-extern char** environ;
+#include "tests/support/watch_process.h"
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using rt::test::WatchProcess;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // A red sphere on a grey floor; `color` replaces the sphere's colour, `extra` goes into the
 // scene's render block.
@@ -57,100 +48,6 @@ void save_by_rename(const std::string& path, const std::string& text) {
   std::ofstream(tmp) << text;
   fs::rename(tmp, path);
 }
-
-class WatchProcess {
- public:
-  WatchProcess(const std::string& scene, const std::string& folder) : out_(folder + "/watch-out.txt") {
-    std::vector<std::string> args = {RTCLI_BINARY, "watch", scene, "--port", "0", "--threads", "2"};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    REQUIRE(posix_spawn(&pid_, RTCLI_BINARY, &actions, nullptr, argv.data(), environ) == 0);
-    posix_spawn_file_actions_destroy(&actions);
-    // The address is the first line it prints.
-    const auto start = Clock::now();
-    while (port_ == 0 && Clock::now() - start < std::chrono::seconds(30)) {
-      const std::string out = rt::test::read_file(out_);
-      const size_t at = out.find("http://127.0.0.1:");
-      if (at != std::string::npos) port_ = std::atoi(out.c_str() + at + 17);
-      else std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    REQUIRE(port_ > 0);
-  }
-  ~WatchProcess() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, nullptr, 0);
-    }
-  }
-  // Ctrl-C; the exit code, -1 if it did not exit within `seconds`.
-  int interrupt(double seconds) {
-    ::kill(pid_, SIGINT);
-    const auto start = Clock::now();
-    int status = 0;
-    while (Clock::now() - start < std::chrono::duration<double>(seconds)) {
-      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-        pid_ = -1;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return -1;
-  }
-  int port() const { return port_; }
-  std::string output() const { return rt::test::read_file(out_); }
-  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/"; }
-
-  httplib::Client client() const {
-    httplib::Client c("127.0.0.1", port_);
-    c.set_connection_timeout(5);
-    c.set_read_timeout(10);
-    return c;
-  }
-  Json status() const {
-    auto c = client();
-    const auto r = c.Get("/status");
-    REQUIRE(r);
-    REQUIRE(r->status == 200);
-    return Json::parse(r->body);
-  }
-  // The status once `done` says so, within 60 s.
-  template <class Done>
-  Json wait_for(Done done, const char* what) const {
-    const auto start = Clock::now();
-    Json s = status();
-    while (!done(s) && Clock::now() - start < std::chrono::seconds(60)) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      s = status();
-    }
-    INFO("waiting for " << what << "; status: " << s.dump());
-    REQUIRE(done(s));
-    return s;
-  }
-  // The picture's centre pixel (the sphere), as the page gets it.
-  std::array<int, 3> centre(const std::string& folder) const {
-    auto c = client();
-    const auto r = c.Get("/image.png?layer=color");
-    REQUIRE(r);
-    REQUIRE(r->status == 200);
-    const std::string path = folder + "/centre.png";
-    std::ofstream(path, std::ios::binary) << r->body;
-    std::string error;
-    const auto png = rt::read_png(path, error);
-    REQUIRE(png);
-    const size_t i = (static_cast<size_t>(png->height / 2 - png->height / 10) * png->width + png->width / 2) * 3;
-    return {png->rgb[i], png->rgb[i + 1], png->rgb[i + 2]};
-  }
-
- private:
-  std::string out_;
-  pid_t pid_ = -1;
-  int port_ = 0;
-};
 
 bool finished(const Json& s, uint64_t scene_version) {
   return !s["image"].is_null() && s["image"]["last"] == true && s["image"]["scene_version"] == scene_version;

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <catch2/catch.hpp>
+
 #include "io/base/reporter.h"
 #include "io/gltf/loader.h"
 
@@ -45,6 +47,17 @@ inline std::optional<ImportedModel> import_gltf(const std::string& path, const s
                                                 const LoadLimits& limits, ImportProblems& out) {
   LimitUsage usage;
   return import_gltf(path, mesh, limits, usage, out);
+}
+
+// The model at `path`, imported whole under the default limits; the test stops on an error and
+// lists the warnings.
+inline ImportedModel imported(const std::string& path) {
+  ImportProblems problems;
+  auto model = import_gltf(path, std::nullopt, LoadLimits{}, problems);
+  INFO(problems.message);
+  REQUIRE(model);
+  for (const std::string& w : problems.warnings) UNSCOPED_INFO(w);
+  return std::move(*model);
 }
 
 }  // namespace rt::test

@@ -65,15 +65,6 @@ std::string quad_file(const std::string& name, const Json& material, const std::
   return rt::test::write_gltf(name, buffer, doc);
 }
 
-ImportedModel import_file(const std::string& path) {
-  rt::test::ImportProblems error;
-  auto model = import_gltf(path, std::nullopt, LoadLimits{}, error);
-  INFO(error.message);
-  REQUIRE(model);
-  for (const std::string& w : error.warnings) UNSCOPED_INFO(w);
-  return std::move(*model);
-}
-
 // A scene with the quad from `gltf` and a big cube behind it (z from -3 to -1), rendered by
 // `integrator`.
 LoadedScene quad_scene(const std::string& name, const std::string& gltf, const std::string& integrator = "whitted") {
@@ -132,7 +123,7 @@ TEST_CASE("glTF materials: factors and extensions by the documented rule", "[glt
         {"KHR_materials_ior", {{"ior", 1.33}}},
         {"KHR_materials_transmission", {{"transmissionFactor", 0.8}}},
         {"KHR_materials_volume", {{"attenuationColor", {0.5, 1.0, 0.25}}, {"attenuationDistance", 2.0}}}}}};
-  const ImportedModel model = import_file(quad_file("factors.gltf", material));
+  const ImportedModel model = rt::test::imported(quad_file("factors.gltf", material));
   REQUIRE(model.materials.size() == 1);
   const Material& m = model.materials[0];
   CHECK(m.pbr.enabled);
@@ -159,7 +150,7 @@ TEST_CASE("glTF materials: KHR_texture_transform and sampler filters on texture 
            {{"KHR_texture_transform",
              {{"offset", {0.5, 0.0}}, {"rotation", M_PI / 2}, {"scale", {2.0, 3.0}}, {"texCoord", 1}}}}}}},
         {"metallicRoughnessTexture", {{"index", 1}}}}}};
-  const ImportedModel model = import_file(quad_file("transform.gltf", material));
+  const ImportedModel model = rt::test::imported(quad_file("transform.gltf", material));
   const Material& m = model.materials[0];
   REQUIRE(m.texture.present());
   const TextureMapping& t = m.texture.mapping;
@@ -246,7 +237,7 @@ TEST_CASE("glTF materials: alpha MASK reads COLOR_0's alpha and the factor's", "
 
 TEST_CASE("glTF materials: BLEND becomes unbent transmission, unlit shows the base colour", "[gltf][materials]") {
   const Json blend = {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.25}}}}};
-  const ImportedModel model = import_file(quad_file("blend.gltf", blend));
+  const ImportedModel model = rt::test::imported(quad_file("blend.gltf", blend));
   CHECK(model.materials[0].transmission == Vec3(0.75f));
   CHECK(model.materials[0].ior == 1.0f);
   CHECK(model.materials[0].cutout.enabled);
@@ -255,7 +246,7 @@ TEST_CASE("glTF materials: BLEND becomes unbent transmission, unlit shows the ba
   // Coverage, not KHR transmission: what is not covered passes untinted, from a red metal too.
   const Json red_metal = {{"alphaMode", "BLEND"},
                           {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 0.25}}, {"metallicFactor", 1.0}}}};
-  const ImportedModel red = import_file(quad_file("blend-red.gltf", red_metal));
+  const ImportedModel red = rt::test::imported(quad_file("blend-red.gltf", red_metal));
   SurfaceInteraction si;
   si.geometric_normal = si.shading_normal = Vec3(0, 0, 1);
   const EvaluatedSurface through = evaluate_surface(red.materials[0], si, Vec3(0, 0, -1), red.textures);
@@ -308,60 +299,6 @@ TEST_CASE("glTF materials: BLEND's vertex alpha is a probability per ray when pa
   Hit a, b;
   Ray r1 = down_z(0.3f, 0.7f), r2 = down_z(0.3f, 0.7f);
   CHECK(path.scene.intersect(r1, a) == path.scene.intersect(r2, b));
-}
-
-TEST_CASE("glTF samples: TextureCoordinateTest's squares land where their labels say", "[gltf][materials][uv]") {
-  if (!rt::test::have_sample_models()) {
-    WARN("../shared/gltf not found: sample-model tests skipped");
-    return;
-  }
-  Diagnostics diags;
-  const auto loaded = load_scene(rt::test::sample_model("TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb"),
-                                 rt::test::load_options(), diags);
-  REQUIRE(loaded);
-  RenderSettings settings = loaded->settings;
-  settings.width = settings.height = 64;
-  Image image;
-  render(loaded->scene, settings, image);
-  // Each square's colour comes from its base colour texture through TEXCOORD_0: yellow top left,
-  // orange top right, blue bottom left, green bottom right (the model's reference screenshot).
-  const Vec3 yellow = image.at(13, 22), orange = image.at(50, 22), blue = image.at(16, 40), green = image.at(48, 40);
-  INFO("yellow " << yellow.x << " " << yellow.y << " " << yellow.z);
-  INFO("orange " << orange.x << " " << orange.y << " " << orange.z);
-  INFO("blue " << blue.x << " " << blue.y << " " << blue.z);
-  INFO("green " << green.x << " " << green.y << " " << green.z);
-  CHECK(std::min(yellow.x, yellow.y) > 4.0f * yellow.z);
-  CHECK(orange.x > 2.0f * orange.y);
-  CHECK(orange.y > 2.0f * orange.z);
-  CHECK(blue.z > 2.0f * std::max(blue.x, blue.y));
-  CHECK(green.y > 2.0f * std::max(green.x, green.z));
-}
-
-TEST_CASE("glTF samples: BoxTextured's image from a file and from the GLB's buffer are the same texture",
-          "[gltf][materials]") {
-  if (!rt::test::have_sample_models()) {
-    WARN("../shared/gltf not found: sample-model tests skipped");
-    return;
-  }
-  const ImportedModel external = import_file(rt::test::sample_model("BoxTextured/glTF/BoxTextured.gltf"));
-  const ImportedModel embedded = import_file(rt::test::sample_model("BoxTextured/glTF-Binary/BoxTextured.glb"));
-  REQUIRE(external.materials.size() == 1);
-  REQUIRE(embedded.materials.size() == 1);
-  const TextureSlot& a = external.materials[0].texture;
-  const TextureSlot& b = embedded.materials[0].texture;
-  REQUIRE(a.present());
-  REQUIRE(b.present());
-  CHECK(a.mapping.filter == TextureFilter::kTrilinear);  // LINEAR_MIPMAP_LINEAR
-  const Texture& ta = external.textures[a.texture];
-  const Texture& tb = embedded.textures[b.texture];
-  REQUIRE(ta.width() == tb.width());
-  REQUIRE(ta.height() == tb.height());
-  for (int y = 0; y < ta.height(); y += 17)
-    for (int x = 0; x < ta.width(); x += 13) CHECK(ta.texel(x, y) == tb.texel(x, y));
-  // The file was read beside the model; the GLB needed no other file.
-  CHECK(std::any_of(external.files.begin(), external.files.end(),
-                    [](const std::string& f) { return f.find("CesiumLogoFlat.png") != std::string::npos; }));
-  CHECK(embedded.files.size() == 1);
 }
 
 TEST_CASE(
