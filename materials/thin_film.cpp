@@ -54,7 +54,7 @@ Vec3 thin_film_fresnel(float outside_ior, float film_ior, float cos_theta, float
   const float phi21 = kPi - phi12;
 
   // The second (film to base): the base's index from its F0, per channel.
-  Vec3 r23, phi23;
+  Vec3 r23(0.0f), phi23(0.0f);  // every channel set below (zeroed for GCC's flow analysis)
   for (int c = 0; c < 3; ++c) {
     const float root = std::sqrt(std::clamp(base_f0[c], 0.0f, 0.9999f));
     const float base_ior = (1.0f + root) / (1.0f - root);
