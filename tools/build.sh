@@ -12,7 +12,7 @@ dir=build
 pgo=0
 while [ $# -gt 0 ]; do
   case "$1" in
-    --dir) dir="$2"; shift 2 ;;
+    --dir) dir="${2:?tools/build.sh: --dir needs a folder}"; shift 2 ;;
     --pgo) pgo=1; shift ;;
     *) break ;;
   esac
