@@ -2,7 +2,9 @@
 // a transform. The top-level BVH holds instances next to analytic shapes and CSG solids; a ray that reaches one
 // is moved into object space (its direction not renormalised, so t means the same in both spaces)
 // and handed to the mesh's BVH. A mesh used by many nodes, or by every frame of an animation, is
-// stored and indexed once.
+// stored and indexed once. A flattened instance is walked another way: its triangles, moved to
+// world space, are the top level's own (core/flatten_instances.h), and a hit on one is named as
+// the instance's all the same.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +24,9 @@ struct MeshInstance {
   uint32_t mesh = 0;                    // which mesh of the scene's assets, for surface records
   uint32_t material = 0;                // the placement's material (a mesh can be placed with several)
   const AlphaCutout* cutout = nullptr;  // an alpha-masked or single-sided material's test; null: solid
+  // Its triangles are in the top level's own list, in world space (PrimitiveSet::owners names
+  // them as this instance's): the top-level tree holds them, not the instance.
+  bool flattened = false;
 };
 
 }  // namespace rt

@@ -1,5 +1,7 @@
 #include "core/scene_graph.h"
 
+#include "core/flatten_instances.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -106,7 +108,7 @@ PrimitiveSet SceneGraph::place(const Pose& pose, std::vector<PlacementIssue>* is
   return top;
 }
 
-Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuildOptions& options) const {
+Scene SceneGraph::at(const Pose& pose, PrimitiveSet placed, const BvhBuildOptions& options) const {
   const std::vector<Mat4>& world = pose.world;  // for the camera and lights on nodes
   Scene scene;
   scene.assets = assets;
@@ -115,6 +117,7 @@ Scene SceneGraph::at(const Pose& pose, const PrimitiveSet& placed, const BvhBuil
   scene.camera = camera_at(pose);
   for (const LightPlacement& l : lights)
     scene.lights.push_back(l.node >= 0 ? transform_light(l.light, world[static_cast<size_t>(l.node)]) : l.light);
+  flatten_instances(placed, assets->meshes);
   scene.bvh = Bvh(placed, options);
   scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
                                   [](const Material& m) { return m.transmissive(); });

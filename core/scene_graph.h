@@ -98,8 +98,9 @@ struct SceneGraph {
   PrimitiveSet place(const Pose& pose, std::vector<PlacementIssue>* issues = nullptr) const;
   // The camera where the pose puts it.
   Camera camera_at(const Pose& pose) const;
-  // The frame: the placed primitives in a BVH, the camera and lights where the pose puts them.
-  Scene at(const Pose& pose, const PrimitiveSet& placed, const BvhBuildOptions& options) const;
+  // The frame: the placed primitives in a BVH (the instances it can, flattened:
+  // core/flatten_instances.h), the camera and lights where the pose puts them.
+  Scene at(const Pose& pose, PrimitiveSet placed, const BvhBuildOptions& options) const;
   Scene at(const Pose& pose, const BvhBuildOptions& options) const { return at(pose, place(pose), options); }
 };
 

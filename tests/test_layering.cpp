@@ -19,12 +19,25 @@ namespace {
 // transforms, meshes and their placements, the camera); textures, shapes and animation tracks;
 // CSG (span lists and the solid the BVH holds); the BVH; the scene's shared assets and settings;
 // lights (emissive surfaces are found through the assets); the scene itself, its graph and frames.
+// Flattening mesh placements into the top level's triangles sits with the assets it reads.
 // Denoisers (images in, an image out) sit on the basics alone.
 // The top-level files above the basics are named here one by one.
-const std::set<std::string> kCore{
-    "core/",       "core/texture/",     "core/shapes/",      "core/animation/",        "core/csg/",
-    "core/accel/", "core/scene_assets", "core/material",     "core/render_settings.h", "core/lights/",
-    "core/scene.", "core/scene_graph",  "core/csg_template", "core/frame_scenes",      "core/denoise/"};
+const std::set<std::string> kCore{"core/",
+                                  "core/texture/",
+                                  "core/shapes/",
+                                  "core/animation/",
+                                  "core/csg/",
+                                  "core/accel/",
+                                  "core/scene_assets",
+                                  "core/material",
+                                  "core/render_settings.h",
+                                  "core/lights/",
+                                  "core/scene.",
+                                  "core/scene_graph",
+                                  "core/csg_template",
+                                  "core/frame_scenes",
+                                  "core/denoise/",
+                                  "core/flatten_instances"};
 
 // `own` and the given layers.
 std::set<std::string> with(std::set<std::string> own, const std::set<std::string>& below) {
@@ -52,6 +65,9 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
       {"core/scene_assets",
        {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material", "core/scene_assets"}},
       {"core/material", {"core/", "core/texture/", "core/material"}},
+      {"core/flatten_instances",
+       {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material", "core/scene_assets",
+        "core/flatten_instances"}},
       {"core/render_settings.h", {"core/", "core/texture/"}},
       {"core/lights/",
        {"core/", "core/texture/", "core/shapes/", "core/csg/", "core/accel/", "core/material", "core/scene_assets",

@@ -144,7 +144,8 @@ class Bvh {
 
   // Primitive ids as in the PrimitiveSet it was built from (its triangles are not kept: the
   // BVH holds its own copy in leaf order). A hit on an instance has hit.prim = the instance's
-  // id here and hit.part = the triangle's index in its mesh.
+  // id here and hit.part = the triangle's index in its mesh, whether the instance is walked as
+  // one or flattened (its triangles the tree's own: every query names their hits so).
   uint32_t primitive_count() const { return ranges_.end; }
   PrimitiveKind kind(uint32_t id) const { return ranges_.kind(id); }
   const AnalyticShape& shape(uint32_t id) const { return shapes_[id - ranges_.shape_begin]; }
@@ -153,6 +154,15 @@ class Bvh {
   const std::vector<AnalyticShape>& shapes() const { return shapes_; }
   const std::vector<MeshInstance>& instances() const { return instances_; }
   const std::vector<CsgObject>& csgs() const { return csgs_; }
+  // A hit on a flattened instance's triangle named as the instance's (prim: the instance's id,
+  // part: the triangle in its mesh); any other hit is left as it is. The queries call it.
+  void relabel(Hit& hit) const {
+    if (hit.prim < owners_.size()) {
+      const TriangleOwner& o = owners_[hit.prim];
+      hit.part = o.triangle;
+      hit.prim = ranges_.instance_begin + o.instance;
+    }
+  }
   const FillVector<BvhNode>& nodes() const { return nodes_; }
   // The instruction set whose traversal intersect() and occluded() run.
   Isa isa() const { return kernels_->isa; }
@@ -196,6 +206,7 @@ class Bvh {
   std::vector<AnalyticShape> shapes_;
   std::vector<MeshInstance> instances_;
   std::vector<CsgObject> csgs_;
+  std::vector<TriangleOwner> owners_;  // PrimitiveSet::owners: empty, or one per triangle
   FillVector<BvhNode> nodes_;
   uint32_t root_ = 0;  // BvhRef: node 0, or a single leaf for tiny scenes
   Aabb bounds_;

@@ -6,6 +6,7 @@
 //    and the largest nodes bin on all spare threads, so the tree is identical whatever the thread
 //    count.
 // 2. A collapse to kBvhWidth-wide nodes (core/accel/bvh_collapse.cpp).
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <memory>
@@ -243,10 +244,18 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
       ranges_(prims.ranges()),
       shapes_(prims.shapes),
       instances_(prims.instances),
-      csgs_(prims.csgs) {
-  const uint32_t n = prims.size();
+      csgs_(prims.csgs),
+      owners_(prims.owners) {
+  const uint32_t total = prims.size();
+  if (total > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^26)");
+  // The ids the tree holds: all of them, but for flattened instances, whose triangles are there
+  // in their place. Empty: every id, in order (a mesh's BVH, or a top level with none flattened).
+  std::vector<uint32_t> held;
+  if (std::any_of(instances_.begin(), instances_.end(), [](const MeshInstance& i) { return i.flattened; }))
+    for (uint32_t id = 0; id < total; ++id)
+      if (prims.kind(id) != PrimitiveKind::kInstance || !prims.instance(id).flattened) held.push_back(id);
+  const uint32_t n = held.empty() ? total : static_cast<uint32_t>(held.size());
   if (n == 0) return;
-  if (n > BvhRef::kMaxFirst) throw std::length_error("more primitives than the BVH can address (2^26)");
   // The build records are written on all threads, each worker a contiguous share, so that their
   // pages are first touched in parallel; the root's boxes are merged from the workers' own (min
   // and max: the same whatever the split).
@@ -257,12 +266,13 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   const unsigned threads = n < kThreadedBuildMin ? 1u : std::max(1u, options.threads);
   std::unique_ptr<BuildPrim[]> records(new BuildPrim[n]);  // not value-initialised: written once below
   std::vector<Range> shares(threads);
-  std::atomic<uint32_t> bad{n};
+  std::atomic<uint32_t> bad{total};
   run_workers(threads, [&](unsigned w) {
     Range share;  // on this thread's stack: written to `shares` once, as neighbours there share cache lines
     const uint32_t begin = static_cast<uint32_t>(uint64_t{n} * w / threads);
     const uint32_t end = static_cast<uint32_t>(uint64_t{n} * (w + 1) / threads);
-    for (uint32_t id = begin; id < end; ++id) {
+    for (uint32_t i = begin; i < end; ++i) {
+      const uint32_t id = held.empty() ? i : held[i];
       const Aabb box = prims.bounds(id);
       // Callers check their input (io reports a located error); this is the last line of defence.
       const bool finite_triangle = prims.kind(id) != PrimitiveKind::kTriangle || prims.triangles[id].is_finite();
@@ -272,13 +282,13 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
         }
         return;
       }
-      const BuildPrim& p = records[id] = BuildPrim::make(box, id);
+      const BuildPrim& p = records[i] = BuildPrim::make(box, id);
       share.bounds.extend(p.lo, p.hi);
       share.centroids.extend(p.centroid(), p.centroid());
     }
     shares[w] = share;
   });
-  if (bad.load() < n)
+  if (bad.load() < total)
     throw std::invalid_argument("primitive " + std::to_string(bad.load()) + " has bounds that are not finite");
   Range root{0, n, {}, {}};
   for (const Range& share : shares) {
@@ -287,7 +297,12 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   }
   std::vector<BinaryNode> binary;
   binary.reserve(2 * static_cast<size_t>(n));  // the most a tree of n leaves can have: never regrown
-  const uint32_t block = prims.shapes.empty() && prims.instances.empty() && prims.csgs.empty() ? 4 : 1;  // quads
+  // Triangles alone (a mesh's, or a top level of flattened instances only) are counted four a
+  // quad leaf.
+  const bool triangles_only =
+      prims.shapes.empty() && prims.csgs.empty() &&
+      std::all_of(instances_.begin(), instances_.end(), [](const MeshInstance& i) { return i.flattened; });
+  const uint32_t block = triangles_only ? 4 : 1;
   BinaryBuilder(records.get(), threads - 1, block).build(root, 0, binary);
   bounds_ = root.bounds.aabb();
   binary_sah_cost_ = binary_sah_cost(binary, block);

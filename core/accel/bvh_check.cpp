@@ -81,8 +81,16 @@ std::string Bvh::check_structure() const {
     }
     if (children < 2) return "node " + std::to_string(item.ref) + " has fewer than two children";
   }
-  for (uint32_t id = 0; id < n; ++id)
-    if (seen[id] != 1) return "primitive " + std::to_string(id) + " is in no leaf";
+  for (uint32_t id = 0; id < n; ++id) {
+    // A flattened instance is in no leaf: its triangles are, in its place.
+    const bool flattened = kind(id) == PrimitiveKind::kInstance && instance(id).flattened;
+    if (flattened && seen[id] != 0) return "flattened instance " + std::to_string(id) + " is in a leaf";
+    if (!flattened && seen[id] != 1) return "primitive " + std::to_string(id) + " is in no leaf";
+  }
+  if (!owners_.empty() && owners_.size() != triangle_count()) return "not one owner a triangle";
+  for (const TriangleOwner& o : owners_)
+    if (o.instance >= instances_.size() || !instances_[o.instance].flattened)
+      return "a triangle owned by an instance that is not flattened";
   if (used_slots != slots_.size()) return "slots that no leaf refers to";
   return "";
 }

@@ -135,6 +135,7 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
     return false;
   });
   settle(ray, hit, found);
+  if (found) bvh.relabel(hit);  // named by its instance, as the order above did not need
   return found;
 }
 
@@ -350,7 +351,10 @@ unsigned nearest_shape_packet(const Bvh& bvh, uint32_t id, unsigned lanes, Ray* 
       ray_lanes.narrow();
       found |= nearest_in_leaf_packet(bvh, leaf, lanes, quad_rays, rays, hits, ray_lanes);
     });
-    for (unsigned m = found; m; m &= m - 1) settle(rays[__builtin_ctz(m)], hits[__builtin_ctz(m)], true);
+    for (unsigned m = found; m; m &= m - 1) {
+      settle(rays[__builtin_ctz(m)], hits[__builtin_ctz(m)], true);
+      bvh.relabel(hits[__builtin_ctz(m)]);
+    }
     return found;
   }
 #endif

@@ -228,13 +228,19 @@ bool for_each_primitive_hit(const Bvh& bvh, const Ray& ray, Visitor& visit) {
 // (relabelled as the instance's: prim = instance id, part = triangle), until the visitor says stop.
 template <class Visitor>
 bool visit_leaf_crossings(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, const Ray& ray, Visitor& visit) {
-  if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, ray, visit);
+  // A triangle's crossing as its flattened instance's (Bvh::relabel).
+  auto own = [&](const Hit& h) {
+    Hit g = h;
+    bvh.relabel(g);
+    return visit(static_cast<const Hit&>(g));
+  };
+  if (BvhRef::is_quad_leaf(leaf)) return visit_quad_crossings(bvh, leaf, quad_ray, ray, own);
   const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
     bool stop = false;
     switch (bvh.kind(s.id)) {
-      case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(s.triangle, s.id, ray, visit); break;
+      case PrimitiveKind::kTriangle: stop = visit_triangle_crossing(s.triangle, s.id, ray, own); break;
       case PrimitiveKind::kShape: stop = visit_shape_crossings(bvh.shape(s.id), s.id, ray, visit); break;
       case PrimitiveKind::kCsg: stop = visit_csg_crossings(bvh.csg(s.id), s.id, ray, visit); break;
       case PrimitiveKind::kInstance: {

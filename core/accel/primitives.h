@@ -1,7 +1,8 @@
 // Everything a ray can hit, addressed by one 32-bit id: triangles first, then analytic shapes,
 // then mesh instances, then CSG solids. Dispatch is a switch on the id's kind (PrimitiveRanges,
 // a few comparisons), not a virtual call. A mesh's own BVH holds only triangles; a scene's
-// top-level BVH holds shapes, instances and CSG solids.
+// top-level BVH holds shapes, instances and CSG solids, and the world-space triangles of its
+// flattened instances (core/flatten_instances.h), each owned by its instance.
 #pragma once
 
 #include <cmath>
@@ -30,11 +31,21 @@ struct PrimitiveRanges {
   }
 };
 
+// The instance a top-level triangle stands in for: its index in PrimitiveSet::instances and the
+// triangle's index in the instance's mesh.
+struct TriangleOwner {
+  uint32_t instance = 0;
+  uint32_t triangle = 0;
+};
+
 struct PrimitiveSet {
   std::vector<PackedTriangle> triangles;  // ids [0, triangles.size())
-  std::vector<AnalyticShape> shapes;      // then the shapes,
-  std::vector<MeshInstance> instances;    // the instances,
-  std::vector<CsgObject> csgs;            // and the CSG solids
+  // Empty, or one per triangle: whose it is, when the triangles are flattened instances' (a
+  // top level's). A BVH names a hit on one as its instance's (Bvh::relabel).
+  std::vector<TriangleOwner> owners;
+  std::vector<AnalyticShape> shapes;    // then the shapes,
+  std::vector<MeshInstance> instances;  // the instances,
+  std::vector<CsgObject> csgs;          // and the CSG solids
 
   PrimitiveRanges ranges() const {
     const auto t = static_cast<uint32_t>(triangles.size()), s = static_cast<uint32_t>(shapes.size());

@@ -164,7 +164,7 @@ class Builder {
     // timeline's first is posed anew, and the first frame's placement is not built at all.
     const int frame = options_.frame.value_or(g.timeline.first_frame);
     Scene scene = !options_.build_bvh               ? g.at(rest, PrimitiveSet{}, bvh_options_)
-                  : frame == g.timeline.first_frame ? g.at(rest, placed, bvh_options_)
+                  : frame == g.timeline.first_frame ? g.at(rest, std::move(placed), bvh_options_)
                                                     : g.at(g.pose(frame), bvh_options_);
     if (!diags_.has_errors()) {  // a scene with errors (a node left out) would get false alarms
       warn_camera_inside(g, rest, scene.camera.position, pointers_, report_);
