@@ -25,7 +25,6 @@ inline constexpr size_t kFlattenedTriangles = size_t{1} << 20;
 
 // Appends the world-space triangles of top's instances that qualify to top.triangles, with their
 // owners, and marks those instances flattened; in placement order, while `budget` triangles last.
-void flatten_instances(PrimitiveSet& top, const std::vector<MeshGeometry>& meshes,
-                       size_t budget = kFlattenedTriangles);
+void flatten_instances(PrimitiveSet& top, const std::vector<MeshGeometry>& meshes, size_t budget = kFlattenedTriangles);
 
 }  // namespace rt

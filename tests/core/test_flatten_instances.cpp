@@ -47,9 +47,11 @@ void build(FlatScene& s) {
   s.cutout.mesh = &mesh;
   s.cutout.masked = true;  // no vertex alpha: every triangle kept
   const Bvh& b = s.meshes[0].bvh;
-  s.top.instances.push_back(place_mesh(b, *make_transform(compose_trs(Vec3(5, 0, 0), Vec3(10, 30, 0), Vec3(1.3f))), 0, 0));
+  s.top.instances.push_back(
+      place_mesh(b, *make_transform(compose_trs(Vec3(5, 0, 0), Vec3(10, 30, 0), Vec3(1.3f))), 0, 0));
   s.top.instances.push_back(place_mesh(b, *make_transform(compose_trs(Vec3(-5, 1, 0), Vec3(0), Vec3(-1, 1, 1))), 0, 0));
-  s.top.instances.push_back(place_mesh(b, *make_transform(compose_trs(Vec3(0, -5, 2), Vec3(0), Vec3(1))), 0, 0, &s.cutout));
+  s.top.instances.push_back(
+      place_mesh(b, *make_transform(compose_trs(Vec3(0, -5, 2), Vec3(0), Vec3(1))), 0, 0, &s.cutout));
   AnalyticShape sphere;
   sphere.kind = ShapeKind::kSphere;
   sphere.transform = *make_transform(compose_trs(Vec3(0, 4, 0), Vec3(0), Vec3(1.5f)));
@@ -119,8 +121,7 @@ TEST_CASE("flatten_instances: a placement past the budget, or reaching infinity,
   wide[0].mesh.indices = {0, 1, 2};
   wide[0].bvh = Bvh(make_triangle_set(wide[0].mesh), BvhBuildOptions{1, Isa::kSse});
   PrimitiveSet far;
-  far.instances.push_back(
-      place_mesh(wide[0].bvh, *make_transform(compose_trs(Vec3(0), Vec3(0), Vec3(1e38f))), 0, 0));
+  far.instances.push_back(place_mesh(wide[0].bvh, *make_transform(compose_trs(Vec3(0), Vec3(0), Vec3(1e38f))), 0, 0));
   REQUIRE(is_finite(far.instances[0].bounds.hi));
   flatten_instances(far, wide);
   CHECK_FALSE(far.instances[0].flattened);
@@ -148,8 +149,8 @@ TEST_CASE("flatten_instances: every query finds what walking the instances finds
       if (got_b && flat.kind(hb.prim) == PrimitiveKind::kInstance) ++instance_hits;
       // The same primitive and triangle, the distance within rounding; or a ray that grazes an
       // edge, where rounding decides which of two triangles it meets.
-      if (got_a != got_b || (got_a && (named(walked, ha) != named(flat, hb) ||
-                                       std::fabs(ha.t - hb.t) > 1e-4f * std::max(1.0f, ha.t))))
+      if (got_a != got_b ||
+          (got_a && (named(walked, ha) != named(flat, hb) || std::fabs(ha.t - hb.t) > 1e-4f * std::max(1.0f, ha.t))))
         ++other;
       if (walked.occluded(r) != flat.occluded(r)) ++blocked_apart;
       // Each crossing, by name: the same set.
