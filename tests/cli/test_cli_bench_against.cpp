@@ -75,3 +75,24 @@ TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin
   CHECK(bad.code != 0);
   CHECK_THAT(bad.output, Catch::Contains("material 'floor': [") && Catch::Contains("] have no twin"));
 }
+
+TEST_CASE("tools/cycles/speed.py: the Blender fixture with one light and no bump map, to see where its time goes",
+          "[cli][bench][blender]") {
+  if (rt::test::run_shell("command -v blender >/dev/null 2>&1").code != 0) {
+    WARN("blender is not installed (tools/install-deps.sh --tests installs it): skipped");
+    return;
+  }
+  // Debian's Python: one that pyenv or a venv puts first on PATH hides python3-numpy from the
+  // glTF exporter that builds the fixture in Blender.
+  const rt::test::Run r = rt::test::run_shell("/usr/bin/python3 '" + rt::test::source_path("tools/cycles/speed.py") +
+                                              "' fixture --fixture-light Sun --fixture-bumps off --size 48 --samples "
+                                              "4,1024 --runs 1 --rtcli '" +
+                                              RTCLI_BINARY + "' 2>&1");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("| fixture (Sun alone, no bump map) | ") && Catch::Contains("× | "));
+  const rt::test::Run bad = rt::test::run_shell("python3 '" + rt::test::source_path("tools/cycles/speed.py") +
+                                                "' fixture --fixture-light Moon 2>&1");
+  CHECK(bad.code != 0);
+  CHECK_THAT(bad.output, Catch::Contains("invalid choice: 'Moon'"));
+}
