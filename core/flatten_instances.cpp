@@ -8,10 +8,14 @@ void flatten_instances(PrimitiveSet& top, const std::vector<MeshGeometry>& meshe
   // Loose triangles of the set's own would have no owner to line up with.
   if (top.owners.size() != top.triangles.size()) return;
   size_t left = budget - std::min(budget, top.triangles.size());
+  std::vector<uint32_t> placements(meshes.size(), 0);
+  for (const MeshInstance& instance : top.instances)
+    if (instance.mesh < meshes.size()) ++placements[instance.mesh];
   std::vector<PackedTriangle> world;
   for (size_t k = 0; k < top.instances.size(); ++k) {
     MeshInstance& instance = top.instances[k];
-    if (instance.flattened || instance.cutout || instance.mesh >= meshes.size()) continue;
+    if (instance.flattened || instance.cutout || instance.mesh >= meshes.size() || placements[instance.mesh] != 1)
+      continue;
     const MeshGeometry& geometry = meshes[instance.mesh];
     const TriangleMesh& mesh = geometry.mesh;
     const size_t count = mesh.triangle_count();

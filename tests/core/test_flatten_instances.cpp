@@ -24,17 +24,17 @@ Vec3 random_in(Rng& rng, float lo, float hi) {
   return Vec3(lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float(), lo + (hi - lo) * rng.next_float());
 }
 
-// One mesh of 600 small triangles, placed three times (turned and scaled; mirrored; behind an
-// alpha cutout that keeps every triangle), beside a sphere.
+// Three meshes of the same 600 small triangles, each placed once (turned and scaled; mirrored;
+// behind an alpha cutout that keeps every triangle), beside a sphere.
 struct FlatScene {
-  std::vector<MeshGeometry> meshes = std::vector<MeshGeometry>(1);
+  std::vector<MeshGeometry> meshes = std::vector<MeshGeometry>(3);
   AlphaCutout cutout;
   PrimitiveSet top;
 };
 
 void build(FlatScene& s) {
   Rng rng(3);
-  TriangleMesh& mesh = s.meshes[0].mesh;
+  TriangleMesh mesh;
   for (int i = 0; i < 600; ++i) {
     const Vec3 c = random_in(rng, -3.0f, 3.0f);
     for (int k = 0; k < 3; ++k) {
@@ -42,16 +42,19 @@ void build(FlatScene& s) {
       mesh.positions.push_back(c + 0.4f * random_in(rng, -1, 1));
     }
   }
-  s.meshes[0].bvh = Bvh(make_triangle_set(mesh), BvhBuildOptions{1, Isa::kSse});
-  s.meshes[0].bounds = s.meshes[0].bvh.bounds();
-  s.cutout.mesh = &mesh;
+  for (MeshGeometry& g : s.meshes) {
+    g.mesh = mesh;
+    g.bvh = Bvh(make_triangle_set(mesh), BvhBuildOptions{1, Isa::kSse});
+    g.bounds = g.bvh.bounds();
+  }
+  s.cutout.mesh = &s.meshes[2].mesh;
   s.cutout.masked = true;  // no vertex alpha: every triangle kept
-  const Bvh& b = s.meshes[0].bvh;
   s.top.instances.push_back(
-      place_mesh(b, *make_transform(compose_trs(Vec3(5, 0, 0), Vec3(10, 30, 0), Vec3(1.3f))), 0, 0));
-  s.top.instances.push_back(place_mesh(b, *make_transform(compose_trs(Vec3(-5, 1, 0), Vec3(0), Vec3(-1, 1, 1))), 0, 0));
+      place_mesh(s.meshes[0].bvh, *make_transform(compose_trs(Vec3(5, 0, 0), Vec3(10, 30, 0), Vec3(1.3f))), 0, 0));
   s.top.instances.push_back(
-      place_mesh(b, *make_transform(compose_trs(Vec3(0, -5, 2), Vec3(0), Vec3(1))), 0, 0, &s.cutout));
+      place_mesh(s.meshes[1].bvh, *make_transform(compose_trs(Vec3(-5, 1, 0), Vec3(0), Vec3(-1, 1, 1))), 1, 0));
+  s.top.instances.push_back(
+      place_mesh(s.meshes[2].bvh, *make_transform(compose_trs(Vec3(0, -5, 2), Vec3(0), Vec3(1))), 2, 0, &s.cutout));
   AnalyticShape sphere;
   sphere.kind = ShapeKind::kSphere;
   sphere.transform = *make_transform(compose_trs(Vec3(0, 4, 0), Vec3(0), Vec3(1.5f)));
@@ -98,7 +101,7 @@ TEST_CASE("flatten_instances: the placements without a cutout become world-space
   CHECK(s.top.owners[1199].instance == 1);
   CHECK(s.top.owners[1199].triangle == 599);
   // The second placement's last triangle, moved to the world by hand.
-  const TriangleMesh& mesh = s.meshes[0].mesh;
+  const TriangleMesh& mesh = s.meshes[1].mesh;
   const Vec3 v = s.top.instances[1].transform.point_to_world(mesh.positions[mesh.indices[3 * 599]]);
   CHECK(s.top.triangles[1199].v0 == v);
   const Bvh bvh(s.top, BvhBuildOptions{2, best_isa()});
@@ -106,13 +109,24 @@ TEST_CASE("flatten_instances: the placements without a cutout become world-space
   CHECK(bvh.instances().size() == 3);  // still listed: surfaces and materials are read through them
 }
 
-TEST_CASE("flatten_instances: a placement past the budget, or reaching infinity, stays an instance", "[bvh][flatten]") {
+TEST_CASE(
+    "flatten_instances: a mesh placed twice, a placement past the budget or one reaching infinity stays an instance",
+    "[bvh][flatten]") {
   FlatScene s;
   build(s);
   flatten_instances(s.top, s.meshes, 1000);  // room for one placement of 600
   CHECK(s.top.instances[0].flattened);
   CHECK_FALSE(s.top.instances[1].flattened);
   CHECK(s.top.triangles.size() == 600);
+
+  FlatScene twice;
+  build(twice);
+  twice.top.instances[1].mesh = 0;  // the first mesh placed again: stored and walked once
+  twice.top.instances[1].bvh = &twice.meshes[0].bvh;
+  flatten_instances(twice.top, twice.meshes);
+  CHECK_FALSE(twice.top.instances[0].flattened);
+  CHECK_FALSE(twice.top.instances[1].flattened);
+  CHECK(twice.top.triangles.empty());
 
   // A triangle 6 wide, scaled by 1e38: its vertices and box stay below the float limit, its
   // world-space edge does not. Its own walk, in object space, stays.

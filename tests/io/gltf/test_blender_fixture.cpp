@@ -120,3 +120,27 @@ TEST_CASE("Blender fixture: a JSON scene makes the Blender material glass by nam
   CHECK(used.size() == 3);                 // and the file's own Floor
   CHECK(loaded.scene.lights.size() == 3);  // the scene has none of its own: the file's
 }
+
+TEST_CASE("Blender fixture: its meshes, each placed once, are flattened into the top level and hit by name",
+          "[blender][gltf][flatten]") {
+  Diagnostics diags;
+  const auto loaded = load_scene(fixture(), rt::test::load_options(), diags);
+  REQUIRE(loaded);
+  const Scene& scene = loaded->scene;
+  REQUIRE(scene.bvh.instances().size() == 3);
+  for (const MeshInstance& i : scene.bvh.instances()) CHECK(i.flattened);
+  CHECK(scene.bvh.triangle_count() == 2 + 12 + 960);  // the floor, the box, the ball
+  CHECK(scene.bvh.check_structure().empty());
+  // Straight down between the box and the ball: the floor, named as its placement, shaded by its
+  // own mesh's record at y = 0.
+  Ray down;
+  down.origin = Vec3(0.0f, 3.0f, 0.0f);
+  down.direction = Vec3(0.0f, -1.0f, 0.0f);
+  Hit hit;
+  REQUIRE(scene.intersect(down, hit));
+  REQUIRE(scene.bvh.kind(hit.prim) == PrimitiveKind::kInstance);
+  CHECK(hit.part < 2);
+  CHECK(scene.materials()[scene.material_of(hit)].bump.height.present());  // the Floor's
+  CHECK(hit.t == Approx(3.0f));
+  CHECK(scene.surface(down, hit).position.y == Approx(0.0f).margin(1e-5));
+}
