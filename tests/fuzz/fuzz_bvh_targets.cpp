@@ -10,6 +10,7 @@
 #include "core/accel/brute_force.h"
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_traversal.h"
+#include "core/flatten_instances.h"
 #include "core/shapes/analytic_shape.h"
 #include "core/transform.h"
 #include "tests/fuzz/fuzz_targets.h"
@@ -101,6 +102,52 @@ std::string shape_packets(const float* v, size_t floats, unsigned threads, const
     return robust_in(world_bounds(bvh.shape(prim)), ray, t);
   };
   return packets_agree(bvh, valid, robust, "shapes: ");
+}
+
+// The triangles' corners as one mesh, placed once where it is and flattened into a top level
+// (core/flatten_instances.h): the same triangles in the same order as the mesh's own BVH, so every
+// query answers as that one does, under the instance's name (prim: the instance, part: the
+// triangle). The identity placement may turn a vertex's -0 into +0: distances and barycentrics
+// compare as floats.
+std::string flattened_agree(const PrimitiveSet& prims, Isa isa, unsigned threads, const std::vector<Ray>& valid) {
+  if (prims.triangles.empty() || valid.empty()) return "";
+  std::vector<MeshGeometry> meshes(1);
+  TriangleMesh& mesh = meshes[0].mesh;
+  for (const PackedTriangle& t : prims.triangles) {
+    for (const Vec3 p : {t.v0, t.v0 + t.e1, t.v0 + t.e2}) {
+      mesh.indices.push_back(static_cast<uint32_t>(mesh.positions.size()));
+      mesh.positions.push_back(p);
+    }
+  }
+  const PrimitiveSet own = make_triangle_set(mesh);
+  for (const PackedTriangle& t : own.triangles)
+    if (!t.is_finite()) return "";  // a corner or edge that overflows once made from the edges
+  meshes[0].bvh = Bvh(own, BvhBuildOptions{threads, isa});
+  const Bvh& reference = meshes[0].bvh;
+  PrimitiveSet top;
+  top.instances.push_back(place_mesh(reference, Transform{}, 0, 0));
+  flatten_instances(top, meshes);
+  if (!top.instances[0].flattened) return "";  // past the budget, or not finite in the world
+  const Bvh flat(top, BvhBuildOptions{threads, isa});
+  if (std::string problem = flat.check_structure(); !problem.empty()) return "flattened BVH: " + problem;
+  for (const Ray& original : valid) {
+    Ray a = original, b = original;
+    Hit ha, hb;
+    const bool found_a = reference.intersect(a, ha), found_b = flat.intersect(b, hb);
+    if (found_a != found_b) return "a flattened mesh and its own BVH disagree on a hit";
+    if (found_a && (hb.prim != flat.primitive_count() - 1 || hb.part != ha.prim || ha.t != hb.t || ha.b1 != hb.b1 ||
+                    ha.b2 != hb.b2))
+      return "a flattened mesh's hit is not its own BVH's, under the instance's name";
+    if (reference.occluded(original) != flat.occluded(original))
+      return "a flattened mesh and its own BVH disagree on occlusion";
+    std::vector<std::pair<uint32_t, float>> seen_reference, seen_flat;
+    reference.for_each_hit(original, [&](const Hit& h) { return seen_reference.emplace_back(h.prim, h.t), false; });
+    flat.for_each_hit(original, [&](const Hit& h) { return seen_flat.emplace_back(h.part, h.t), false; });
+    std::sort(seen_reference.begin(), seen_reference.end());
+    std::sort(seen_flat.begin(), seen_flat.end());
+    if (seen_reference != seen_flat) return "a flattened mesh and its own BVH saw different crossings";
+  }
+  return "";
 }
 
 }  // namespace
@@ -195,6 +242,7 @@ std::string bvh_build(const uint8_t* data, size_t size) {
   }
   const auto robust = [&](uint32_t prim, const Ray& ray, float t) { return robust_hit(prims.triangles[prim], ray, t); };
   if (std::string problem = packets_agree(bvh, valid, robust, ""); !problem.empty()) return problem;
+  if (std::string problem = flattened_agree(prims, bvh.isa(), threads, valid); !problem.empty()) return problem;
   return shape_packets(values.data(), triangle_floats, threads, valid);
 }
 
