@@ -1,5 +1,7 @@
 #include "core/flatten_instances.h"
 
+#include <algorithm>
+
 #include "core/accel/bvh.h"
 
 namespace rt {

@@ -31,7 +31,7 @@ SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit, Texcoords texc
       orient_csg_surface(si, ray, hit);
       return si;
     }
-    case PrimitiveKind::kTriangle: break;  // a scene's BVH holds no loose triangles
+    case PrimitiveKind::kTriangle: break;  // none: a flattened mesh's hits are named as its instance's
   }
   return SurfaceInteraction{};
 }
@@ -80,7 +80,7 @@ uint32_t Scene::material_of(const Hit& hit) const {
     case PrimitiveKind::kInstance: return bvh.instance(hit.prim).material;
     case PrimitiveKind::kCsg: return bvh.csg(hit.prim).surface(csg_surface_index(hit)).material();
     case PrimitiveKind::kShape: return bvh.shape(hit.prim).material;
-    case PrimitiveKind::kTriangle: break;  // a scene's BVH holds no loose triangles
+    case PrimitiveKind::kTriangle: break;  // none: a flattened mesh's hits are named as its instance's
   }
   return 0;
 }

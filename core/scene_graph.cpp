@@ -1,9 +1,9 @@
 #include "core/scene_graph.h"
 
-#include "core/flatten_instances.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "core/flatten_instances.h"
 
 namespace rt {
 namespace {

@@ -135,7 +135,9 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
     return false;
   });
   settle(ray, hit, found);
-  if (found) bvh.relabel(hit);  // named by its instance, as the order above did not need
+  // A flattened instance's triangle named as the instance's only now: the walk above ordered
+  // equal hits by the tree's own ids, as the packets' walk does.
+  if (found) bvh.relabel(hit);
   return found;
 }
 

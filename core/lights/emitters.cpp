@@ -58,7 +58,9 @@ Emitters::Emitters(const Bvh& bvh, const SceneAssets& assets) {
   };
   for (uint32_t id = 0; id < bvh.primitive_count(); ++id) {
     switch (bvh.kind(id)) {
-      case PrimitiveKind::kTriangle: continue;  // a one-level BVH's loose triangles carry no material
+      // A flattened instance's triangles are sampled through its entry below; a one-level BVH's
+      // loose triangles carry no material.
+      case PrimitiveKind::kTriangle: continue;
       case PrimitiveKind::kShape: add_shape(Kind::kShape, id, 0, bvh.shape(id)); continue;
       case PrimitiveKind::kCsg: {
         const CsgObject& csg = bvh.csg(id);
