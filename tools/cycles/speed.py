@@ -127,9 +127,11 @@ def main():
                 fixed.append(rt_fixed)
                 syncs.append(cy_sync)
             label = name
-            if name == "fixture" and variant != ("all", "-"):
-                label += " (%s)" % ", ".join(x for x in ((a.fixture_light + " alone") if a.fixture_light else "",
-                                                           "no bump map" if a.fixture_bumps == "off" else "") if x)
+            if name == "fixture":
+                parts = ([a.fixture_light + " alone"] if a.fixture_light else []) + \
+                        (["no bump map"] if a.fixture_bumps == "off" else [])
+                if parts:
+                    label += " (%s)" % ", ".join(parts)
             print("| %s | %s | %s | %s× | %s s | %s s | %s s |" % (
                 label, span([x / 1e6 for x in ours], "%.2fM"), span([x / 1e6 for x in theirs], "%.2fM"),
                 span(ratios, "%.2f"), span(loads, "%.3f"), span(fixed, "%.3f"), span(syncs, "%.2f")))
