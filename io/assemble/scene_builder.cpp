@@ -12,7 +12,6 @@
 #include "io/assemble/scene_warnings.h"
 #include "io/assemble/texture_library.h"
 #include "io/gltf/loader.h"
-#include "io/image/environment_file.h"
 #include "io/json/locate.h"
 #include "io/json/reader.h"
 #include "io/scene/camera_parser.h"
@@ -110,20 +109,20 @@ class Builder {
     if (options_.environment) {  // --environment replaces the scene's background, colour or image
       const LoadOptions::EnvironmentChoice& e = *options_.environment;
       std::string why;
-      if (auto image = environment_image(e.path, why))
+      if (auto image = textures_.environment(e.path, why, files_))
         g.background = Environment(std::move(image), e.intensity, e.rotate);
       else diags_.file_error(e.path, "--environment: " + why);
     } else if (desc_.frame_the_model && file_world_ && !options_.background) {  // a model's own world
       const ImportedWorld& w = *file_world_;
       std::string why;
       if (w.image.empty()) g.background = Environment(w.color);
-      else if (auto image = environment_image(w.image, why))
+      else if (auto image = textures_.environment(w.image, why, files_))
         g.background = Environment(std::move(image), w.intensity, w.rotate);
       else diags_.file_error(w.image, "the world image of the glTF file's scene (rtcli_world): " + why);
     } else if (desc_.environment && !options_.background) {  // --background replaces an image too
       const EnvironmentReference& e = *desc_.environment;
       std::string why;
-      if (auto image = environment_image(e.resolved_path, why))
+      if (auto image = textures_.environment(e.resolved_path, why, files_))
         g.background = Environment(std::move(image), e.intensity, e.rotate);
       else error(e.pointer, why);
     }
@@ -331,26 +330,6 @@ class Builder {
       if (model.world && !file_world_) file_world_ = *model.world;
     }
     if (placed == 0) warning(ref.pointer, "\"" + ref.file + "\" has no triangles to render");
-  }
-
-  // An environment image: kept from an earlier load (watch) or read; counted against the texel
-  // budget and recorded as an input either way. Null, with `why`, if it cannot be used.
-  std::shared_ptr<const EnvironmentImage> environment_image(const std::string& path, std::string& why) {
-    std::shared_ptr<const EnvironmentImage> image;
-    const LoadCache::Environment* kept =
-        options_.cache ? options_.cache->environment(path, usage_, options_.limits) : nullptr;
-    if (kept) {
-      image = kept->image;
-      usage_.texels += kept->texels;
-    } else {
-      const FileStamps stamps = FileStamps::of({path});  // before reading: a later change shows
-      const uint64_t before = usage_.texels;
-      image = load_environment_image(path, options_.limits, usage_, why);
-      if (image && options_.cache)
-        options_.cache->keep(path, LoadCache::Environment{stamps, image, usage_.texels - before});
-    }
-    if (image) files_.push_back(path);
-    return image;
   }
 
   void limit_error(const std::string& pointer, const std::string& message) { report_.over_limit(pointer, message); }

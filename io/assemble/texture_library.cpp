@@ -1,6 +1,7 @@
 #include "io/assemble/texture_library.h"
 
 #include "io/assemble/load_cache.h"
+#include "io/image/environment_file.h"
 
 namespace rt {
 
@@ -34,6 +35,22 @@ uint32_t TextureLibrary::load(const TextureFileReference& ref, Reporter& report,
   }
   indices_.emplace(key, index);
   return index;
+}
+
+std::shared_ptr<const EnvironmentImage> TextureLibrary::environment(const std::string& path, std::string& why,
+                                                                    std::vector<std::string>& files) {
+  std::shared_ptr<const EnvironmentImage> image;
+  if (const LoadCache::Environment* kept = cache_ ? cache_->environment(path, usage_, limits_) : nullptr) {
+    image = kept->image;
+    usage_.texels += kept->texels;
+  } else {
+    const FileStamps stamps = FileStamps::of({path});  // before reading: a later change shows
+    const uint64_t before = usage_.texels;
+    image = load_environment_image(path, limits_, usage_, why);
+    if (image && cache_) cache_->keep(path, LoadCache::Environment{stamps, image, usage_.texels - before});
+  }
+  if (image) files.push_back(path);
+  return image;
 }
 
 uint32_t TextureLibrary::add(Texture texture) {

@@ -1,13 +1,16 @@
-// The scene's textures as the builder loads them: each file once per encoding (a colour texture
-// is decoded from sRGB, a height map not), every texel counted against the scene's budget
-// (LoadLimits::scene_texels, mip levels included) from the image's header, before it is decoded.
+// The scene's images as the builder loads them: its textures, each file once per encoding (a
+// colour texture is decoded from sRGB, a height map not), and its environment image. Every texel
+// is counted against the scene's budget (LoadLimits::scene_texels, mip levels included) from the
+// image's header, before it is decoded.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/lights/environment.h"
 #include "core/texture/texture.h"
 #include "io/base/load_options.h"
 #include "io/base/reporter.h"
@@ -27,6 +30,10 @@ class TextureLibrary {
   uint32_t load(const TextureFileReference& ref, Reporter& report, std::vector<std::string>& files);
   // Appends a texture decoded elsewhere, its texels already counted (a glTF file's); returns its index.
   uint32_t add(Texture texture);
+  // An environment image: kept from an earlier load (watch) or read; counted against the texel
+  // budget and its path added to `files` either way. Null, with `why`, if it cannot be used.
+  std::shared_ptr<const EnvironmentImage> environment(const std::string& path, std::string& why,
+                                                      std::vector<std::string>& files);
 
  private:
   std::vector<Texture>& textures_;
