@@ -76,6 +76,41 @@ TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin
   CHECK_THAT(bad.output, Catch::Contains("material 'floor': [") && Catch::Contains("] have no twin"));
 }
 
+TEST_CASE("tools/povray/compare.py --without-transmissive: a scene against POV-Ray without its glass", "[cli][bench]") {
+  if (rt::test::run_shell("command -v povray >/dev/null 2>&1").code != 0) {
+    WARN("povray is not installed (tools/install-deps.sh --tests installs it): skipped");
+    return;
+  }
+  // A glass ball in a group beside a red one: the group keeps the red ball, the glass goes.
+  const std::string scene = rt::test::write_file(
+      "against_glass.json",
+      R"({"render": {"antialias": {"mode": "none"}}, "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+          "materials": {"red": {"kd": [0.8, 0.1, 0.1]}, "glass": {"kd": 0, "transmission": [0, 1, 1], "ior": 1.5}},
+          "lights": [{"type": "point", "position": [3, 4, 5]}],
+          "nodes": [{"children": [{"shape": "sphere", "material": "glass"},
+                                  {"shape": "sphere", "material": "red", "transform": {"translate": [2, 0, 0]}}]}]})");
+  const std::string compare = "python3 '" + rt::test::source_path("tools/povray/compare.py") +
+                              "' --width 160 --height 120 --runs 1 --rtcli '" + RTCLI_BINARY + "' ";
+  const rt::test::Run r = rt::test::run_shell(compare + "--without-transmissive '" + scene + "' 2>&1");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("| against_glass (without its 1 transmissive node) | ") &&
+                           Catch::Contains("× | rms "));
+  // The copy without the glass is gone once compared.
+  int copies_left = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(scene).parent_path()))
+    copies_left += entry.path().filename().string().find("without-transmissive") != std::string::npos;
+  CHECK(copies_left == 0);
+  // A scene with nothing transmissive has nothing to show: refused before anything is rendered.
+  const std::string matte = rt::test::write_file(
+      "against_matte.json",
+      R"({"materials": {"red": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "red"}]})");
+  const rt::test::Run refused = rt::test::run_shell(compare + "--without-transmissive '" + matte + "' 2>&1");
+  CHECK(refused.code != 0);
+  CHECK_THAT(refused.output, Catch::Contains("has no node of a transmissive material to leave out") &&
+                                 !Catch::Contains("| scene |"));
+}
+
 TEST_CASE("tools/cycles/speed.py: the Blender fixture with one light and no bump map, to see where its time goes",
           "[cli][bench][blender]") {
   if (rt::test::run_shell("command -v blender >/dev/null 2>&1").code != 0) {

@@ -4,9 +4,13 @@ by twin.py, both renderers run alternately on the same size and thread count, th
 timed (wall) and each renderer's own render time (rtcli's --stats, POV-Ray's "Trace Time"), the
 median of N runs with min-max, and how far the two images are apart (build/imagediff).
 
-  compare.py [--width 1920] [--height 1440] [--threads 2] [--runs 3] SCENE.json...
+  compare.py [--width 1920] [--height 1440] [--threads 2] [--runs 3] [--without-transmissive] SCENE.json...
 
-Prints one Markdown table row per scene (docs/benchmark.md, "Against POV-Ray").
+Prints one Markdown table row per scene (docs/benchmark.md, "Against POV-Ray"). To see where a
+scene's time goes, --without-transmissive compares it without its glass: the nodes whose material
+(one of the scene file's own "materials") has a transmission above 0 are left out, children and
+all, from a copy written beside the scene (so that its relative paths still resolve) and removed
+afterwards. A scene with no such node is refused before anything is rendered.
 """
 import argparse
 import json
@@ -30,6 +34,37 @@ def timed(args, **kw):
     return time.monotonic() - start, r.stdout + r.stderr
 
 
+def transmissive(material):
+    t = material.get("transmission", 0) if isinstance(material, dict) else 0
+    return any(x > 0 for x in (t if isinstance(t, list) else [t]) if isinstance(x, (int, float)))
+
+
+def without_transmissive(scene):
+    """The scene file's description without its transmissive nodes, and how many it left out."""
+    try:
+        with open(scene) as f:
+            description = json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit("compare.py: error: %s: %s" % (scene, e))
+    glass = {name for name, m in description.get("materials", {}).items() if transmissive(m)}
+    dropped = 0
+
+    def kept(nodes):
+        nonlocal dropped
+        out = []
+        for node in nodes:
+            if node.get("material") in glass:
+                dropped += 1
+                continue
+            if "children" in node:
+                node = dict(node, children=kept(node["children"]))
+            out.append(node)
+        return out
+
+    description["nodes"] = kept(description.get("nodes", []))
+    return description, dropped
+
+
 def span(values, unit="s"):
     return "%.2f %s (%.2f–%.2f)" % (statistics.median(values), unit, min(values), max(values))
 
@@ -42,15 +77,42 @@ def main():
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--runs", type=int, default=3)
     p.add_argument("--rtcli", default=os.path.join(ROOT, "build", "rtcli"))
+    p.add_argument("--without-transmissive", action="store_true",
+                   help="compare each scene without its transmissive nodes (see above)")
     a = p.parse_args()
     if shutil.which("povray") is None:
         sys.exit("compare.py: error: povray is not installed (Debian: apt-get install povray)")
+    stripped = {}
+    if a.without_transmissive:
+        for scene in a.scenes:
+            description, dropped = without_transmissive(os.path.abspath(scene))
+            if dropped == 0:
+                sys.exit("compare.py: error: %s has no node of a transmissive material to leave out" % scene)
+            stripped[os.path.abspath(scene)] = (description, dropped)
+    copies = []  # the scenes written without their glass, removed whatever happens
+    try:
+        compare(a, stripped, copies)
+    finally:
+        for path in copies:
+            os.remove(path)
+
+
+def compare(a, stripped, copies):
     print("| scene | rtcli wall | POV-Ray wall | ratio | rtcli render | POV-Ray trace | ratio | RMS apart |")
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes:
             scene = os.path.abspath(scene)  # also keeps a name starting with '-' from reading as an option
             name = os.path.splitext(os.path.basename(scene))[0]
+            label = name
+            if scene in stripped:
+                description, dropped = stripped[scene]
+                fd, scene = tempfile.mkstemp(prefix=".%s-without-transmissive-" % name, suffix=".json",
+                                             dir=os.path.dirname(scene))
+                copies.append(scene)
+                with os.fdopen(fd, "w") as f:
+                    json.dump(description, f)
+                label = "%s (without its %d transmissive node%s)" % (name, dropped, "" if dropped == 1 else "s")
             pov = os.path.join(tmp, name + ".pov")
             command = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
                                       "--width", str(a.width), "--height", str(a.height)],
@@ -74,7 +136,7 @@ def main():
                                    os.path.join(tmp, name + "-rtcli.png"), pov[:-4] + ".png"],
                                   capture_output=True, text=True).stdout.split(" levels")[0]
             print("| %s | %s | %s | %.2f× | %s | %s | %.2f× | %s |" % (
-                name, span(walls["rtcli"]), span(walls["pov"]),
+                label, span(walls["rtcli"]), span(walls["pov"]),
                 statistics.median(walls["rtcli"]) / statistics.median(walls["pov"]),
                 span(renders["rtcli"]), span(renders["pov"]),
                 statistics.median(renders["rtcli"]) / statistics.median(renders["pov"]), diff))
