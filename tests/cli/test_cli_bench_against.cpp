@@ -94,21 +94,21 @@ TEST_CASE("tools/povray/compare.py --without-transmissive: a scene against POV-R
   const rt::test::Run r = rt::test::run_shell(compare + "--without-transmissive '" + scene + "' 2>&1");
   INFO(r.output);
   REQUIRE(r.code == 0);
-  CHECK_THAT(r.output, Catch::Contains("| against_glass (without its 1 transmissive node) | ") &&
-                           Catch::Contains("× | rms "));
+  CHECK_THAT(r.output,
+             Catch::Contains("| against_glass (without its 1 transmissive node) | ") && Catch::Contains("× | rms "));
   // The copy without the glass is gone once compared.
   int copies_left = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(scene).parent_path()))
     copies_left += entry.path().filename().string().find("without-transmissive") != std::string::npos;
   CHECK(copies_left == 0);
   // A scene with nothing transmissive has nothing to show: refused before anything is rendered.
-  const std::string matte = rt::test::write_file(
-      "against_matte.json",
-      R"({"materials": {"red": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "red"}]})");
+  const std::string matte =
+      rt::test::write_file("against_matte.json",
+                           R"({"materials": {"red": {"kd": 0.5}}, "nodes": [{"shape": "sphere", "material": "red"}]})");
   const rt::test::Run refused = rt::test::run_shell(compare + "--without-transmissive '" + matte + "' 2>&1");
   CHECK(refused.code != 0);
-  CHECK_THAT(refused.output, Catch::Contains("has no node of a transmissive material to leave out") &&
-                                 !Catch::Contains("| scene |"));
+  CHECK_THAT(refused.output,
+             Catch::Contains("has no node of a transmissive material to leave out") && !Catch::Contains("| scene |"));
 }
 
 TEST_CASE("tools/cycles/speed.py: the Blender fixture with one light and no bump map, to see where its time goes",
