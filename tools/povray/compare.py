@@ -46,22 +46,24 @@ def without_transmissive(scene):
             description = json.load(f)
     except (OSError, ValueError) as e:
         sys.exit("compare.py: error: %s: %s" % (scene, e))
-    glass = {name for name, m in description.get("materials", {}).items() if transmissive(m)}
+    materials = description.get("materials") if isinstance(description, dict) else None
+    glass = {name for name, m in materials.items() if transmissive(m)} if isinstance(materials, dict) else set()
     dropped = 0
 
     def kept(nodes):
         nonlocal dropped
         out = []
         for node in nodes:
-            if node.get("material") in glass:
+            if isinstance(node, dict) and isinstance(node.get("material"), str) and node["material"] in glass:
                 dropped += 1
                 continue
-            if "children" in node:
+            if isinstance(node, dict) and isinstance(node.get("children"), list):
                 node = dict(node, children=kept(node["children"]))
             out.append(node)
         return out
 
-    description["nodes"] = kept(description.get("nodes", []))
+    if glass and isinstance(description.get("nodes"), list):
+        description["nodes"] = kept(description["nodes"])
     return description, dropped
 
 
@@ -114,9 +116,11 @@ def compare(a, stripped, copies):
                     json.dump(description, f)
                 label = "%s (without its %d transmissive node%s)" % (name, dropped, "" if dropped == 1 else "s")
             pov = os.path.join(tmp, name + ".pov")
-            command = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
-                                      "--width", str(a.width), "--height", str(a.height)],
-                                     capture_output=True, text=True, check=True).stdout.split()
+            twin = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
+                                   "--width", str(a.width), "--height", str(a.height)], capture_output=True, text=True)
+            if twin.returncode != 0:
+                sys.exit("compare.py: twin.py failed on %s:\n%s" % (label, twin.stdout + twin.stderr))
+            command = twin.stdout.split()
             command = [c.replace("+WT2", "+WT%d" % a.threads) for c in command]
             ours = [a.rtcli, "render", scene, "-q", "-o", os.path.join(tmp, name + "-rtcli.png"), "--width",
                     str(a.width), "--height", str(a.height), "--threads", str(a.threads), "--stats",
