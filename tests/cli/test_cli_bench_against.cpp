@@ -24,10 +24,7 @@ TEST_CASE("cli: bench --against refuses a comparison without its scene, or one i
 }
 
 TEST_CASE("cli: bench --against povray times a scene and its POV-Ray twin, and prints the command", "[cli][bench]") {
-  if (rt::test::run_shell("command -v povray >/dev/null 2>&1").code != 0) {
-    WARN("povray is not installed (tools/install-deps.sh --tests installs it): skipped");
-    return;
-  }
+  if (!rt::test::installed("povray")) return;
   // One sphere under a point light, no anti-aliasing: a second with either renderer at 1920 x 1440.
   const std::string scene = rt::test::write_file(
       "against_ball.json",
@@ -53,10 +50,7 @@ TEST_CASE("cli: bench --against povray times a scene and its POV-Ray twin, and p
 
 TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin with spheres, glass and a sky",
           "[cli][bench]") {
-  if (rt::test::run_shell("command -v blender >/dev/null 2>&1").code != 0) {
-    WARN("blender is not installed (tools/install-deps.sh --tests installs it): skipped");
-    return;
-  }
+  if (!rt::test::installed("blender")) return;
   // environment.json: a chrome, a clay and a glass ball, a satin block and an HDR sky, small; enough
   // samples that their time stands out of Cycles' start-up (about a second, give or take a fifth
   // on a busy machine: 2 and 128 samples at 32 x 32 once took less time for 128, and 4 and 512 at
@@ -77,10 +71,7 @@ TEST_CASE("tools/cycles/speed.py: samples a second of rtcli and Cycles on a twin
 }
 
 TEST_CASE("tools/povray/compare.py --without-transmissive: a scene against POV-Ray without its glass", "[cli][bench]") {
-  if (rt::test::run_shell("command -v povray >/dev/null 2>&1").code != 0) {
-    WARN("povray is not installed (tools/install-deps.sh --tests installs it): skipped");
-    return;
-  }
+  if (!rt::test::installed("povray")) return;
   // A glass ball in a group beside a red one: the group keeps the red ball, the glass goes.
   const std::string scene = rt::test::write_file(
       "against_glass.json",
@@ -113,10 +104,7 @@ TEST_CASE("tools/povray/compare.py --without-transmissive: a scene against POV-R
 
 TEST_CASE("tools/cycles/speed.py: the Blender fixture with one light and no bump map, to see where its time goes",
           "[cli][bench][blender]") {
-  if (rt::test::run_shell("command -v blender >/dev/null 2>&1").code != 0) {
-    WARN("blender is not installed (tools/install-deps.sh --tests installs it): skipped");
-    return;
-  }
+  if (!rt::test::installed("blender")) return;
   // Debian's Python: one that pyenv or a venv puts first on PATH hides python3-numpy from the
   // glTF exporter that builds the fixture in Blender.
   const rt::test::Run r = rt::test::run_shell("/usr/bin/python3 '" + rt::test::source_path("tools/cycles/speed.py") +

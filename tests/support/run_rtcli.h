@@ -28,6 +28,13 @@ inline Run run_shell(const std::string& command) {
   return run;
 }
 
+// Whether `program` is on PATH; if not, says so (the tests that need it skip) and how to get it.
+inline bool installed(const std::string& program) {
+  if (run_shell("command -v '" + program + "' >/dev/null 2>&1").code == 0) return true;
+  WARN(program + " is not installed (tools/install-deps.sh --tests installs it): skipped");
+  return false;
+}
+
 // Runs rtcli with `args` (shell syntax) from `cwd`; `prefix` goes before the binary (`timeout 10`).
 inline Run rtcli(const std::string& args, const std::string& cwd = RTCLI_SOURCE_DIR, const std::string& prefix = "") {
   return run_shell("cd '" + cwd + "' && " + prefix + " '" + RTCLI_BINARY + "' " + args + " 2>&1");
