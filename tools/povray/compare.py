@@ -109,8 +109,11 @@ def compare(a, stripped, copies):
             label = name
             if scene in stripped:
                 description, dropped = stripped[scene]
-                fd, scene = tempfile.mkstemp(prefix=".%s-without-transmissive-" % name, suffix=".json",
-                                             dir=os.path.dirname(scene))
+                try:
+                    fd, scene = tempfile.mkstemp(prefix=".%s-without-transmissive-" % name, suffix=".json",
+                                                 dir=os.path.dirname(scene))
+                except OSError as e:
+                    sys.exit("compare.py: error: a copy of %s without its glass goes beside it: %s" % (scene, e))
                 copies.append(scene)
                 with os.fdopen(fd, "w") as f:
                     json.dump(description, f)
