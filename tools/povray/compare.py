@@ -84,40 +84,41 @@ def main():
     a = p.parse_args()
     if shutil.which("povray") is None:
         sys.exit("compare.py: error: povray is not installed (Debian: apt-get install povray)")
-    stripped = {}
-    if a.without_transmissive:
-        for scene in a.scenes:
-            description, dropped = without_transmissive(os.path.abspath(scene))
-            if dropped == 0:
-                sys.exit("compare.py: error: %s has no node of a transmissive material to leave out" % scene)
-            stripped[os.path.abspath(scene)] = (description, dropped)
+    # (the scene's name, the file rendered, the row's label); also keeps a name starting with '-'
+    # from reading as an option
+    scenes = [(os.path.splitext(os.path.basename(s))[0], os.path.abspath(s), None) for s in a.scenes]
     copies = []  # the scenes written without their glass, removed whatever happens
     try:
-        compare(a, stripped, copies)
+        if a.without_transmissive:
+            scenes = [without_glass_copy(name, scene, copies) for name, scene, _ in scenes]
+        compare(a, scenes)
     finally:
         for path in copies:
             os.remove(path)
 
 
-def compare(a, stripped, copies):
+def without_glass_copy(name, scene, copies):
+    """The scene without its glass, written beside it (its relative paths still resolve)."""
+    description, dropped = without_transmissive(scene)
+    if dropped == 0:
+        sys.exit("compare.py: error: %s has no node of a transmissive material to leave out" % scene)
+    try:
+        fd, copy = tempfile.mkstemp(prefix=".%s-without-transmissive-" % name, suffix=".json",
+                                    dir=os.path.dirname(scene))
+    except OSError as e:
+        sys.exit("compare.py: error: a copy of %s without its glass goes beside it: %s" % (scene, e))
+    copies.append(copy)
+    with os.fdopen(fd, "w") as f:
+        json.dump(description, f)
+    return name, copy, "%s (without its %d transmissive node%s)" % (name, dropped, "" if dropped == 1 else "s")
+
+
+def compare(a, scenes):
     print("| scene | rtcli wall | POV-Ray wall | ratio | rtcli render | POV-Ray trace | ratio | RMS apart |")
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
-        for scene in a.scenes:
-            scene = os.path.abspath(scene)  # also keeps a name starting with '-' from reading as an option
-            name = os.path.splitext(os.path.basename(scene))[0]
-            label = name
-            if scene in stripped:
-                description, dropped = stripped[scene]
-                try:
-                    fd, scene = tempfile.mkstemp(prefix=".%s-without-transmissive-" % name, suffix=".json",
-                                                 dir=os.path.dirname(scene))
-                except OSError as e:
-                    sys.exit("compare.py: error: a copy of %s without its glass goes beside it: %s" % (scene, e))
-                copies.append(scene)
-                with os.fdopen(fd, "w") as f:
-                    json.dump(description, f)
-                label = "%s (without its %d transmissive node%s)" % (name, dropped, "" if dropped == 1 else "s")
+        for name, scene, label in scenes:
+            label = label or name
             pov = os.path.join(tmp, name + ".pov")
             twin = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
                                    "--width", str(a.width), "--height", str(a.height)], capture_output=True, text=True)
