@@ -58,6 +58,31 @@ TEST_CASE("ray origins: off the surface by the error bound, rounded away, on the
   CHECK(o.x == p.x);
 }
 
+TEST_CASE(
+    "ray origins: one float along each axis of the normal, from zero, subnormals, the largest floats and "
+    "infinities",
+    "[ray-origin]") {
+  constexpr float kMin = std::numeric_limits<float>::min();  // the smallest normal float
+  constexpr float kMax = std::numeric_limits<float>::max();
+  const float sub_min = std::numeric_limits<float>::denorm_min();
+  const float values[] = {0.0f,  -0.0f,    sub_min,   -sub_min, kMin - sub_min, kMin,      -kMin,     1.0f,
+                          -1.0f, 3.5e-30f, -7.25e12f, kMax,     -kMax,          kInfinity, -kInfinity};
+  // The normal's x is positive, its y negative, its z 0: x steps up, y down, z stays. A zero or
+  // subnormal coordinate steps to the smallest normal float, never to a subnormal.
+  const Vec3 n = glm::normalize(Vec3(1.0f, -1.0f, 0.0f));
+  for (const float v : values) {
+    CAPTURE(v);
+    const Vec3 o = offset_ray_origin(Vec3(v), Vec3(0.0f), n, n);
+    const bool tiny = std::fabs(v) < kMin;
+    CHECK(o.x == (tiny ? kMin : std::nextafter(v, kInfinity)));
+    CHECK(o.y == (tiny ? -kMin : std::nextafter(v, -kInfinity)));
+    CHECK(o.z == v);
+  }
+  const Vec3 nan_origin = offset_ray_origin(Vec3(std::nanf("")), Vec3(0.0f), n, n);
+  CHECK(std::isnan(nan_origin.x));
+  CHECK(std::isnan(nan_origin.y));
+}
+
 namespace {
 
 // Every kind of surface under rotations, non-uniform scales and far translations, a CSG solid and
