@@ -191,7 +191,8 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       const bool packets = scene.all_opaque && count >= kMinShadowPacket;
       // The numbers of samples [base - k, base - k + kMaxSobolPairs), k = base % kMaxSobolPairs.
       static_assert(kMaxSobolPairs % kPacketSize == 0);
-      float jx[kMaxSobolPairs] = {}, jy[kMaxSobolPairs] = {};  // all read, eight at a time
+      float jx[kMaxSobolPairs] = {}, jy[kMaxSobolPairs] = {};         // all read, eight at a time
+      const float sample_share = weight / static_cast<float>(count);  // one sample's part, for faint()
       for (int base = 0; base < count; base += kPacketSize) {
         const int batch = std::min(kPacketSize, count - base);
         float u[2][kPacketSize] = {};
@@ -222,8 +223,8 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
         int rays = 0;
         for (int j = 0; j < batch; ++j) {
           ray_of[j] = -1;
-          if (!(sides.light >> j & 1u) || (specular_only && faint(reflectance[j], rect->color * drawn.scale[j],
-                                                                  weight / static_cast<float>(count))))
+          if (!(sides.light >> j & 1u) ||
+              (specular_only && faint(reflectance[j], rect->color * drawn.scale[j], sample_share)))
             continue;
           if (!rays_from) rays_from.emplace(s);
           rays_from->ray(drawn.direction(j), drawn.distance[j], sides.behind >> j & 1u, shadows[rays]);

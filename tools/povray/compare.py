@@ -86,7 +86,7 @@ def main():
         sys.exit("compare.py: error: povray is not installed (Debian: apt-get install povray)")
     # (the scene's name, the file rendered, the row's label); also keeps a name starting with '-'
     # from reading as an option
-    scenes = [(os.path.splitext(os.path.basename(s))[0], os.path.abspath(s), None) for s in a.scenes]
+    scenes = [(name_of(s), os.path.abspath(s), name_of(s)) for s in a.scenes]
     copies = []  # the scenes written without their glass, removed whatever happens
     try:
         if a.without_transmissive:
@@ -95,6 +95,10 @@ def main():
     finally:
         for path in copies:
             os.remove(path)
+
+
+def name_of(scene):
+    return os.path.splitext(os.path.basename(scene))[0]
 
 
 def without_glass_copy(name, scene, copies):
@@ -118,7 +122,6 @@ def compare(a, scenes):
     print("|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for name, scene, label in scenes:
-            label = label or name
             pov = os.path.join(tmp, name + ".pov")
             twin = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "povray", "twin.py"), scene, pov,
                                    "--width", str(a.width), "--height", str(a.height)], capture_output=True, text=True)
