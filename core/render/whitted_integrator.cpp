@@ -9,7 +9,7 @@
 
 namespace rt {
 
-// Inlined into trace(), the recursion's hot call: as a call of its own it cost glossy.json 2% (measured).
+// Inlined into traced_from(), the recursion's hot call: as a call of its own it cost glossy.json 2% (measured).
 [[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade(const Ray& ray, const SceneHit& met, const PathState& state,
                                                             TraceContext& ctx) const {
   if (!met.surface) return shade_no_surface(ray, met, state, ctx);
