@@ -36,7 +36,10 @@ class WhittedIntegrator final : public Integrator {
   // adaptive tree depth): it bounds the ray tree of glass, whose every hit branches in two.
   static constexpr float kMinWeight = 1.0f / 512.0f;
 
-  // A ray's radiance once its first meeting is known (ray.tmax at it).
+  // The radiance arriving along `ray`, walked where the caller made it: its tmax is left at what
+  // it meets.
+  Vec3 trace(Ray& ray, const PathState& state, TraceContext& ctx) const;
+  // trace() once the ray's first meeting is known (ray.tmax at it).
   Vec3 shade(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const;
   // Branch kinds for child_path.
   enum Branch : uint32_t { kReflected = 1, kRefracted, kGlossyRay, kGlossyRefraction, kFresnelChoice };
