@@ -112,7 +112,8 @@ void WhittedIntegrator::radiance_from_hits(const Ray* rays, const SceneHit* met,
 }
 
 // The caller's ray, not a copy: copied whole, it was loaded in wide loads from the narrow stores
-// that had just made it, which no store forwards to (half of this function's time).
+// that had just made it, which no store forwards to (half of trace()'s samples in a profile of
+// refraction.json; docs/benchmark.md, "Round two, a twenty-sixth session").
 Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ctx) const {
   SceneHit met;
   ctx.scene.intersect(ray, met);
