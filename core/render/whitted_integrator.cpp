@@ -56,18 +56,17 @@ Vec3 WhittedIntegrator::shade_no_surface(const Ray& ray, const SceneHit& met, co
   return absorbed(radiance, ray, state, ctx.scene);
 }
 
-Vec3 WhittedIntegrator::absorbed(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const {
+Vec3 WhittedIntegrator::absorbed_in_medium(Vec3 radiance, const Ray& ray, const PathState& state,
+                                           const Scene& scene) const {
   // Beer-Lambert along the segment just travelled (ray.tmax: to the surface or light it met),
   // inside the innermost medium. A ray that leaves through an open mesh without hitting anything
   // keeps tmax = infinity: it travelled forever and arrives dark.
-  if (!state.media.empty()) {
-    const Material& m = scene.materials()[state.media.innermost()];
-    if (m.absorbing()) {
-      const float distance = ray.tmax * glm::length(ray.direction);
-      // Per channel, so that a channel that does not absorb is not multiplied by exp(-0 * inf).
-      for (int c = 0; c < 3; ++c)
-        if (m.absorption[c] > 0.0f) radiance[c] *= std::exp(-m.absorption[c] * distance);
-    }
+  const Material& m = scene.materials()[state.media.innermost()];
+  if (m.absorbing()) {
+    const float distance = ray.tmax * glm::length(ray.direction);
+    // Per channel, so that a channel that does not absorb is not multiplied by exp(-0 * inf).
+    for (int c = 0; c < 3; ++c)
+      if (m.absorption[c] > 0.0f) radiance[c] *= std::exp(-m.absorption[c] * distance);
   }
   return radiance;
 }

@@ -56,7 +56,12 @@ class WhittedIntegrator final : public Integrator {
   // The state of a camera ray's tree at its first hit.
   static PathState camera_state(int depth, const TraceContext& ctx);
   // Beer-Lambert along the segment just travelled, inside the state's innermost medium.
-  Vec3 absorbed(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
+  // Whether there is a medium is asked here, inline: most rays travel in air, and a call for each
+  // cost antialias.json 1.5% (docs/benchmark.md, "Round two, a twenty-sixth session").
+  Vec3 absorbed(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const {
+    return state.media.empty() ? radiance : absorbed_in_medium(radiance, ray, state, scene);
+  }
+  Vec3 absorbed_in_medium(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
   Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
   Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
               const PathState& state, TraceContext& ctx) const;
