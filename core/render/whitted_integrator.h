@@ -61,6 +61,7 @@ class WhittedIntegrator final : public Integrator {
   Vec3 absorbed(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const {
     return state.media.empty() ? radiance : absorbed_in_medium(radiance, ray, state, scene);
   }
+  // requires !state.media.empty()
   Vec3 absorbed_in_medium(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
   Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
   Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
