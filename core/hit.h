@@ -19,6 +19,15 @@ struct Hit {
   uint32_t medium = 0;           // CSG solids: the material inside (core/csg/csg_object.h)
 };
 
+// The closest-hit order: nearer first, equals by (prim, part). Any order of testing the
+// primitives then finds the same hit, so a packet (whose walk takes leaves in another order than
+// a single ray's), the brute-force reference (id order) and a ray inside a closed shape
+// (core/accel/shape_interiors.h) agree with the single ray bit for bit. Always inlined: the BVH
+// kernels, each built for its instruction set, must not leave a copy of their own for others.
+[[gnu::always_inline]] inline bool precedes(const Hit& a, const Hit& b) {
+  return a.t < b.t || (a.t == b.t && (a.prim < b.prim || (a.prim == b.prim && a.part < b.part)));
+}
+
 inline constexpr uint32_t kOwnMedium = 0xffffffffu;
 
 // Object-space local geometry of an analytic shape at a point: the outward unit normal, the

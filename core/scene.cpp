@@ -59,8 +59,8 @@ void meet_area_lights(const Scene& scene, Ray& ray, SceneHit& out, bool camera_r
 
 }  // namespace
 
-bool Scene::intersect(Ray& ray, SceneHit& out) const {
-  out.surface = bvh.intersect(ray, out.hit);
+bool Scene::intersect(Ray& ray, SceneHit& out, uint32_t inside) const {
+  out.surface = inside == kNoPrimitive ? bvh.intersect(ray, out.hit) : bvh.intersect_from_inside(inside, ray, out.hit);
   meet_area_lights(*this, ray, out, false);
   return out.surface || out.light;
 }

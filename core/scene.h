@@ -63,7 +63,9 @@ struct Scene {
   // The closest surface (ray.tmax becomes its distance); area lights are not surfaces.
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
-  bool intersect(Ray& ray, SceneHit& out) const;
+  // `inside`: the primitive the ray starts inside, if known (Bvh::intersect_from_inside), a
+  // hint that never changes the answer.
+  bool intersect(Ray& ray, SceneHit& out, uint32_t inside = kNoPrimitive) const;
   // intersect(ray, out) for count <= kPacketSize camera rays (neighbours), their surfaces found
   // together (Bvh::intersect_packet): each gets what it would get alone, but passes through the
   // area lights hidden from the camera (RectLight::camera_visible).

@@ -44,6 +44,9 @@ struct EvaluatedSurface {
   float metallic = 0.0f;
   float roughness = 1.0f;
   EvaluatedLayers layers;  // clearcoat, sheen, specular, anisotropy, iridescence, dispersion
+  // The primitive it is on (Hit::prim), where the integrator records it: a ray that leaves into
+  // it walks less (Scene::intersect's `inside`). Last: the fields above keep their offsets.
+  uint32_t prim = kNoPrimitive;
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };

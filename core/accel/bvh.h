@@ -20,6 +20,7 @@
 #include "core/accel/isa.h"
 #include "core/accel/primitives.h"
 #include "core/accel/shadow_volume.h"
+#include "core/accel/shape_interiors.h"
 #include "core/accel/triangle_quad.h"
 #include "core/fill_vector.h"
 
@@ -96,6 +97,10 @@ class Bvh {
 
   // Closest hit in (ray.tmin, ray.tmax); narrows ray.tmax to it.
   bool intersect(Ray& ray, Hit& hit) const { return kernels_->intersect(*this, ray, hit); }
+  // intersect()'s answer for a ray that starts inside primitive `inside` (a refraction into it, a
+  // reflection within it), found without the walk where that is a closed shape with few
+  // neighbours (core/accel/shape_interiors.h). Any id, a wrong one too, gives intersect()'s answer.
+  bool intersect_from_inside(uint32_t inside, Ray& ray, Hit& hit) const;
   // Closest hit among the triangles `cutout` covers and whose front the ray meets if it is
   // single-sided (a mesh BVH with an alpha mask or a single-sided material).
   bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {
@@ -164,6 +169,7 @@ class Bvh {
     }
   }
   const FillVector<BvhNode>& nodes() const { return nodes_; }
+  const std::vector<ShapeInterior>& interiors() const { return interiors_; }
   // The instruction set whose traversal intersect() and occluded() run.
   Isa isa() const { return kernels_->isa; }
   uint32_t root() const { return root_; }
@@ -216,6 +222,7 @@ class Bvh {
   // a triangle copied there, so that leaves read memory in order.
   FillVector<Slot> slots_;
   FillVector<TriangleQuad> quads_;
+  std::vector<ShapeInterior> interiors_;  // one per shape, or none (find_shape_interiors)
   // Fills slots_ and quads_ from the primitives in build order (`order`: ids, the leaves' first
   // and count refer to it) and points the leaf references at them.
   void fill_leaves(const PrimitiveSet& prims, const uint32_t* order, unsigned threads);

@@ -313,6 +313,7 @@ Bvh::Bvh(const PrimitiveSet& prims, const BvhBuildOptions& options)
   FillVector<uint32_t> order(n);
   parallel_for(n, threads, 4096, [&](unsigned, size_t i) { order[i] = records[i].id(); });
   fill_leaves(prims, order.data(), threads);
+  interiors_ = find_shape_interiors(*this);
 }
 
 }  // namespace rt

@@ -24,13 +24,6 @@ bool intersect(const Bvh& bvh, Ray& ray, Hit& hit);
 
 namespace {
 
-// The closest-hit order: nearer first, equals by (prim, part). Any order of testing the
-// primitives then finds the same hit, so a packet (whose walk takes leaves in another order than
-// a single ray's) and the brute-force reference (id order) agree with the single ray bit for bit.
-RT_SIMD_INLINE bool precedes(const Hit& a, const Hit& b) {
-  return a.t < b.t || (a.t == b.t && (a.prim < b.prim || (a.prim == b.prim && a.part < b.part)));
-}
-
 // Takes `candidate` as the hit when it precedes it. r.tmax stays one float past the hit's t, so
 // that a crossing at an equal t is still tested (every test accepts t < tmax only).
 RT_SIMD_INLINE bool take_if_first(const Hit& candidate, Ray& r, Hit& hit) {

@@ -1,0 +1,194 @@
+// A ray inside a closed shape (core/accel/shape_interiors.h): which shapes get an interior, and
+// Bvh::intersect_from_inside giving the walk's answer bit for bit, for rays leaving a shape's
+// surface inwards as the integrator makes them, and for hints that are wrong.
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "core/accel/bvh.h"
+#include "core/ray.h"
+#include "core/rng.h"
+
+using namespace rt;
+
+namespace {
+
+AnalyticShape shape(ShapeKind kind, Vec3 translate, Vec3 rotate, Vec3 scale) {
+  AnalyticShape s;
+  s.kind = kind;
+  s.transform = *make_transform(compose_trs(translate, rotate, scale));
+  return s;
+}
+
+Vec3 random_unit(Rng& rng) {
+  for (;;) {
+    const Vec3 v(2.0f * rng.next_float() - 1.0f, 2.0f * rng.next_float() - 1.0f, 2.0f * rng.next_float() - 1.0f);
+    const float l2 = glm::dot(v, v);
+    if (l2 > 1e-4f && l2 <= 1.0f) return v / std::sqrt(l2);
+  }
+}
+
+// Shape ids of the set below, in order after the triangles (none here).
+enum Id : uint32_t {
+  kFloor,
+  kBall,    // resting on the floor: the floor its one neighbour
+  kBlock,   // resting on the floor: its bottom face and the floor tie
+  kTurned,  // a block turned and tilted, clear of everything
+  kPillar,  // a cylinder standing on the floor
+  kCone,    // a cone, apex down, off the floor
+  kShell,   // a ball with a smaller one inside it
+  kCore,    // that smaller ball
+  kLeft,    // two balls that overlap
+  kRight,
+  kCrowded,  // a ball with four small ones against it: more neighbours than it tests
+  kCrowd0,
+  kCrowd1,
+  kCrowd2,
+  kCrowd3,
+  kCount
+};
+
+PrimitiveSet test_shapes() {
+  PrimitiveSet prims;
+  auto& s = prims.shapes;
+  s.push_back(shape(ShapeKind::kPlane, {0, 0, 0}, {0, 0, 0}, {12, 1, 12}));
+  s.push_back(shape(ShapeKind::kSphere, {0, 1, 0}, {0, 0, 0}, {1, 1, 1}));
+  s.push_back(shape(ShapeKind::kCube, {3, 0.75f, 0}, {0, 0, 0}, {0.75f, 0.75f, 0.75f}));
+  s.push_back(shape(ShapeKind::kCube, {3, 3, 3}, {20, 35, 10}, {0.5f, 0.8f, 0.6f}));
+  s.push_back(shape(ShapeKind::kCylinder, {-3, 0, 0}, {-90, 0, 0}, {0.5f, 0.5f, 2}));
+  s.push_back(shape(ShapeKind::kCone, {0, 3.5f, 3}, {-90, 0, 0}, {0.6f, 0.6f, 1.5f}));
+  s.push_back(shape(ShapeKind::kSphere, {0, 3, -4}, {0, 0, 0}, {1.5f, 1.5f, 1.5f}));
+  s.push_back(shape(ShapeKind::kSphere, {0.3f, 3, -4}, {0, 0, 0}, {0.5f, 0.5f, 0.5f}));
+  s.push_back(shape(ShapeKind::kSphere, {5, 3, -3}, {0, 0, 0}, {0.6f, 0.6f, 0.6f}));
+  s.push_back(shape(ShapeKind::kSphere, {5.8f, 3, -3}, {0, 0, 0}, {0.6f, 0.6f, 0.6f}));
+  s.push_back(shape(ShapeKind::kSphere, {-5, 3, -5}, {0, 0, 0}, {1, 1, 1}));
+  for (int k = 0; k < 4; ++k)
+    s.push_back(shape(ShapeKind::kSphere, {-5 + (k % 2 ? 1.1f : -1.1f), 3, -5 + (k / 2 ? 1.1f : -1.1f)}, {0, 0, 0},
+                      {0.3f, 0.3f, 0.3f}));
+  REQUIRE(s.size() == kCount);
+  return prims;
+}
+
+bool within(const Aabb& box, Vec3 p) {
+  return glm::all(glm::greaterThanEqual(p, box.lo)) && glm::all(glm::lessThanEqual(p, box.hi));
+}
+
+struct Answer {
+  bool found;
+  Hit hit;
+  float tmax;
+};
+
+Answer walked(const Bvh& bvh, Ray ray) {
+  Answer a;
+  a.found = bvh.intersect(ray, a.hit);
+  a.tmax = ray.tmax;
+  return a;
+}
+
+Answer from_inside(const Bvh& bvh, uint32_t inside, Ray ray) {
+  Answer a;
+  a.found = bvh.intersect_from_inside(inside, ray, a.hit);
+  a.tmax = ray.tmax;
+  return a;
+}
+
+void require_same(const Answer& a, const Answer& b) {
+  REQUIRE(a.found == b.found);
+  REQUIRE(a.tmax == b.tmax);
+  if (!a.found) return;
+  REQUIRE(a.hit.t == b.hit.t);
+  REQUIRE(a.hit.prim == b.hit.prim);
+  REQUIRE(a.hit.part == b.hit.part);
+}
+
+}  // namespace
+
+TEST_CASE("Closed shapes get an interior listing the shapes whose boxes reach theirs", "[shape_interiors]") {
+  const Bvh bvh(test_shapes(), {});
+  const std::vector<ShapeInterior>& in = bvh.interiors();
+  REQUIRE(in.size() == kCount);
+  CHECK_FALSE(in[kFloor].usable());  // a plane bounds nothing
+  const auto others = [&](Id id) { return std::vector<uint32_t>(in[id].others, in[id].others + in[id].count); };
+  REQUIRE(in[kBall].usable());
+  CHECK(others(kBall) == std::vector<uint32_t>{kFloor});  // touching counts
+  CHECK(others(kBlock) == std::vector<uint32_t>{kFloor});
+  CHECK(others(kPillar) == std::vector<uint32_t>{kFloor});
+  REQUIRE(in[kTurned].usable());
+  CHECK(in[kTurned].count == 0);
+  CHECK(in[kCone].count == 0);
+  CHECK(others(kShell) == std::vector<uint32_t>{kCore});
+  CHECK(others(kCore) == std::vector<uint32_t>{kShell});
+  CHECK(others(kLeft) == std::vector<uint32_t>{kRight});
+  CHECK_FALSE(in[kCrowded].usable());  // four against it: more than kMaxOthers
+  REQUIRE(in[kCrowd0].usable());
+  CHECK(others(kCrowd0) == std::vector<uint32_t>{kCrowded});
+
+  // Triangles near a shape make its interior unusable: they are not tested there.
+  TriangleMesh mesh;
+  mesh.positions = {Vec3(-0.5f, 1.0f, 0.5f), Vec3(0.5f, 1.0f, 0.5f), Vec3(0.0f, 1.5f, 0.5f),
+                    Vec3(20, 20, 20),        Vec3(21, 20, 20),       Vec3(20, 21, 20)};
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  const Bvh with_mesh(make_primitive_set({mesh}, {test_shapes().shapes[kBall], test_shapes().shapes[kTurned]}), {});
+  REQUIRE(with_mesh.interiors().size() == 2);
+  CHECK_FALSE(with_mesh.interiors()[0].usable());
+  CHECK(with_mesh.interiors()[1].usable());
+
+  // A set without closed shapes keeps none.
+  PrimitiveSet planes;
+  planes.shapes.push_back(test_shapes().shapes[kFloor]);
+  CHECK(Bvh(planes, {}).interiors().empty());
+}
+
+TEST_CASE("A ray from inside a closed shape meets what the walk meets, bit for bit", "[shape_interiors]") {
+  const PrimitiveSet prims = test_shapes();
+  const Bvh bvh(prims, {});
+  Rng rng(11);
+  int inside_rays = 0, shortcuts = 0;
+  for (uint32_t id = kBall; id < kCount; ++id) {
+    const AnalyticShape& s = prims.shapes[id];
+    const Vec3 centre = 0.5f * (world_bounds(s).lo + world_bounds(s).hi);
+    for (int i = 0; i < 3000; ++i) {
+      // A point on the surface, found as a ray from outside finds it, and its surface record.
+      const Vec3 from = centre + 6.0f * random_unit(rng);
+      Ray probe(from, centre + 0.4f * random_unit(rng) * (world_bounds(s).hi - world_bounds(s).lo) * 0.5f - from);
+      Hit hit;
+      if (!intersect_shape(s, probe, hit)) continue;
+      const SurfaceInteraction si = shape_surface(s, probe, hit, false);
+      // Rays leaving it inwards (refractions in, reflections within) and outwards, each as the
+      // integrator makes them: from the offset origin.
+      for (int j = 0; j < 4; ++j) {
+        Vec3 d = random_unit(rng);
+        const bool inwards = j < 3;
+        if ((glm::dot(d, si.geometric_normal) < 0.0f) != inwards) d = -d;
+        const Ray ray(offset_ray_origin(si.position, si.position_error, si.geometric_normal, d), d);
+        const Answer walk = walked(bvh, ray);
+        require_same(from_inside(bvh, id, ray), walk);
+        if (inwards) {
+          ++inside_rays;
+          // Whether the walk was skipped: the query's own conditions.
+          const ShapeInterior& interior = bvh.interiors()[id];
+          Hit own;
+          if (interior.usable() && within(interior.box, ray.origin) && intersect_shape(s, ray, own) &&
+              within(interior.box, ray.at(own.t)))
+            ++shortcuts;
+        }
+      }
+    }
+  }
+  INFO(inside_rays << " rays inwards, " << shortcuts << " answered without the walk");
+  CHECK(inside_rays > 20000);
+  CHECK(shortcuts > inside_rays / 2);
+
+  // Wrong hints give the walk's answer: rays from anywhere, named as inside any id (triangles',
+  // kNoPrimitive, past the end).
+  for (int i = 0; i < 20000; ++i) {
+    const Ray ray(Vec3(-7.0f, -1.0f, -7.0f) + 14.0f * Vec3(rng.next_float(), 0.5f * rng.next_float(), rng.next_float()),
+                  random_unit(rng));
+    const uint32_t hint = i % 7 == 0 ? kNoPrimitive : rng.next_u32() % (kCount + 2);
+    require_same(from_inside(bvh, hint, ray), walked(bvh, ray));
+  }
+  // A ray that cannot be walked (NaN) is a miss either way.
+  Ray nan_ray(Vec3(0.0f, 1.0f, 0.0f), Vec3(std::nanf(""), 0.0f, 1.0f));
+  require_same(from_inside(bvh, kBall, nan_ray), walked(bvh, nan_ray));
+}
