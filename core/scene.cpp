@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include "core/storage_only.h"
+
 namespace rt {
 
 namespace {
@@ -66,7 +68,8 @@ bool Scene::intersect(Ray& ray, SceneHit& out, uint32_t inside) const {
 }
 
 void Scene::intersect_packet(Ray* rays, SceneHit* out, int count) const {
-  Hit hits[kPacketSize];
+  StorageOnly<Hit, kPacketSize> storage;  // the walk starts each of the first count afresh
+  Hit* hits = storage.at;
   const unsigned found = bvh.intersect_packet(rays, hits, count);
   for (int i = 0; i < count; ++i) {
     out[i].surface = (found >> i & 1u) != 0;

@@ -1,12 +1,14 @@
 #include "core/render/direct_lighting.h"
 
 #include <algorithm>
+#include <new>
 #include <optional>
 
 #include "core/lights/rect_light_batch.h"
 #include "core/lights/stratified_grid_batch.h"
 #include "core/render/scene_lights.h"
 #include "core/render/shadow_transmittance.h"
+#include "core/storage_only.h"
 #include "materials/phong.h"
 #include "materials/phong_batch.h"
 
@@ -263,9 +265,11 @@ void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, c
   // With glass, a ray the packet finds blocked may only be filtered: left to shadow_transmittance,
   // which counts it then. One that meets nothing is lit, glass or not.
   const bool opaque = scene.all_opaque;
-  std::optional<ShadowRays> from[kPacketSize];
+  // Each made where there is a point: optionals' flags were set by zeroing the whole array, a
+  // 384-byte `rep stos` per packet (8% of this function's samples).
+  StorageOnly<ShadowRays, kPacketSize> from;
   for (int i = 0; i < count; ++i)
-    if (has[i]) from[i].emplace(s[i]);
+    if (has[i]) new (&from.at[i]) ShadowRays(s[i]);
   const size_t lights = std::min(scene.lights.size(), PointShadows::kMaxLights);
   for (size_t l = 0; l < lights; ++l) {
     const Light& light = scene.lights[l];
@@ -287,7 +291,7 @@ void find_point_shadows(const EvaluatedSurface* s, const bool* has, int count, c
                 faint(phong_reflectance(p.diffuse, p.specular, p.shininess, p.n, ls.direction, p.wo), ls.radiance,
                       1.0f))
               continue;
-            if (!from[i]->make(ls.direction, ls.distance, ls.radiance, rays[made])) continue;
+            if (!from.at[i].make(ls.direction, ls.distance, ls.radiance, rays[made])) continue;
             out[i].direction[l] = ls.direction;
             out[i].radiance[l] = ls.radiance;
             owner[made++] = i;

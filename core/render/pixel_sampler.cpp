@@ -2,18 +2,19 @@
 
 #include <algorithm>
 #include <new>
-#include <type_traits>
 
 #include "core/render/adaptive_sampler.h"
 #include "core/render/camera_ray_batch.h"
 #include "core/render/path_sampler.h"
+#include "core/storage_only.h"
 
 namespace rt {
 
 void CameraBatch::trace(PixelContext& ctx) {
   const RenderSettings& s = ctx.settings;
   const Camera& camera = ctx.view();
-  Ray rays[kPacketSize];
+  StorageOnly<Ray, kPacketSize> made;  // each ray written whole where there is one
+  Ray* rays = made.at;
   int ray_of[kPacketSize];  // which ray a sample has; -1: none (outside a fisheye's circle)
   int rays_made = 0;
   if (batches_camera_rays(camera)) {  // every sample sees, none reads a lens sample
@@ -38,16 +39,13 @@ void CameraBatch::trace(PixelContext& ctx) {
     rays[rays_made] = camera.generate_ray(c.px, c.py, s.width, s.height, lens);
     ray_of[i] = rays_made++;
   }
-  SceneHit met[kPacketSize];
+  StorageOnly<SceneHit, kPacketSize> hits;  // intersect_packet writes each of the first rays_made
+  SceneHit* met = hits.at;
   ctx.scene.intersect_packet(rays, met, rays_made);
   ctx.counters[RayKind::kCamera] += static_cast<uint64_t>(rays_made);
   // Each ray's context, in ray order, shaded together (Integrator::radiance_from_hits), made in
-  // place where there is a ray (storage only: no flags to set and test, nothing to destroy).
-  static_assert(std::is_trivially_destructible_v<TraceContext>);
-  union Traces {
-    Traces() {}
-    TraceContext at[kPacketSize];
-  } traces;
+  // place where there is a ray (no flags to set and test, nothing to destroy).
+  StorageOnly<TraceContext, kPacketSize> traces;
   TraceContext* trace_of[kPacketSize];
   const float spread = camera.pixel_spread(s.width, s.height), footprint = camera.pixel_footprint(s.width, s.height);
   for (int i = 0; i < count; ++i) {

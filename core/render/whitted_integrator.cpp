@@ -1,9 +1,9 @@
 #include "core/render/whitted_integrator.h"
 
 #include <new>
-#include <type_traits>
 
 #include "core/render/direct_lighting.h"
+#include "core/storage_only.h"
 #include "materials/glossy.h"
 #include "materials/optics.h"
 
@@ -87,13 +87,9 @@ Vec3 WhittedIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit&
 
 void WhittedIntegrator::radiance_from_hits(const Ray* rays, const SceneHit* met, int count, TraceContext* const* ctx,
                                            Vec3* out) const {
-  // Storage only: each surface is made in place where there is one. (A made array and copies
-  // into it cost antialias.json 5%, measured.)
-  static_assert(std::is_trivially_destructible_v<EvaluatedSurface>);
-  union Surfaces {
-    Surfaces() {}
-    EvaluatedSurface at[kPacketSize];
-  } surfaces;
+  // Each surface is made in place where there is one. (A made array and copies into it cost
+  // antialias.json 5%, measured.)
+  StorageOnly<EvaluatedSurface, kPacketSize> surfaces;
   EvaluatedSurface* s = surfaces.at;
   float cone_width[kPacketSize];
   bool has[kPacketSize];
