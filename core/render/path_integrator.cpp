@@ -185,8 +185,11 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     ray.origin = offset_ray_origin(s.position, s.position_error, s.ng, b.wi);
     ray.direction = b.wi;
     ++ctx.counters[RayKind::kBounce];
+    // Into the surface's own primitive (through it from outside, or reflected on its inside): a
+    // closed shape's neighbours answer without the walk (Bvh::intersect_from_inside).
+    const uint32_t inside = b.transmitted == s.entering ? met.hit.prim : kNoPrimitive;
     met = SceneHit{};
-    scene.intersect(ray, met);
+    scene.intersect(ray, met, inside);
   }
   return radiance;
 }
