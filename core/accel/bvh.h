@@ -139,6 +139,11 @@ class Bvh {
   // (ShadowVolume::beside_plane: a floor or a wall under the rays' origin) is left out. Every
   // crossing such a ray can have lies in the leaves found: none, and nothing is in its way.
   bool leaves_meeting(const ShadowVolume& volume, BvhLeafSet& out) const;
+  // Calls visit(leaf) for each leaf whose box, and every box above it, `meets` (a test of an
+  // Aabb) accepts: depth first, each node's children in their order. Stops when visit returns
+  // false, and then returns false.
+  template <class Meets, class Visit>
+  bool for_each_leaf_meeting(const Meets& meets, const Visit& visit) const;
   // visit_hits() for a ray inside a volume whose only leaf is `leaf`: the same crossings in the
   // same order (a walk would find no other leaf's).
   template <class Visitor>
@@ -227,6 +232,30 @@ class Bvh {
   // and count refer to it) and points the leaf references at them.
   void fill_leaves(const PrimitiveSet& prims, const uint32_t* order, unsigned threads);
 };
+
+template <class Meets, class Visit>
+bool Bvh::for_each_leaf_meeting(const Meets& meets, const Visit& visit) const {
+  if (primitive_count() == 0) return true;
+  if (BvhRef::is_leaf(root_)) return !meets(bounds_) || visit(root_);
+  uint32_t stack[kBvhWidth * kMaxDepth + 4];
+  int top = 0;
+  stack[top++] = root_;
+  while (top > 0) {
+    const BvhNode& node = nodes_[stack[--top]];
+    for (int c = 0; c < kBvhWidth; ++c) {
+      if (!child_used(node, c)) continue;
+      const Aabb box{Vec3(node.bounds[0][c], node.bounds[2][c], node.bounds[4][c]),
+                     Vec3(node.bounds[1][c], node.bounds[3][c], node.bounds[5][c])};
+      if (!meets(box)) continue;
+      if (!BvhRef::is_leaf(node.child[c])) {
+        stack[top++] = node.child[c];
+      } else if (!visit(node.child[c])) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
 
 // A mesh's BVH placed by `transform`: the instance with its world bounds filled in.
 MeshInstance place_mesh(const Bvh& mesh_bvh, const Transform& transform, uint32_t mesh, uint32_t material,

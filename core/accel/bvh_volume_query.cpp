@@ -21,31 +21,15 @@ bool leaf_reachable(const Bvh& bvh, uint32_t leaf, const ShadowVolume& volume) {
 
 bool Bvh::leaves_meeting(const ShadowVolume& volume, BvhLeafSet& out) const {
   out.count = 0;
-  if (primitive_count() == 0) return true;
-  const auto add = [&](uint32_t leaf) {
-    if (!leaf_reachable(*this, leaf, volume)) return true;
-    if (out.count == BvhLeafSet::kMax) return false;
-    out.leaf[out.count++] = leaf;
-    return true;
-  };
-  if (BvhRef::is_leaf(root_)) return !volume.meets(bounds_) || add(root_);
-  // Depth first, each node's children in their order; a full set ends the walk (the caller then
-  // traces as usual), so a volume over a large mesh costs a few nodes, not the tree.
-  uint32_t stack[kBvhWidth * kMaxDepth + 4];
-  int top = 0;
-  stack[top++] = root_;
-  while (top > 0) {
-    const BvhNode& node = nodes_[stack[--top]];
-    for (unsigned mask = volume.meets_rows(node.bounds); mask; mask &= mask - 1) {
-      const uint32_t child = node.child[__builtin_ctz(mask)];
-      if (!BvhRef::is_leaf(child)) {
-        stack[top++] = child;
-      } else if (!add(child)) {
-        return false;
-      }
-    }
-  }
-  return true;
+  // A full set ends the walk (the caller then traces as usual), so a volume over a large mesh
+  // costs a few nodes, not the tree.
+  return for_each_leaf_meeting([&](const Aabb& box) { return volume.meets(box); },
+                               [&](uint32_t leaf) {
+                                 if (!leaf_reachable(*this, leaf, volume)) return true;
+                                 if (out.count == BvhLeafSet::kMax) return false;
+                                 out.leaf[out.count++] = leaf;
+                                 return true;
+                               });
 }
 
 }  // namespace rt

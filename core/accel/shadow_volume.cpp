@@ -58,15 +58,6 @@ bool ShadowVolume::meets(const Aabb& box) const {
   return true;
 }
 
-unsigned ShadowVolume::meets_rows(const float (&rows)[6][8]) const {
-  unsigned mask = 0;
-  for (int i = 0; i < 8; ++i) {
-    const Aabb box{Vec3(rows[0][i], rows[2][i], rows[4][i]), Vec3(rows[1][i], rows[3][i], rows[5][i])};
-    if (meets(box)) mask |= 1u << i;
-  }
-  return mask;
-}
-
 bool ShadowVolume::beside_plane(const Transform& plane) const {
   const float origin_y = plane.point_to_object(apex_).y;  // as transformed_ray makes it
   if (!(origin_y != 0.0f) || !std::isfinite(origin_y)) return false;

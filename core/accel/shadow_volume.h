@@ -22,9 +22,6 @@ class ShadowVolume {
   // of any ray inside it): outside its bounding box, or beyond one of its five faces. True may
   // still be a box that misses it (no edge-edge tests): the answer is conservative, never wrong.
   bool meets(const Aabb& box) const;
-  // meets() for the eight child boxes of a BVH node's rows (lo x, hi x, lo y, hi y, lo z, hi z):
-  // bit i for child i. An unused child's inverted box meets nothing.
-  unsigned meets_rows(const float (&rows)[6][8]) const;
   // True when no ray from the apex to the base can cross the plane y = 0 of `plane`'s object
   // space (a plane shape's) in front of its origin: the apex, as intersect_plane sees it (the
   // same floats), lies off the plane on the side the whole base lies on, by far more than

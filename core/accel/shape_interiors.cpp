@@ -12,15 +12,6 @@ bool closed(ShapeKind kind) { return kind != ShapeKind::kPlane; }  // convex, an
 
 Aabb grown(const Aabb& box, float by) { return {box.lo - Vec3(by), box.hi + Vec3(by)}; }
 
-bool meet(const Aabb& a, const Aabb& b) {
-  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
-         b.lo.z <= a.hi.z;
-}
-
-bool within(const Aabb& box, Vec3 p) {
-  return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y && p.z >= box.lo.z && p.z <= box.hi.z;
-}
-
 // The primitives of leaf `leaf` other than `self` whose boxes meet `region`, added to `out`;
 // false when one is not an analytic shape or there are too many.
 bool add_leaf(const Bvh& bvh, uint32_t leaf, uint32_t self, const Aabb& region, ShapeInterior& out) {
@@ -28,7 +19,7 @@ bool add_leaf(const Bvh& bvh, uint32_t leaf, uint32_t self, const Aabb& region, 
   const uint32_t first = BvhRef::first(leaf), end = first + BvhRef::count(leaf);
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
-    if (s.id == self || !meet(bvh.primitive_bounds(s.id, s), region)) continue;
+    if (s.id == self || !region.meets(bvh.primitive_bounds(s.id, s))) continue;
     if (bvh.kind(s.id) != PrimitiveKind::kShape || out.count == ShapeInterior::kMaxOthers) return false;
     out.others[out.count++] = s.id;
   }
@@ -45,29 +36,9 @@ ShapeInterior interior_of(const Bvh& bvh, uint32_t id) {
   in.box = grown(box, margin);
   const Aabb region = grown(box, 2.0f * margin);
   in.count = 0;
-  bool ok = true;
-  if (BvhRef::is_leaf(bvh.root())) {
-    ok = add_leaf(bvh, bvh.root(), id, region, in);
-  } else {
-    uint32_t stack[kBvhWidth * Bvh::kMaxDepth + 4];
-    int top = 0;
-    stack[top++] = bvh.root();
-    while (ok && top > 0) {
-      const BvhNode& node = bvh.nodes()[stack[--top]];
-      for (int c = 0; ok && c < kBvhWidth; ++c) {
-        if (!child_used(node, c)) continue;
-        const Aabb child{Vec3(node.bounds[0][c], node.bounds[2][c], node.bounds[4][c]),
-                         Vec3(node.bounds[1][c], node.bounds[3][c], node.bounds[5][c])};
-        if (!meet(child, region)) continue;
-        if (BvhRef::is_leaf(node.child[c])) {
-          ok = add_leaf(bvh, node.child[c], id, region, in);
-        } else {
-          stack[top++] = node.child[c];
-        }
-      }
-    }
-  }
-  if (!ok) in.count = ShapeInterior::kUnusable;
+  if (!bvh.for_each_leaf_meeting([&](const Aabb& b) { return region.meets(b); },
+                                 [&](uint32_t leaf) { return add_leaf(bvh, leaf, id, region, in); }))
+    in.count = ShapeInterior::kUnusable;
   return in;
 }
 
@@ -99,12 +70,12 @@ bool Bvh::intersect_from_inside(uint32_t inside, Ray& ray, Hit& hit) const {
   const uint32_t index = inside - ranges_.shape_begin;  // wraps past the end for any other id
   if (index >= interiors_.size()) return intersect(ray, hit);
   const ShapeInterior& interior = interiors_[index];
-  if (!interior.usable() || !within(interior.box, ray.origin)) return intersect(ray, hit);
+  if (!interior.usable() || !interior.box.contains(ray.origin)) return intersect(ray, hit);
   const float tmax = ray.tmax;
   hit = Hit{};
   // The segment from the origin to the shape's crossing lies in the box when both ends do, and
   // so does every crossing before it: the others' boxes are the only ones that reach there.
-  if (!take_shape(*this, inside, ray, hit) || !within(interior.box, ray.at(hit.t))) {
+  if (!take_shape(*this, inside, ray, hit) || !interior.box.contains(ray.at(hit.t))) {
     ray.tmax = tmax;  // not the shape's inside after all (a ray that grazes it): the walk
     return intersect(ray, hit);
   }

@@ -69,10 +69,6 @@ PrimitiveSet test_shapes() {
   return prims;
 }
 
-bool within(const Aabb& box, Vec3 p) {
-  return glm::all(glm::greaterThanEqual(p, box.lo)) && glm::all(glm::lessThanEqual(p, box.hi));
-}
-
 struct Answer {
   bool found;
   Hit hit;
@@ -169,8 +165,8 @@ TEST_CASE("A ray from inside a closed shape meets what the walk meets, bit for b
           // Whether the walk was skipped: the query's own conditions.
           const ShapeInterior& interior = bvh.interiors()[id];
           Hit own;
-          if (interior.usable() && within(interior.box, ray.origin) && intersect_shape(s, ray, own) &&
-              within(interior.box, ray.at(own.t)))
+          if (interior.usable() && interior.box.contains(ray.origin) && intersect_shape(s, ray, own) &&
+              interior.box.contains(ray.at(own.t)))
             ++shortcuts;
         }
       }
