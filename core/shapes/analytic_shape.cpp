@@ -45,6 +45,25 @@ SurfacePatch object_space_patch(ShapeKind kind, Vec3 p, uint32_t part) {
   return {};
 }
 
+namespace {
+
+// Inlined into shape_surface: the call to object_space_patch, its 11-float record, and the point
+// passed in a register loaded whole from onto_surface's narrow stores, cost reflection.json 1.4%.
+[[gnu::always_inline]] inline Vec3 normal_at(ShapeKind kind, Vec3 p, uint32_t part) {
+  switch (kind) {
+    case ShapeKind::kSphere: return glm::normalize(p);  // as sphere_patch makes it
+    case ShapeKind::kCube: return cube_normal(cube_face(part));
+    case ShapeKind::kPlane: return Vec3(0.0f, 1.0f, 0.0f);
+    case ShapeKind::kCylinder: return cylinder_normal(p, part);
+    case ShapeKind::kCone: return cone_normal(p, part);
+  }
+  return SurfacePatch{}.normal;
+}
+
+}  // namespace
+
+Vec3 object_space_normal(ShapeKind kind, Vec3 p, uint32_t part) { return normal_at(kind, p, part); }
+
 Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
   const auto faces_at = [&](int axis, float value) {  // a flat face: exactly on it, no error
     p[axis] = value;
@@ -81,18 +100,20 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
   // The hit point as the ray found it is only as good as t; put back on the surface it is within
   // a few ulps of it (pbrt-v4's reprojection), which keeps rays leaving it close (core/ray.h).
   const Vec3 object_error = onto_surface(shape.kind, p_object, hit.part);
-  SurfacePatch patch;
-  if (texcoords || shape.kind != ShapeKind::kSphere) patch = object_space_patch(shape.kind, p_object, hit.part);
-  else patch.normal = glm::normalize(p_object);  // as sphere_patch makes it
   SurfaceInteraction si;
-  si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
-  si.geometric_normal = shape.transform.normal_to_world_unit(patch.normal);
-  si.shading_normal = si.geometric_normal;
+  Vec3 normal;
   if (texcoords) {
+    const SurfacePatch patch = object_space_patch(shape.kind, p_object, hit.part);
+    normal = patch.normal;
     si.texcoord[0] =
         UvFrame{patch.uv, shape.transform.vector_to_world(patch.dpdu), shape.transform.vector_to_world(patch.dpdv)};
     si.texcoord[1] = si.texcoord[0];
+  } else {
+    normal = normal_at(shape.kind, p_object, hit.part);
   }
+  si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
+  si.geometric_normal = shape.transform.normal_to_world_unit(normal);
+  si.shading_normal = si.geometric_normal;
   si.object_position = p_object;
   si.object_from_world = Mat3(shape.transform.to_object);
   if (shape.kind == ShapeKind::kCylinder || shape.kind == ShapeKind::kCone) {

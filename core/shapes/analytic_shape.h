@@ -29,6 +29,9 @@ inline Ray to_object_ray(const AnalyticShape& shape, const Ray& ray) { return tr
 
 bool intersect_object_space(ShapeKind kind, const Ray& object_ray, Hit& hit);
 SurfacePatch object_space_patch(ShapeKind kind, Vec3 object_point, uint32_t part);
+// object_space_patch(...).normal alone, to the bit: all a hit needs whose material reads no
+// texture coordinates.
+Vec3 object_space_normal(ShapeKind kind, Vec3 object_point, uint32_t part);
 
 inline bool intersect_shape(const AnalyticShape& shape, const Ray& ray, Hit& hit) {
   Ray r = to_object_ray(shape, ray);

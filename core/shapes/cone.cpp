@@ -1,6 +1,5 @@
 #include "core/shapes/cone.h"
 
-#include "core/shapes/cylinder.h"
 #include "core/shapes/quadratic.h"
 
 namespace rt {
@@ -30,11 +29,9 @@ bool intersect_cone(const Ray& ray, Hit& hit) {
 SurfacePatch cone_patch(Vec3 p, uint32_t part) {
   if (part == kConeBase) return cap_patch(p, true);
   SurfacePatch s;
-  float phi = std::atan2(p.y, p.x);
-  if (phi < 0.0f) phi += 2.0f * kPi;
-  const Vec3 radial(std::cos(phi), std::sin(phi), 0.0f);
-  // Gradient of x^2 + y^2 - z^2 at radius z is (radial, -1) * z: the side leans at 45 degrees.
-  s.normal = glm::normalize(Vec3(radial.x, radial.y, -1.0f));
+  const float phi = angle_around_z(p);
+  const Vec3 radial = radial_at(phi);
+  s.normal = cone_side_normal(radial);
   const float z = std::max(p.z, 0.0f);
   s.uv = Vec2(1.0f - phi / (2.0f * kPi), z);
   s.dpdu = -2.0f * kPi * z * Vec3(-radial.y, radial.x, 0.0f);  // vanishes at the apex

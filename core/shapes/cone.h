@@ -7,6 +7,7 @@
 
 #include "core/hit.h"
 #include "core/ray.h"
+#include "core/shapes/cylinder.h"
 
 namespace rt {
 
@@ -14,5 +15,12 @@ enum ConePart : uint32_t { kConeSide = 0, kConeBase = 2 };
 
 bool intersect_cone(const Ray& ray, Hit& hit);
 SurfacePatch cone_patch(Vec3 p, uint32_t part);
+
+// Gradient of x^2 + y^2 - z^2 at radius z is (radial, -1) * z: the side leans at 45 degrees.
+inline Vec3 cone_side_normal(Vec3 radial) { return glm::normalize(Vec3(radial.x, radial.y, -1.0f)); }
+// The normal at p on `part`, as cone_patch makes it (a hit that needs no more).
+inline Vec3 cone_normal(Vec3 p, uint32_t part) {
+  return part == kConeBase ? cap_normal(true) : cone_side_normal(radial_at(angle_around_z(p)));
+}
 
 }  // namespace rt

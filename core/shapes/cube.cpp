@@ -37,16 +37,10 @@ bool intersect_cube(const Ray& ray, Hit& hit) {
 }
 
 SurfacePatch cube_patch(Vec3 p, uint32_t part) {
-  // Per face (+X, -X, +Y, -Y, +Z, -Z): the directions of growing u (right) and v (down) seen from
-  // outside, like the faces of a die standing on -Y with +Z towards the viewer.
-  static constexpr float kFrames[6][2][3] = {
-      {{0, 0, -1}, {0, -1, 0}}, {{0, 0, 1}, {0, -1, 0}}, {{1, 0, 0}, {0, 0, 1}},
-      {{1, 0, 0}, {0, 0, -1}},  {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}},
-  };
-  const auto& f = kFrames[part < 6 ? part : 0];
-  const Vec3 right(f[0][0], f[0][1], f[0][2]), down(f[1][0], f[1][1], f[1][2]);
+  const CubeFace face = cube_face(part);
+  const Vec3 right = face.right, down = face.down;
   SurfacePatch s;
-  s.normal = glm::cross(down, right);  // right x down points in: the image reads correctly from outside
+  s.normal = cube_normal(face);
   s.uv = Vec2(0.5f * (1.0f + glm::dot(p, right)), 0.5f * (1.0f + glm::dot(p, down)));
   s.dpdu = 2.0f * right;
   s.dpdv = 2.0f * down;

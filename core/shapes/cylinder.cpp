@@ -51,7 +51,7 @@ bool intersect_cylinder(const Ray& ray, Hit& hit) {
 
 SurfacePatch cap_patch(Vec3 p, bool top) {
   SurfacePatch s;
-  s.normal = Vec3(0.0f, 0.0f, top ? 1.0f : -1.0f);
+  s.normal = cap_normal(top);
   s.uv = Vec2(0.5f * (top ? 1.0f + p.x : 1.0f - p.x), 0.5f * (1.0f - p.y));
   s.dpdu = Vec3(top ? 2.0f : -2.0f, 0.0f, 0.0f);
   s.dpdv = Vec3(0.0f, -2.0f, 0.0f);
@@ -61,9 +61,8 @@ SurfacePatch cap_patch(Vec3 p, bool top) {
 SurfacePatch cylinder_patch(Vec3 p, uint32_t part) {
   if (part != kCylinderSide) return cap_patch(p, part == kCylinderTop);
   SurfacePatch s;
-  float phi = std::atan2(p.y, p.x);
-  if (phi < 0.0f) phi += 2.0f * kPi;
-  const Vec3 radial(std::cos(phi), std::sin(phi), 0.0f);
+  const float phi = angle_around_z(p);
+  const Vec3 radial = radial_at(phi);
   s.normal = radial;
   s.uv = Vec2(phi / (2.0f * kPi), 1.0f - p.z);
   s.dpdu = 2.0f * kPi * Vec3(-radial.y, radial.x, 0.0f);

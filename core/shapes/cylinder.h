@@ -22,4 +22,18 @@ bool intersect_unit_disc(const Ray& ray, float z_cap, double& t);
 bool side_root_in_height(const Ray& ray, double t0, double t1, double& t);
 SurfacePatch cap_patch(Vec3 p, bool top);
 
+// Shared with the cone: the angle around +Z from +X in [0, 2 pi), the sides' u, and the unit
+// vector at that angle in the XY plane, the sides' normals' direction.
+inline float angle_around_z(Vec3 p) {
+  const float phi = std::atan2(p.y, p.x);
+  return phi < 0.0f ? phi + 2.0f * kPi : phi;
+}
+inline Vec3 radial_at(float phi) { return Vec3(std::cos(phi), std::sin(phi), 0.0f); }
+inline Vec3 cap_normal(bool top) { return Vec3(0.0f, 0.0f, top ? 1.0f : -1.0f); }
+
+// The normal at p on `part`, as cylinder_patch makes it (a hit that needs no more).
+inline Vec3 cylinder_normal(Vec3 p, uint32_t part) {
+  return part != kCylinderSide ? cap_normal(part == kCylinderTop) : radial_at(angle_around_z(p));
+}
+
 }  // namespace rt

@@ -2,6 +2,7 @@
 // faces), and their tangent frames: orthogonal, u right and v down seen from outside (so images
 // read unmirrored), and equal to finite differences of the surface position.
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/material.h"
@@ -143,4 +144,42 @@ TEST_CASE("shape uv: a shape's (u, v) frame is made only where the material read
   Material brushed;
   brushed.pbr.layers.anisotropy.strength = 0.5f;
   CHECK(brushed.reads_texcoords());
+}
+
+TEST_CASE("shape uv: the normal made without the (u, v) frame is the frame's normal to the bit", "[uv]") {
+  struct Part {
+    ShapeKind kind;
+    uint32_t part;
+  };
+  const Part parts[] = {{ShapeKind::kSphere, 0},
+                        {ShapeKind::kPlane, 0},
+                        {ShapeKind::kCube, 0},
+                        {ShapeKind::kCube, 1},
+                        {ShapeKind::kCube, 2},
+                        {ShapeKind::kCube, 3},
+                        {ShapeKind::kCube, 4},
+                        {ShapeKind::kCube, 5},
+                        {ShapeKind::kCube, 6},
+                        {ShapeKind::kCylinder, kCylinderSide},
+                        {ShapeKind::kCylinder, kCylinderBase},
+                        {ShapeKind::kCylinder, kCylinderTop},
+                        {ShapeKind::kCone, kConeSide},
+                        {ShapeKind::kCone, kConeBase}};
+  uint32_t state = 12345u;
+  const auto next = [&] {  // in [-1.25, 1.25): points a little off the surface too, and the seams' signs
+    state = state * 1664525u + 1013904223u;
+    return 2.5f * static_cast<float>(state >> 8) / 16777216.0f - 1.25f;
+  };
+  for (const Part& k : parts) {
+    INFO("shape kind " << static_cast<int>(k.kind) << ", part " << k.part);
+    for (int i = 0; i < 2000; ++i) {
+      Vec3 p(next(), next(), next());
+      if (i % 2 == 0 && k.part < 6) p = onto_surface(k.kind, k.part, p);  // part 6: no cube face
+      if (i % 7 == 0) p.y = i % 3 == 0 ? -0.0f : 0.0f;                    // on the seams of atan2
+      const Vec3 made = object_space_normal(k.kind, p, k.part);
+      const Vec3 framed = object_space_patch(k.kind, p, k.part).normal;
+      // Bits, not values: -0 and +0 too.
+      REQUIRE(std::memcmp(&made, &framed, sizeof(Vec3)) == 0);
+    }
+  }
 }
