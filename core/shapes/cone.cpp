@@ -30,7 +30,7 @@ SurfacePatch cone_patch(Vec3 p, uint32_t part) {
   if (part == kConeBase) return cap_patch(p, true);
   SurfacePatch s;
   const float phi = angle_around_z(p);
-  const Vec3 radial = radial_at(phi);
+  const Vec3 radial = radial_towards(p);
   s.normal = cone_side_normal(radial);
   const float z = std::max(p.z, 0.0f);
   s.uv = Vec2(1.0f - phi / (2.0f * kPi), z);

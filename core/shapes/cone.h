@@ -20,7 +20,7 @@ SurfacePatch cone_patch(Vec3 p, uint32_t part);
 inline Vec3 cone_side_normal(Vec3 radial) { return glm::normalize(Vec3(radial.x, radial.y, -1.0f)); }
 // The normal at p on `part`, as cone_patch makes it (a hit that needs no more).
 inline Vec3 cone_normal(Vec3 p, uint32_t part) {
-  return part == kConeBase ? cap_normal(true) : cone_side_normal(radial_at(angle_around_z(p)));
+  return part == kConeBase ? cap_normal(true) : cone_side_normal(radial_towards(p));
 }
 
 }  // namespace rt

@@ -62,7 +62,7 @@ SurfacePatch cylinder_patch(Vec3 p, uint32_t part) {
   if (part != kCylinderSide) return cap_patch(p, part == kCylinderTop);
   SurfacePatch s;
   const float phi = angle_around_z(p);
-  const Vec3 radial = radial_at(phi);
+  const Vec3 radial = radial_towards(p);
   s.normal = radial;
   s.uv = Vec2(phi / (2.0f * kPi), 1.0f - p.z);
   s.dpdu = 2.0f * kPi * Vec3(-radial.y, radial.x, 0.0f);
