@@ -125,12 +125,12 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
                      const PointShadows* known) {
   const Scene& scene = ctx.scene;
   Vec3 sum = scene.ambient * s.diffuse;
-  const int samples = ctx.settings.scale_secondary_shadows
-                          ? secondary_shadow_samples(ctx.settings.shadow_samples, weight)
-                          : ctx.settings.shadow_samples;
-  // One sample of an area light sits at its centre when the scene asks for one (a hard shadow, as
-  // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
-  const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
+  // An area light's or the emitters' samples: worked out only for them (its ceil's conversions were
+  // 1% of refraction.json, which a point light lights).
+  const auto area_samples = [&] {
+    return ctx.settings.scale_secondary_shadows ? secondary_shadow_samples(ctx.settings.shadow_samples, weight)
+                                                : ctx.settings.shadow_samples;
+  };
   std::optional<ShadowRays> rays_from;  // made when first asked: none where `known` answers all
   const auto shadow_ray = [&](Vec3 direction, float distance, Vec3 radiance, Ray& shadow) {
     if (!rays_from) rays_from.emplace(s);
@@ -145,8 +145,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     const Light& light = scene.lights[l];
     // A point light is one sample; an area light shadow_samples points stratified over it, one
     // jittered sample per cell, each used for the shadow ray and for Phong, averaged.
-    const int count = light_sample_count(light, samples);
     const RectLight* rect = std::get_if<RectLight>(&light);
+    const int samples = rect ? area_samples() : 1;
+    const int count = light_sample_count(light, samples);
     Vec3 light_sum(0.0f);
     if (!rect && known && l < PointShadows::kMaxLights && (known->known >> l & 1u)) {  // traced before
       if (known->lit >> l & 1u) light_sum += lit(known->direction[l], known->radiance[l], Vec3(1.0f));
@@ -176,6 +177,9 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
       // glass, asking the packet first and walking the rays it finds crossing something for
       // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
       // twice: measured, and left out.)
+      // One sample sits at the light's centre when the scene asks for one (a hard shadow, as
+      // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
+      const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
       const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
       const StratifiedGrid grid(count);
       // Which leaves of the BVH the samples' shadow rays can meet, asked once for all of them: on
@@ -255,7 +259,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
     }
     sum += count == 1 ? light_sum : light_sum / static_cast<float>(count);  // x / 1 is x: not divided
   }
-  if (!scene.emitters.empty()) sum += emitted_light(s, path, samples, shadow_ray, lit, ctx);
+  if (!scene.emitters.empty()) sum += emitted_light(s, path, area_samples(), shadow_ray, lit, ctx);
   return sum;
 }
 
