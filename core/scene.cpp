@@ -61,8 +61,10 @@ void meet_area_lights(const Scene& scene, Ray& ray, SceneHit& out, bool camera_r
 
 }  // namespace
 
-bool Scene::intersect(Ray& ray, SceneHit& out, uint32_t inside) const {
-  out.surface = inside == kNoPrimitive ? bvh.intersect(ray, out.hit) : bvh.intersect_from_inside(inside, ray, out.hit);
+bool Scene::intersect(Ray& ray, SceneHit& out, RayStart from) const {
+  out.surface = from.prim == kNoPrimitive ? bvh.intersect(ray, out.hit)
+                : from.inwards            ? bvh.intersect_from_inside(from.prim, ray, out.hit)
+                                          : bvh.intersect_leaving(from.prim, ray, out.hit);
   meet_area_lights(*this, ray, out, false);
   return out.surface || out.light;
 }

@@ -20,6 +20,13 @@ namespace rt {
 // not in the BVH (they cast no shadow: shadow rays ask occluded()), but a camera, mirror or glossy
 // ray that meets one before any surface sees it. The scene finds them, so that no integrator
 // needs a loop of its own (as pbrt's, Mitsuba's and Tungsten's emitters).
+// Where a ray starts, when the integrator knows: on primitive `prim`, into it (a refraction
+// entering it, a reflection on its inside) or out of it. Scene::intersect walks less for it.
+struct RayStart {
+  uint32_t prim = kNoPrimitive;
+  bool inwards = false;
+};
+
 struct SceneHit {
   bool surface = false;
   Hit hit;                           // when surface: the BVH's record, for Scene::surface()
@@ -63,9 +70,10 @@ struct Scene {
   // The closest surface (ray.tmax becomes its distance); area lights are not surfaces.
   bool intersect(Ray& ray, Hit& hit) const { return bvh.intersect(ray, hit); }
   // The closest surface or area light's face; ray.tmax becomes its distance. False: nothing.
-  // `inside`: the primitive the ray starts inside, if known (Bvh::intersect_from_inside), a
-  // hint that never changes the answer.
-  bool intersect(Ray& ray, SceneHit& out, uint32_t inside = kNoPrimitive) const;
+  // `from`: where the ray starts, if known. Into a primitive, a hint that never changes the
+  // answer (Bvh::intersect_from_inside); out of one, a promise that it is outwards
+  // (Bvh::intersect_leaving).
+  bool intersect(Ray& ray, SceneHit& out, RayStart from = {}) const;
   // intersect(ray, out) for count <= kPacketSize camera rays (neighbours), their surfaces found
   // together (Bvh::intersect_packet): each gets what it would get alone, but passes through the
   // area lights hidden from the camera (RectLight::camera_visible).

@@ -101,6 +101,14 @@ class Bvh {
   // reflection within it), found without the walk where that is a closed shape with few
   // neighbours (core/accel/shape_interiors.h). Any id, a wrong one too, gives intersect()'s answer.
   bool intersect_from_inside(uint32_t inside, Ray& ray, Hit& hit) const;
+  // intersect()'s answer for a ray that leaves primitive `from` outwards, without testing `from`
+  // where it is an analytic shape: a sphere, box, cylinder or cone is convex and a plane flat, so
+  // a ray that leaves one outwards cannot meet it again (the walk's test of it only found that
+  // out). The caller vouches for "outwards": a ray into the shape would pass through it.
+  bool intersect_leaving(uint32_t from, Ray& ray, Hit& hit) const {
+    return from - ranges_.shape_begin < shapes_.size() ? kernels_->intersect_leaving(*this, ray, hit, from)
+                                                       : intersect(ray, hit);
+  }
   // Closest hit among the triangles `cutout` covers and whose front the ray meets if it is
   // single-sided (a mesh BVH with an alpha mask or a single-sided material).
   bool intersect(Ray& ray, Hit& hit, const AlphaCutout& cutout) const {

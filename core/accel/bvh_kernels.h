@@ -6,6 +6,8 @@
 // query, none per node or primitive.
 #pragma once
 
+#include <cstdint>
+
 #include "core/accel/isa.h"
 
 namespace rt {
@@ -22,6 +24,8 @@ using HitVisitorFn = bool (*)(void* visitor, const Hit& hit);
 struct BvhKernels {
   Isa isa;
   bool (*intersect)(const Bvh& bvh, Ray& ray, Hit& hit);
+  // intersect() without testing primitive `from` (Bvh::intersect_leaving).
+  bool (*intersect_leaving)(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t from);
   bool (*intersect_cutout)(const Bvh& bvh, Ray& ray, Hit& hit, const AlphaCutout& cutout);
   // Closest hits of count <= kPacketSize rays at once: bit i set when rays[i] hit hits[i].
   unsigned (*intersect_packet)(const Bvh& bvh, Ray* rays, Hit* hits, int count);

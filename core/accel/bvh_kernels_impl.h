@@ -54,12 +54,14 @@ bool nearest_in_quads(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ra
 // as prim).
 bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit& hit);
 
-// The closest crossing of slots [first, end) of a leaf that is not a quad leaf, merged into hit.
-bool nearest_in_slots(const Bvh& bvh, uint32_t first, uint32_t end, Ray& r, Hit& hit) {
+// The closest crossing of slots [first, end) of a leaf that is not a quad leaf, merged into hit;
+// primitive `skip` not tested (intersect_leaving; kNoPrimitive, a constant, folds the test away).
+bool nearest_in_slots(const Bvh& bvh, uint32_t first, uint32_t end, Ray& r, Hit& hit, uint32_t skip = kNoPrimitive) {
   bool found = false;
   for (uint32_t slot = first; slot < end; ++slot) {
     const Bvh::Slot& s = bvh.slots()[slot];
     const uint32_t id = s.id;
+    if (id == skip) continue;
     Hit candidate;
     bool got = false;
     switch (bvh.kind(id)) {
@@ -76,11 +78,12 @@ bool nearest_in_slots(const Bvh& bvh, uint32_t first, uint32_t end, Ray& r, Hit&
 
 // The closest crossing in a leaf merged into hit, as above: the one leaf test of intersect() and
 // of the packets' walk.
-bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit) {
-  if (BvhRef::is_quad_leaf(leaf))
+bool nearest_in_leaf(const Bvh& bvh, uint32_t leaf, const QuadRay& quad_ray, Ray& r, Hit& hit,
+                     uint32_t skip = kNoPrimitive) {
+  if (BvhRef::is_quad_leaf(leaf))  // triangles only: never a shape to skip
     return nearest_in_quads(bvh, leaf, quad_ray, r, hit, [](uint32_t, float, float) { return true; });
   const uint32_t first = BvhRef::first(leaf);
-  return nearest_in_slots(bvh, first, first + BvhRef::count(leaf), r, hit);
+  return nearest_in_slots(bvh, first, first + BvhRef::count(leaf), r, hit, skip);
 }
 
 }  // namespace
@@ -119,12 +122,13 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
   return found;
 }
 
-[[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) {
+// The closest hit, primitive `skip` left untested (Bvh::intersect_leaving).
+RT_SIMD_INLINE bool nearest(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t skip) {
   bool found = false;
   const QuadRay quad_ray(ray);
   hit = Hit{};
   traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
-    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit);
+    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit, skip);
     return false;
   });
   settle(ray, hit, found);
@@ -132,6 +136,12 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
   // equal hits by the tree's own ids, as the packets' walk does.
   if (found) bvh.relabel(hit);
   return found;
+}
+
+[[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) { return nearest(bvh, ray, hit, kNoPrimitive); }
+
+[[gnu::flatten]] bool intersect_leaving(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t from) {
+  return nearest(bvh, ray, hit, from);
 }
 
 // Whether anything in a leaf crosses the ray: each primitive asked only whether it is crossed (a
@@ -386,8 +396,8 @@ bool intersect_instance(const MeshInstance& instance, uint32_t id, Ray& ray, Hit
 
 }  // namespace
 
-extern const BvhKernels kKernels{RTCLI_ISA, &intersect,       &intersect_cutout, &intersect_packet,
-                                 &occluded, &occluded_packet, &visit_hits,       &visit_hits_in_leaf};
+extern const BvhKernels kKernels{RTCLI_ISA, &intersect,       &intersect_leaving, &intersect_cutout,  &intersect_packet,
+                                 &occluded, &occluded_packet, &visit_hits,        &visit_hits_in_leaf};
 
 }  // namespace RTCLI_ISA_NS
 }  // namespace rt

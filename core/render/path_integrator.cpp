@@ -186,10 +186,15 @@ Vec3 PathIntegrator::radiance_from_hit(const Ray& camera_ray, const SceneHit& fi
     ray.direction = b.wi;
     ++ctx.counters[RayKind::kBounce];
     // Into the surface's own primitive (through it from outside, or reflected on its inside): a
-    // closed shape's neighbours answer without the walk (Bvh::intersect_from_inside).
-    const uint32_t inside = b.transmitted == s.entering ? met.hit.prim : kNoPrimitive;
+    // closed shape's neighbours answer without the walk (Bvh::intersect_from_inside). Out of it,
+    // on the side it came from when it came from outside (a shading normal can send a sampled
+    // direction the other way): the shape is not tested (Bvh::intersect_leaving).
+    const bool outwards = (glm::dot(b.wi, s.ng) > 0.0f) == s.entering;
+    const RayStart from = b.transmitted == s.entering ? RayStart{met.hit.prim, true}
+                          : outwards                  ? RayStart{met.hit.prim, false}
+                                                      : RayStart{};
     met = SceneHit{};
-    scene.intersect(ray, met, inside);
+    scene.intersect(ray, met, from);
   }
   return radiance;
 }

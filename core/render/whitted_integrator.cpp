@@ -110,9 +110,9 @@ void WhittedIntegrator::radiance_from_hits(const Ray* rays, const SceneHit* met,
 // The caller's ray, not a copy: copied whole, it was loaded in wide loads from the narrow stores
 // that had just made it, which no store forwards to (half of trace()'s samples in a profile of
 // refraction.json; docs/benchmark.md, "Round two, a twenty-sixth session").
-Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ctx, uint32_t inside) const {
+Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ctx, RayStart from) const {
   SceneHit met;
-  ctx.scene.intersect(ray, met, inside);
+  ctx.scene.intersect(ray, met, from);
   return shade(ray, met, state, ctx);
 }
 
@@ -223,11 +223,12 @@ Vec3 WhittedIntegrator::traced_from(const EvaluatedSurface& s, Vec3 direction, R
   ray.direction = direction;
   ++ctx.counters[kind];
   // Into the surface's own primitive (a refraction entering it, a reflection on its inside): if
-  // that is a closed shape, what the ray can meet is known without a walk. Told by the ray's kind,
-  // not its direction: a dot product here spilled the direction and read it back in a load no
-  // store forwards to (reflection.json 1.02x the time).
+  // that is a closed shape, what the ray can meet is known without a walk. Out of it: a shape is
+  // not tested. Told by the ray's kind, not its direction (every ray here leaves on the side its
+  // kind says: secondary() and spread() see to it): a dot product here spilled the direction and
+  // read it back in a load no store forwards to (reflection.json 1.02x the time).
   const bool inwards = (kind == RayKind::kRefraction) == s.entering;
-  return trace(ray, state, ctx, inwards ? s.prim : kNoPrimitive);
+  return trace(ray, state, ctx, RayStart{s.prim, inwards});
 }
 
 }  // namespace rt

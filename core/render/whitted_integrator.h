@@ -37,8 +37,8 @@ class WhittedIntegrator final : public Integrator {
   static constexpr float kMinWeight = 1.0f / 512.0f;
 
   // The radiance arriving along `ray`, walked where the caller made it: its tmax is left at what
-  // it meets. `inside`: the primitive the ray starts inside, if known (Scene::intersect).
-  Vec3 trace(Ray& ray, const PathState& state, TraceContext& ctx, uint32_t inside = kNoPrimitive) const;
+  // it meets. `from`: where the ray starts, if known (Scene::intersect).
+  Vec3 trace(Ray& ray, const PathState& state, TraceContext& ctx, RayStart from = {}) const;
   // trace() once the ray's first meeting is known (ray.tmax at it).
   Vec3 shade(const Ray& ray, const SceneHit& met, const PathState& state, TraceContext& ctx) const;
   // Branch kinds for child_path.
