@@ -122,15 +122,8 @@ RT_SIMD_INLINE void settle(Ray& ray, const Hit& hit, bool found) {
   return found;
 }
 
-// The closest hit, primitive `skip` left untested (Bvh::intersect_leaving).
-RT_SIMD_INLINE bool nearest(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t skip) {
-  bool found = false;
-  const QuadRay quad_ray(ray);
-  hit = Hit{};
-  traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
-    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit, skip);
-    return false;
-  });
+// The end of a closest-hit walk.
+RT_SIMD_INLINE bool settle_nearest(const Bvh& bvh, Ray& ray, Hit& hit, bool found) {
   settle(ray, hit, found);
   // A flattened instance's triangle named as the instance's only now: the walk above ordered
   // equal hits by the tree's own ids, as the packets' walk does.
@@ -138,10 +131,28 @@ RT_SIMD_INLINE bool nearest(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t skip) {
   return found;
 }
 
-[[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) { return nearest(bvh, ray, hit, kNoPrimitive); }
+[[gnu::flatten]] bool intersect(const Bvh& bvh, Ray& ray, Hit& hit) {
+  bool found = false;
+  const QuadRay quad_ray(ray);
+  hit = Hit{};
+  traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
+    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit);
+    return false;
+  });
+  return settle_nearest(bvh, ray, hit, found);
+}
 
+// intersect() leaving primitive `from` untested (Bvh::intersect_leaving). A walk of its own: one
+// walk shared with intersect() was emitted once, out of line, and called by both.
 [[gnu::flatten]] bool intersect_leaving(const Bvh& bvh, Ray& ray, Hit& hit, uint32_t from) {
-  return nearest(bvh, ray, hit, from);
+  bool found = false;
+  const QuadRay quad_ray(ray);
+  hit = Hit{};
+  traverse<true>(bvh, ray, [&](uint32_t leaf, Ray& r) {
+    found |= nearest_in_leaf(bvh, leaf, quad_ray, r, hit, from);
+    return false;
+  });
+  return settle_nearest(bvh, ray, hit, found);
 }
 
 // Whether anything in a leaf crosses the ray: each primitive asked only whether it is crossed (a
