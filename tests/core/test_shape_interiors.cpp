@@ -76,25 +76,35 @@ struct Answer {
   float tmax;
 };
 
-Answer walked(const Bvh& bvh, Ray ray) {
+// What a query gives for `ray`: whether it met something, the hit, and the ray's tmax after it.
+template <class Query>
+Answer answer(Ray ray, const Query& query) {
   Answer a;
-  a.found = bvh.intersect(ray, a.hit);
+  a.found = query(ray, a.hit);
   a.tmax = ray.tmax;
   return a;
 }
 
-Answer from_inside(const Bvh& bvh, uint32_t inside, Ray ray) {
-  Answer a;
-  a.found = bvh.intersect_from_inside(inside, ray, a.hit);
-  a.tmax = ray.tmax;
-  return a;
+Answer walked(const Bvh& bvh, const Ray& ray) {
+  return answer(ray, [&](Ray& r, Hit& h) { return bvh.intersect(r, h); });
+}
+Answer from_inside(const Bvh& bvh, uint32_t inside, const Ray& ray) {
+  return answer(ray, [&](Ray& r, Hit& h) { return bvh.intersect_from_inside(inside, r, h); });
+}
+Answer leaving(const Bvh& bvh, uint32_t from, const Ray& ray) {
+  return answer(ray, [&](Ray& r, Hit& h) { return bvh.intersect_leaving(from, r, h); });
 }
 
-Answer leaving(const Bvh& bvh, uint32_t from, Ray ray) {
-  Answer a;
-  a.found = bvh.intersect_leaving(from, ray, a.hit);
-  a.tmax = ray.tmax;
-  return a;
+// A point on the surface of `s`, found as a ray from outside finds it, and its surface record;
+// false when the ray missed.
+bool surface_point(const AnalyticShape& s, Rng& rng, SurfaceInteraction& si) {
+  const Vec3 centre = 0.5f * (world_bounds(s).lo + world_bounds(s).hi);
+  const Vec3 from = centre + 6.0f * random_unit(rng);
+  Ray probe(from, centre + 0.4f * random_unit(rng) * (world_bounds(s).hi - world_bounds(s).lo) * 0.5f - from);
+  Hit hit;
+  if (!intersect_shape(s, probe, hit)) return false;
+  si = shape_surface(s, probe, hit, false);
+  return true;
 }
 
 void require_same(const Answer& a, const Answer& b) {
@@ -151,14 +161,9 @@ TEST_CASE("A ray from inside a closed shape meets what the walk meets, bit for b
   int inside_rays = 0, shortcuts = 0;
   for (uint32_t id = kBall; id < kCount; ++id) {
     const AnalyticShape& s = prims.shapes[id];
-    const Vec3 centre = 0.5f * (world_bounds(s).lo + world_bounds(s).hi);
     for (int i = 0; i < 3000; ++i) {
-      // A point on the surface, found as a ray from outside finds it, and its surface record.
-      const Vec3 from = centre + 6.0f * random_unit(rng);
-      Ray probe(from, centre + 0.4f * random_unit(rng) * (world_bounds(s).hi - world_bounds(s).lo) * 0.5f - from);
-      Hit hit;
-      if (!intersect_shape(s, probe, hit)) continue;
-      const SurfaceInteraction si = shape_surface(s, probe, hit, false);
+      SurfaceInteraction si;
+      if (!surface_point(s, rng, si)) continue;
       // Rays leaving it inwards (refractions in, reflections within) and outwards, each as the
       // integrator makes them: from the offset origin.
       for (int j = 0; j < 4; ++j) {
@@ -206,14 +211,9 @@ TEST_CASE("A ray leaving a shape outwards meets what the walk meets without test
     Rng rng(23);
     int outward = 0, met_other = 0;
     for (uint32_t id = kFloor; id < kCount; ++id) {
-      const AnalyticShape& s = prims.shapes[id];
-      const Vec3 centre = 0.5f * (world_bounds(s).lo + world_bounds(s).hi);
       for (int i = 0; i < 2000; ++i) {
-        const Vec3 from = centre + 6.0f * random_unit(rng);
-        Ray probe(from, centre + 0.4f * random_unit(rng) * (world_bounds(s).hi - world_bounds(s).lo) * 0.5f - from);
-        Hit hit;
-        if (!intersect_shape(s, probe, hit)) continue;
-        const SurfaceInteraction si = shape_surface(s, probe, hit, false);
+        SurfaceInteraction si;
+        if (!surface_point(prims.shapes[id], rng, si)) continue;
         // Outwards as the integrator makes them: on the side the probe came from (either side of
         // the floor), from the offset origin; grazing ones among them.
         const Vec3 n = si.front_face ? si.geometric_normal : -si.geometric_normal;
