@@ -16,10 +16,6 @@
 
 namespace rt {
 
-// What a ray meets first: a surface in the BVH, or the face of an area light. Area lights are
-// not in the BVH (they cast no shadow: shadow rays ask occluded()), but a camera, mirror or glossy
-// ray that meets one before any surface sees it. The scene finds them, so that no integrator
-// needs a loop of its own (as pbrt's, Mitsuba's and Tungsten's emitters).
 // Where a ray starts, when the integrator knows: on primitive `prim`, into it (a refraction
 // entering it, a reflection on its inside) or out of it. Scene::intersect walks less for it.
 struct RayStart {
@@ -27,6 +23,10 @@ struct RayStart {
   bool inwards = false;
 };
 
+// What a ray meets first: a surface in the BVH, or the face of an area light. Area lights are
+// not in the BVH (they cast no shadow: shadow rays ask occluded()), but a camera, mirror or glossy
+// ray that meets one before any surface sees it. The scene finds them, so that no integrator
+// needs a loop of its own (as pbrt's, Mitsuba's and Tungsten's emitters).
 struct SceneHit {
   bool surface = false;
   Hit hit;                           // when surface: the BVH's record, for Scene::surface()
