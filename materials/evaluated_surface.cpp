@@ -62,14 +62,14 @@ Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_
   return e;
 }
 
-EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
-                                  const std::vector<Texture>& textures, float cone_width,
-                                  SurfaceDetailSwitches detail) {
+EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                       const std::vector<Texture>& textures, float cone_width,
+                                       SurfaceDetailSwitches detail) {
   EvaluatedSurface s;
   s.position = si.position;
   s.position_error = si.position_error;
   s.shadow_lift = si.shadow_lift;
-  s.wo = -glm::normalize(ray_direction);
+  s.wo = -unit_direction;
   // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
   const float side = si.front_face ? 1.0f : -1.0f;
   s.ng = side * si.geometric_normal;

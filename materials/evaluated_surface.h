@@ -44,19 +44,27 @@ struct EvaluatedSurface {
   float metallic = 0.0f;
   float roughness = 1.0f;
   EvaluatedLayers layers;  // clearcoat, sheen, specular, anisotropy, iridescence, dispersion
-  // The primitive it is on (Hit::prim), where the integrator records it: a ray that leaves into
-  // it walks less (Scene::intersect's `inside`). Last: the fields above keep their offsets.
+  // The primitive it is on (Hit::prim), where the integrator records it: a ray that leaves it
+  // walks less (Scene::intersect's RayStart). Last: the fields above keep their offsets.
   uint32_t prim = kNoPrimitive;
 
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };
 
-// `ray_direction` is the direction of the ray that hit (any length); `cone_width` the world-space
-// width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks
-// the mip level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
-EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
-                                  const std::vector<Texture>& textures, float cone_width = 0.0f,
-                                  SurfaceDetailSwitches detail = {});
+// `unit_direction` is the direction of the ray that hit, of length 1 (glm::normalize's bits); `cone_width` the
+// world-space width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks the mip
+// level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
+EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                       const std::vector<Texture>& textures, float cone_width = 0.0f,
+                                       SurfaceDetailSwitches detail = {});
+
+// The same for a ray of any length. (evaluate_surface_unit is for a caller that has the length
+// already: the Whitted integrator's, which takes one square root a hit, not two.)
+inline EvaluatedSurface evaluate_surface(const Material& m, const SurfaceInteraction& si, Vec3 ray_direction,
+                                         const std::vector<Texture>& textures, float cone_width = 0.0f,
+                                         SurfaceDetailSwitches detail = {}) {
+  return evaluate_surface_unit(m, si, glm::normalize(ray_direction), textures, cone_width, detail);
+}
 
 // evaluate_surface(...).emission alone: what the surface gives off towards where a ray of
 // `ray_direction` came from, without the rest of the material (light sampling's emitter points).

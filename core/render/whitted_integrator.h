@@ -63,7 +63,8 @@ class WhittedIntegrator final : public Integrator {
   }
   // requires !state.media.empty()
   Vec3 absorbed_in_medium(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
-  Vec3 secondary(const EvaluatedSurface& s, const Vec3& incoming, const PathState& state, TraceContext& ctx) const;
+  // The reflected and refracted rays from `s`, which the ray along -s.wo met.
+  Vec3 secondary(const EvaluatedSurface& s, const PathState& state, TraceContext& ctx) const;
   Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
               const PathState& state, TraceContext& ctx) const;
   Vec3 traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
