@@ -4,8 +4,8 @@
 #include <cstring>
 #include <limits>
 
-#include "core/accel/simd.h"
 #include "core/avx2_clones.h"
+#include "core/simd.h"
 #include "materials/lobe_power.h"
 
 namespace rt {

@@ -46,7 +46,7 @@ struct BvhRef {
   static uint32_t quad_count(uint32_t ref) { return (count(ref) + 3) / 4; }
 };
 
-// Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/accel/simd.h
+// Children per node. The traversal's slab test handles kBvhWidth lanes at once (core/simd.h
 // has 4- and 8-lane vectors); docs/benchmark.md compares 4 and 8.
 inline constexpr int kBvhWidth = 8;
 // Rays per packet (Bvh::intersect_packet, Bvh::occluded_packet): one 8-lane vector.

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "core/accel/bvh_binary_tree.h"
-#include "core/accel/simd.h"
+#include "core/simd.h"
 
 namespace rt {
 

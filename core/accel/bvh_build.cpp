@@ -16,8 +16,8 @@
 #include "core/accel/bvh.h"
 #include "core/accel/bvh_binary_tree.h"
 #include "core/accel/bvh_bins.h"
-#include "core/accel/simd.h"
 #include "core/parallel_for.h"
+#include "core/simd.h"
 
 namespace rt {
 namespace {

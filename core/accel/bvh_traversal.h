@@ -11,7 +11,7 @@
 #include <cstring>
 
 #include "core/accel/bvh.h"
-#include "core/accel/simd.h"
+#include "core/simd.h"
 
 #ifndef RTCLI_ISA_NS
 #define RTCLI_ISA_NS isa_generic

@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
-#include "core/accel/simd.h"
 #include "core/ray.h"
 #include "core/shapes/triangle.h"
+#include "core/simd.h"
 
 namespace rt {
 

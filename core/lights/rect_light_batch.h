@@ -1,5 +1,5 @@
 // Whitted's samples of one rect light from one shading point, kPacketSize at a time, in vector
-// registers (GCC/Clang vector extensions, core/accel/simd.h): a square root and four divisions per
+// registers (GCC/Clang vector extensions, core/simd.h): a square root and four divisions per
 // sample, which one by one left the core waiting on each (soft_shadows.json: 59% of its time in
 // direct lighting, most of it there).
 //
@@ -8,8 +8,8 @@
 #pragma once
 
 #include "core/accel/bvh.h"
-#include "core/accel/simd.h"
 #include "core/lights/light.h"
+#include "core/simd.h"
 
 namespace rt {
 

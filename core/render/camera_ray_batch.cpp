@@ -2,8 +2,8 @@
 
 #include <cstring>
 
-#include "core/accel/simd.h"
 #include "core/avx2_clones.h"
+#include "core/simd.h"
 
 namespace rt {
 

@@ -1,4 +1,4 @@
-// A packet's pinhole camera rays at once, in vector registers (core/accel/simd.h): each lane the
+// A packet's pinhole camera rays at once, in vector registers (core/simd.h): each lane the
 // very operations of Camera::generate_ray for a perspective camera without a lens, in the same
 // order, so the same floats as one ray at a time. One at a time, a ray's four divisions and its
 // square root left the core waiting on each (camera-ray set-up was a tenth of reflection.json's
