@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "core/affine_lanes.h"
 #include "core/math.h"
 
 namespace rt {
@@ -36,16 +37,20 @@ inline float next_float_down(float v) {
 // Error bound of m * (p, 1) computed in float, for p known within +-p_error: each component is
 // a sum of three products and a translation (gamma(3) of its terms' magnitudes) plus the input
 // error carried through the matrix.
+// Written a column at a time (core/affine_lanes.h): row i of each vector is the sum for e[i].
 inline Vec3 transformed_point_error(const Mat4& m, Vec3 p, Vec3 p_error) {
-  Vec3 e;
-  for (int i = 0; i < 3; ++i) {  // glm is column-major: m[column][row]
-    const float magnitude =
-        std::fabs(m[0][i] * p.x) + std::fabs(m[1][i] * p.y) + std::fabs(m[2][i] * p.z) + std::fabs(m[3][i]);
-    const float carried =
-        std::fabs(m[0][i]) * p_error.x + std::fabs(m[1][i]) * p_error.y + std::fabs(m[2][i]) * p_error.z;
-    e[i] = float_gamma(3) * magnitude + (1.0f + float_gamma(3)) * carried;
-  }
-  return e;
+  const Float4 c0 = column4(m, 0), c1 = column4(m, 1), c2 = column4(m, 2);
+  const Float4 magnitude = abs4(c0 * p.x) + abs4(c1 * p.y) + abs4(c2 * p.z) + abs4(column4(m, 3));
+  const Float4 carried = abs4(c0) * p_error.x + abs4(c1) * p_error.y + abs4(c2) * p_error.z;
+  return xyz(float_gamma(3) * magnitude + (1.0f + float_gamma(3)) * carried);
+}
+
+// The same for a point known exactly (p_error 0), the same floats: for a finite matrix (every
+// Transform's, core/transform.h) the carried term is then +0, and x + 0 is x.
+inline Vec3 transformed_point_error(const Mat4& m, Vec3 p) {
+  const Float4 magnitude =
+      abs4(column4(m, 0) * p.x) + abs4(column4(m, 1) * p.y) + abs4(column4(m, 2) * p.z) + abs4(column4(m, 3));
+  return xyz(float_gamma(3) * magnitude);
 }
 
 }  // namespace rt

@@ -30,6 +30,8 @@ RT_SIMD_INLINE Float4 load4(const float* p) {
 RT_SIMD_INLINE Float4 splat4(float x) { return Float4{x, x, x, x}; }
 RT_SIMD_INLINE Float4 min4(Float4 a, Float4 b) { return a < b ? a : b; }
 RT_SIMD_INLINE Float4 max4(Float4 a, Float4 b) { return a > b ? a : b; }
+// |v|, lane by lane: the sign bit cleared, as std::fabs.
+RT_SIMD_INLINE Float4 abs4(Float4 v) { return reinterpret_cast<Float4>(reinterpret_cast<Mask4>(v) & 0x7fffffff); }
 
 // Bit i set when lane i of the mask is true (one movmskps on x86).
 RT_SIMD_INLINE unsigned movemask4(Mask4 m) {

@@ -17,16 +17,17 @@ struct Transform {
   Mat4 to_object{1.0f};
   Mat3 normal_to_world{1.0f};  // inverse transpose of the linear part of to_world
 
-  Vec3 point_to_world(Vec3 p) const { return Vec3(to_world * Vec4(p, 1.0f)); }
+  // Each of these the same floats as glm's product (core/affine_lanes.h).
+  Vec3 point_to_world(Vec3 p) const { return affine_point(to_world, p); }
   // The same, with the world point's error bound for a point known within +-p_error.
   Vec3 point_to_world(Vec3 p, Vec3 p_error, Vec3& world_error) const {
     world_error = transformed_point_error(to_world, p, p_error);
     return point_to_world(p);
   }
-  Vec3 vector_to_world(Vec3 v) const { return Mat3(to_world) * v; }
+  Vec3 vector_to_world(Vec3 v) const { return linear_vector(to_world, v); }
   Vec3 normal_to_world_unit(Vec3 n) const { return glm::normalize(normal_to_world * n); }
-  Vec3 point_to_object(Vec3 p) const { return Vec3(to_object * Vec4(p, 1.0f)); }
-  Vec3 vector_to_object(Vec3 v) const { return Mat3(to_object) * v; }
+  Vec3 point_to_object(Vec3 p) const { return affine_point(to_object, p); }
+  Vec3 vector_to_object(Vec3 v) const { return linear_vector(to_object, v); }
 };
 
 // The transform for an affine matrix, or nothing when the matrix is singular (a zero scale,
@@ -44,7 +45,7 @@ inline Transform compose(const Transform& outer, const Transform& inner) {
 inline float origin_rounding(const Transform& t, Vec3 world_origin, Vec3 object_direction) {
   const float length2 = glm::dot(object_direction, object_direction);
   if (!(length2 > 0.0f)) return 0.0f;
-  return glm::dot(abs3(object_direction), transformed_point_error(t.to_object, world_origin, Vec3(0.0f))) / length2;
+  return glm::dot(abs3(object_direction), transformed_point_error(t.to_object, world_origin)) / length2;
 }
 
 // The ray in the object space of `t`: origin and direction through to_object. The direction is

@@ -60,11 +60,9 @@ namespace {
   return SurfacePatch{}.normal;
 }
 
-}  // namespace
-
-Vec3 object_space_normal(ShapeKind kind, Vec3 p, uint32_t part) { return normal_at(kind, p, part); }
-
-Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
+// The hit point put back on the surface, and its error bound, zero on a flat face. Not inlined:
+// inlined into shape_surface, it cost refraction.json 1.7% more instructions (callgrind).
+[[gnu::noinline]] Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
   const auto faces_at = [&](int axis, float value) {  // a flat face: exactly on it, no error
     p[axis] = value;
     return Vec3(0.0f);
@@ -94,6 +92,10 @@ Vec3 onto_surface(ShapeKind kind, Vec3& p, uint32_t part) {
   return float_gamma(7) * glm::abs(p);
 }
 
+}  // namespace
+
+Vec3 object_space_normal(ShapeKind kind, Vec3 p, uint32_t part) { return normal_at(kind, p, part); }
+
 SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit, bool texcoords) {
   const Ray object_ray = to_object_ray(shape, ray);
   Vec3 p_object = object_ray.at(hit.t);
@@ -111,9 +113,18 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
   } else {
     normal = normal_at(shape.kind, p_object, hit.part);
   }
-  si.position = shape.transform.point_to_world(p_object, object_error, si.position_error);
+  // A point on a flat face is exact: its bound carries no input error (the same floats, fewer of them).
+  si.position_error = object_error == Vec3(0.0f)
+                          ? transformed_point_error(shape.transform.to_world, p_object)
+                          : transformed_point_error(shape.transform.to_world, p_object, object_error);
+  si.position = shape.transform.point_to_world(p_object);
   si.geometric_normal = shape.transform.normal_to_world_unit(normal);
   si.shading_normal = si.geometric_normal;
+  si.material = shape.material;
+  si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
+  // Only a texture's projection reads where the hit is in the shape's box (materials/map_point.cpp),
+  // and a material with a texture asks for texcoords.
+  if (!texcoords) return si;
   si.object_position = p_object;
   si.object_from_world = Mat3(shape.transform.to_object);
   if (shape.kind == ShapeKind::kCylinder || shape.kind == ShapeKind::kCone) {
@@ -123,8 +134,6 @@ SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, con
         Mat3(Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 2.0f)) * si.object_from_world;
     si.shape_axis = 2;
   }
-  si.material = shape.material;
-  si.front_face = glm::dot(ray.direction, si.geometric_normal) < 0.0f;
   return si;
 }
 

@@ -53,7 +53,8 @@ inline bool intersect_shape(const AnalyticShape& shape, const Ray& ray, Hit& hit
 
 // World-space surface at a hit (the hit's t and part from intersect_shape). Without `texcoords`,
 // the texture coordinates and their frame are left at UvFrame's defaults (a sphere's need atan2,
-// acos and three sines; every shape's frame two matrix products).
+// acos and three sines; every shape's frame two matrix products), and so are object_position,
+// object_from_world and shape_axis, which only a texture's projection reads.
 SurfaceInteraction shape_surface(const AnalyticShape& shape, const Ray& ray, const Hit& hit, bool texcoords = true);
 
 }  // namespace rt

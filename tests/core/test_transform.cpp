@@ -1,3 +1,6 @@
+#include <bit>
+#include <random>
+
 #include <catch2/catch.hpp>
 
 #include "tests/support/geometry.h"
@@ -17,6 +20,43 @@ TEST_CASE("compose_trs: scale, then rotate X, Y, Z, then translate", "[transform
   // Order of rotations: X first, then Y. (0,1,0) -> X90 -> (0,0,1) -> Y90 -> (1,0,0).
   const Transform xy = *make_transform(compose_trs({0, 0, 0}, {90, 90, 0}, {1, 1, 1}));
   check_vec(xy.point_to_world({0, 1, 0}), {1, 0, 0});
+}
+
+namespace {
+
+bool same_bits(Vec3 a, Vec3 b) {
+  for (int i = 0; i < 3; ++i)
+    if (std::bit_cast<uint32_t>(a[i]) != std::bit_cast<uint32_t>(b[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("transform: the four-lane products are glm's to the bit, the error bound the row-by-row formula's",
+          "[transform]") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-50.0f, 50.0f);
+  for (int i = 0; i < 20000; ++i) {
+    const Mat4 m = compose_trs(Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)) * 7.0f,
+                               Vec3(0.01f + std::fabs(u(rng)), 0.2f + std::fabs(u(rng)) / 9.0f, 3.0f));
+    // Zeros and negative zeros too: a point on a plane (y = 0) and a face at z = -0.
+    const Vec3 p(u(rng), i % 3 == 0 ? 0.0f : u(rng) / 100.0f, i % 5 == 0 ? -0.0f : u(rng) * 10.0f);
+    const Vec3 p_error = i % 2 == 0 ? Vec3(0.0f) : glm::abs(p) * 3e-7f;
+    INFO("case " << i);
+    CHECK(same_bits(affine_point(m, p), Vec3(m * Vec4(p, 1.0f))));
+    CHECK(same_bits(linear_vector(m, p), Mat3(m) * p));
+    Vec3 rows;
+    for (int r = 0; r < 3; ++r) {  // glm is column-major: m[column][row]
+      const float magnitude =
+          std::fabs(m[0][r] * p.x) + std::fabs(m[1][r] * p.y) + std::fabs(m[2][r] * p.z) + std::fabs(m[3][r]);
+      const float carried =
+          std::fabs(m[0][r]) * p_error.x + std::fabs(m[1][r]) * p_error.y + std::fabs(m[2][r]) * p_error.z;
+      rows[r] = float_gamma(3) * magnitude + (1.0f + float_gamma(3)) * carried;
+    }
+    CHECK(same_bits(transformed_point_error(m, p, p_error), rows));
+    // An exact point's bound without the carried term is the same floats.
+    if (p_error == Vec3(0.0f)) CHECK(same_bits(transformed_point_error(m, p), rows));
+  }
 }
 
 TEST_CASE("transform: inverse round trip and normals via the inverse transpose", "[transform]") {
