@@ -119,8 +119,8 @@ Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ct
 }
 
 Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const PathState& state, TraceContext& ctx) const {
-  // The ray's unit direction as evaluate_surface made it, the same bits: normalised again here, its
-  // square root and division began every ray's chain (refraction.json 2.5% of its profile).
+  // The ray's unit direction as evaluate_surface made it, the same bits: normalised again here,
+  // with surface_at's length, it took three square roots a hit (reflection.json 0.972x the time).
   const Vec3 d = -s.wo;
   Vec3 reflect_weight = s.reflectivity;
   Vec3 refract_weight(0.0f);
