@@ -63,8 +63,9 @@ class WhittedIntegrator final : public Integrator {
   }
   // requires !state.media.empty()
   Vec3 absorbed_in_medium(Vec3 radiance, const Ray& ray, const PathState& state, const Scene& scene) const;
-  // The reflected and refracted rays from `s`, which the ray along -s.wo met.
-  Vec3 secondary(const EvaluatedSurface& s, const PathState& state, TraceContext& ctx) const;
+  // The reflected and refracted rays from `s`, which the ray along -s.wo met; `cone_width`: the
+  // ray cone's width there (surface_at's), where the rays start.
+  Vec3 secondary(const EvaluatedSurface& s, const PathState& state, float cone_width, TraceContext& ctx) const;
   Vec3 spread(const EvaluatedSurface& s, Vec3 centre, float width, RayKind kind, float branch_weight,
               const PathState& state, TraceContext& ctx) const;
   Vec3 traced_from(const EvaluatedSurface& s, Vec3 direction, RayKind kind, const PathState& state,
