@@ -18,8 +18,9 @@ namespace rt {
   return shade_surface(ray, s, cone_width, state, ctx);
 }
 
-EvaluatedSurface WhittedIntegrator::surface_at(const Ray& ray, const Hit& hit, const PathState& state,
-                                               TraceContext& ctx, float& cone_width) const {
+[[gnu::always_inline]] inline EvaluatedSurface WhittedIntegrator::surface_at(const Ray& ray, const Hit& hit,
+                                                                             const PathState& state, TraceContext& ctx,
+                                                                             float& cone_width) const {
   const Scene& scene = ctx.scene;
   const SurfaceInteraction si = scene.surface(ray, hit);
   // One square root for the cone and the unit direction (glm::normalize's bits: d x (1 / |d|)).
@@ -33,8 +34,10 @@ EvaluatedSurface WhittedIntegrator::surface_at(const Ray& ray, const Hit& hit, c
   return s;
 }
 
-Vec3 WhittedIntegrator::shade_surface(const Ray& ray, const EvaluatedSurface& s, float cone_width,
-                                      const PathState& state, TraceContext& ctx, const PointShadows* known) const {
+[[gnu::always_inline]] inline Vec3 WhittedIntegrator::shade_surface(const Ray& ray, const EvaluatedSurface& s,
+                                                                    float cone_width, const PathState& state,
+                                                                    TraceContext& ctx,
+                                                                    const PointShadows* known) const {
   Vec3 radiance = s.emission + direct_lighting(s, state.path, max_component(state.weight) * state.share, ctx, known);
   const bool bounces = max_component(s.reflectivity) > 0.0f || s.transmissive();
   if (bounces && state.depth < ctx.settings.max_depth) radiance += secondary(s, state, cone_width, ctx);
@@ -108,9 +111,10 @@ void WhittedIntegrator::radiance_from_hits(const Ray* rays, const SceneHit* met,
 // The caller's ray, not a copy: copied whole, it was loaded in wide loads from the narrow stores
 // that had just made it, which no store forwards to (half of trace()'s samples in a profile of
 // refraction.json; docs/benchmark.md, "Round two, a twenty-sixth session").
-// trace(), traced_from() and spread() are inlined each into its one caller, down to secondary(): a
-// secondary ray then makes one call down the tree where it made four, each saving and restoring
-// registers (refraction.json 1.8% fewer instructions, 0.967x the time; glossy.json 0.95x).
+// trace(), traced_from() and spread() are inlined each into its caller, down to secondary(), and
+// so are surface_at() and shade_surface() (shade(), above): a secondary ray then makes one call
+// down the tree where it made six, each saving and restoring registers (refraction.json 3.6%
+// fewer instructions, 0.967x then 0.985x the time; glossy.json 0.95x, reflection 0.97x).
 [[gnu::always_inline]] inline Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ctx,
                                                             RayStart from) const {
   SceneHit met;
