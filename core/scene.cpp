@@ -15,21 +15,16 @@ SurfaceInteraction instance_surface(const SceneAssets& assets, const MeshInstanc
 
 }  // namespace
 
-SurfaceInteraction Scene::surface(const Ray& ray, const Hit& hit, Texcoords texcoords) const {
-  const auto reads = [&](uint32_t material) {
-    return texcoords == Texcoords::kAlways || material >= texcoords_read.size() || texcoords_read[material] != 0;
-  };
+SurfaceInteraction Scene::other_surface(const Ray& ray, const Hit& hit, Texcoords texcoords) const {
   switch (bvh.kind(hit.prim)) {
     case PrimitiveKind::kInstance: return instance_surface(*assets, bvh.instance(hit.prim), ray, hit);
-    case PrimitiveKind::kShape: {
-      const AnalyticShape& shape = bvh.shape(hit.prim);
-      return shape_surface(shape, ray, hit, reads(shape.material));
-    }
+    case PrimitiveKind::kShape: return surface(ray, hit, texcoords);
     case PrimitiveKind::kCsg: {
       // The operand surface's own record, turned to face out of the solid.
       const CsgSurface& s = bvh.csg(hit.prim).surface(csg_surface_index(hit));
-      SurfaceInteraction si = s.is_mesh ? instance_surface(*assets, s.mesh, ray, hit)
-                                        : shape_surface(s.shape, ray, hit, reads(s.shape.material));
+      SurfaceInteraction si = s.is_mesh
+                                  ? instance_surface(*assets, s.mesh, ray, hit)
+                                  : shape_surface(s.shape, ray, hit, reads_texcoords(s.shape.material, texcoords));
       orient_csg_surface(si, ray, hit);
       return si;
     }

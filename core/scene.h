@@ -86,11 +86,23 @@ struct Scene {
   // The full surface record of a hit returned by intersect(); its texture coordinates where the
   // material reads them (kAsRead: for shading) or always (kAlways: to show them).
   enum class Texcoords { kAsRead, kAlways };
-  SurfaceInteraction surface(const Ray& ray, const Hit& hit, Texcoords texcoords = Texcoords::kAsRead) const;
+  // An analytic shape's, the common case, made here: inline, a hit's surface costs one call, not
+  // two (refraction.json 1% fewer instructions). Meshes and CSG solids: other_surface().
+  SurfaceInteraction surface(const Ray& ray, const Hit& hit, Texcoords texcoords = Texcoords::kAsRead) const {
+    if (bvh.kind(hit.prim) != PrimitiveKind::kShape) return other_surface(ray, hit, texcoords);
+    const AnalyticShape& shape = bvh.shape(hit.prim);
+    return shape_surface(shape, ray, hit, reads_texcoords(shape.material, texcoords));
+  }
 
   // Every placed mesh copied into world space, in instance order: for one-level reference
   // structures (tests, the ray benchmark), not for rendering.
   std::vector<TriangleMesh> world_meshes() const;
+
+ private:
+  bool reads_texcoords(uint32_t material, Texcoords texcoords) const {
+    return texcoords == Texcoords::kAlways || material >= texcoords_read.size() || texcoords_read[material] != 0;
+  }
+  SurfaceInteraction other_surface(const Ray& ray, const Hit& hit, Texcoords texcoords) const;
 };
 
 }  // namespace rt
