@@ -113,7 +113,7 @@ void WhittedIntegrator::radiance_from_hits(const Ray* rays, const SceneHit* met,
 // refraction.json; docs/benchmark.md, "Round two, a twenty-sixth session").
 // trace(), traced_from() and spread() are inlined each into its caller, down to secondary(), and
 // so are surface_at() and shade_surface() (shade(), above): a secondary ray then makes one call
-// down the tree where it made six, each saving and restoring registers (refraction.json 3.6%
+// down the tree where it made six, each saving and restoring registers (refraction.json 4.2%
 // fewer instructions, 0.967x then 0.985x the time; glossy.json 0.95x, reflection 0.97x).
 [[gnu::always_inline]] inline Vec3 WhittedIntegrator::trace(Ray& ray, const PathState& state, TraceContext& ctx,
                                                             RayStart from) const {
