@@ -88,6 +88,13 @@ struct Material {
     return pbr.enabled && !transmission_is_coverage ? transmission * kd * (1.0f - pbr.metallic) : transmission;
   }
   bool absorbing() const { return max_component(absorption) > 0.0f; }
+  // A Phong material the same all over: no texture or map that varies it, not glTF's model, lit.
+  // Its shading terms are its own numbers (evaluate_surface_unit's inline case).
+  bool uniform_phong() const {
+    return !pbr.enabled && !unlit && !texture.present() && !specular_texture.present() &&
+           !transmission_texture.present() && !emission_texture.present() && !bump.height.present() &&
+           !normal_map.map.present();
+  }
 
  private:
   template <class M>  // Material or const Material

@@ -62,12 +62,12 @@ Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_
   return e;
 }
 
-EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
-                                       const std::vector<Texture>& textures, float cone_width,
-                                       SurfaceDetailSwitches detail) {
-  // Worked out in locals and written once, every field named, at the end: a surface made first
-  // and filled in was zeroed whole (288 bytes; refraction.json 0.989x the time without) before the calls
-  // below, which kept the compiler from seeing that the stores after them make the zeros dead.
+EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                         const std::vector<Texture>& textures, float cone_width,
+                                         SurfaceDetailSwitches detail) {
+  // Worked out in locals and written once, at the end (evaluated_surface): a surface made first
+  // and filled in was zeroed whole before the calls below, which kept the compiler from seeing
+  // that the stores after them make the zeros dead.
   const Vec3 wo = -unit_direction;
   // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
   const float side = si.front_face ? 1.0f : -1.0f;
@@ -126,32 +126,18 @@ EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteracti
     phong.kd = phong.ks = phong.reflectivity = transmission = Vec3(0.0f);
     transmission_factor = 0.0f;
   }
-  return EvaluatedSurface{.position = si.position,
-                          .position_error = si.position_error,
-                          .shadow_lift = si.shadow_lift,
-                          .n = n,
-                          .ng = side * si.geometric_normal,
-                          .wo = wo,
-                          .entering = si.front_face,
-                          .material = si.material,
-                          .medium = si.medium == kOwnMedium ? si.material : si.medium,
-                          .diffuse = phong.kd,
-                          .specular = phong.ks,
-                          .shininess = phong.shininess,
-                          .reflectivity = phong.reflectivity,
-                          .transmission = transmission,
-                          .transmission_factor = transmission_factor,
-                          .refraction_glossy = refraction_glossy,
-                          .ior = m.ior,
-                          .absorption = m.absorption,
-                          .glossy = phong.glossy,
-                          .emission = emission,
-                          .pbr = m.pbr.enabled && !m.unlit,
-                          .base_color = m.pbr.enabled ? kd : Vec3(0.0f),
-                          .metallic = metallic,
-                          .roughness = roughness,
-                          .layers = layers,
-                          .prim = kNoPrimitive};
+  return evaluated_surface(m, si, wo, side,
+                           MaterialTerms{.n = n,
+                                         .phong = phong,
+                                         .transmission = transmission,
+                                         .transmission_factor = transmission_factor,
+                                         .refraction_glossy = refraction_glossy,
+                                         .emission = emission,
+                                         .pbr = m.pbr.enabled && !m.unlit,
+                                         .base_color = m.pbr.enabled ? kd : Vec3(0.0f),
+                                         .metallic = metallic,
+                                         .roughness = roughness,
+                                         .layers = layers});
 }
 
 }  // namespace rt

@@ -11,6 +11,7 @@
 #include "core/render_settings.h"
 #include "core/texture/texture.h"
 #include "materials/evaluated_layers.h"
+#include "materials/pbr_to_phong.h"
 
 namespace rt {
 
@@ -51,12 +52,89 @@ struct EvaluatedSurface {
   bool transmissive() const { return max_component(transmission) > 0.0f; }
 };
 
+// What a material gives at a point, before the hit's geometry joins it in an EvaluatedSurface.
+struct MaterialTerms {
+  Vec3 n;  // unit shading normal, on the side the ray came from
+  PhongTerms phong;
+  Vec3 transmission{0.0f};
+  float transmission_factor = 0.0f;
+  float refraction_glossy = 0.0f;
+  Vec3 emission{0.0f};
+  bool pbr = false;
+  Vec3 base_color{0.0f};
+  float metallic = 0.0f;
+  float roughness = 1.0f;
+  EvaluatedLayers layers;
+};
+
+// The record of a hit: its geometry, `terms` and the material's own numbers. The one place an
+// EvaluatedSurface is written whole, every field named: a record made and then filled in was
+// zeroed first (288 bytes; refraction.json 0.989x the time without).
+[[gnu::always_inline]] inline EvaluatedSurface evaluated_surface(const Material& m, const SurfaceInteraction& si,
+                                                                 Vec3 wo, float side, const MaterialTerms& terms) {
+  return EvaluatedSurface{.position = si.position,
+                          .position_error = si.position_error,
+                          .shadow_lift = si.shadow_lift,
+                          .n = terms.n,
+                          .ng = side * si.geometric_normal,
+                          .wo = wo,
+                          .entering = si.front_face,
+                          .material = si.material,
+                          .medium = si.medium == kOwnMedium ? si.material : si.medium,
+                          .diffuse = terms.phong.kd,
+                          .specular = terms.phong.ks,
+                          .shininess = terms.phong.shininess,
+                          .reflectivity = terms.phong.reflectivity,
+                          .transmission = terms.transmission,
+                          .transmission_factor = terms.transmission_factor,
+                          .refraction_glossy = terms.refraction_glossy,
+                          .ior = m.ior,
+                          .absorption = m.absorption,
+                          .glossy = terms.phong.glossy,
+                          .emission = terms.emission,
+                          .pbr = terms.pbr,
+                          .base_color = terms.base_color,
+                          .metallic = terms.metallic,
+                          .roughness = terms.roughness,
+                          .layers = terms.layers,
+                          .prim = kNoPrimitive};
+}
+
+// evaluate_surface_unit for any material: textures, bump and normal maps, glTF's model, unlit.
+EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                         const std::vector<Texture>& textures, float cone_width,
+                                         SurfaceDetailSwitches detail);
+
 // `unit_direction` is the direction of the ray that hit, of length 1 (glm::normalize's bits); `cone_width` the
 // world-space width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks the mip
 // level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
-EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
-                                       const std::vector<Texture>& textures, float cone_width = 0.0f,
-                                       SurfaceDetailSwitches detail = {});
+// A uniform Phong material's record is made here, inline: a call less a hit, and its constant
+// fields stored without being worked out (refraction.json 4.9% fewer instructions, 0.96x the time).
+inline EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                              const std::vector<Texture>& textures, float cone_width = 0.0f,
+                                              SurfaceDetailSwitches detail = {}) {
+  if (!m.uniform_phong()) return evaluate_mapped_surface(m, si, unit_direction, textures, cone_width, detail);
+  // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
+  const float side = si.front_face ? 1.0f : -1.0f;
+  // As evaluate_mapped_surface works them out for such a material, the same floats.
+  const Vec3 kd = m.kd * Vec3(si.color);
+  return evaluated_surface(m, si, -unit_direction, side,
+                           MaterialTerms{.n = side * si.shading_normal,
+                                         .phong = {.kd = kd * (Vec3(1.0f) - m.transmission),
+                                                   .ks = m.ks,
+                                                   .shininess = m.shininess,
+                                                   .reflectivity = m.reflectivity,
+                                                   .glossy = m.glossy},
+                                         .transmission = m.transmission,
+                                         .transmission_factor = max_component(m.transmission),
+                                         .refraction_glossy = 0.0f,
+                                         .emission = m.emission,
+                                         .pbr = false,
+                                         .base_color = Vec3(0.0f),
+                                         .metallic = 0.0f,
+                                         .roughness = 1.0f,
+                                         .layers = {}});
+}
 
 // The same for a ray of any length. (evaluate_surface_unit is for a caller that has the length
 // already: the Whitted integrator's, which takes one square root a hit, not two.)
