@@ -112,6 +112,105 @@ Vec3 emitted_light(const EvaluatedSurface& s, uint64_t path, int count, const Sh
   return sum / static_cast<float>(count);
 }
 
+// A rect light's samples at `s`, summed (direct_lighting divides by `count`). Out of line: its
+// batches' arrays made direct_lighting's frame 1.3 KB, set up at every hit that a point light
+// lights too.
+[[gnu::noinline]] Vec3 rect_light_sum(const EvaluatedSurface& s, size_t l, const RectLight* rect, int samples,
+                                      int count, float weight, uint64_t path, std::optional<ShadowRays>& rays_from,
+                                      TraceContext& ctx) {
+  const Scene& scene = ctx.scene;
+  Vec3 light_sum(0.0f);
+  // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
+  // light of its colour would, times the light's attenuation and its cosine towards the
+  // point. The samples are worked out a batch at a time in vector registers
+  // (core/lights/rect_light_batch.h), their numbers sixteen at a time (SampleStream::get2_batch). With
+  // opaque blockers only, enough shadow rays go in packets (Bvh::occluded_packet), each
+  // sample that reaches the light then adding its share in sample order: the same sum. (With
+  // glass, asking the packet first and walking the rays it finds crossing something for
+  // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
+  // twice: measured, and left out.)
+  // One sample sits at the light's centre when the scene asks for one (a hard shadow, as
+  // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
+  const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
+  const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
+  const StratifiedGrid grid(count);
+  // Which leaves of the BVH the samples' shadow rays can meet, asked once for all of them: on
+  // a floor away from everything, none (the same answers). Asked only where the rays are
+  // walked one by one for their transmittance (a scene with glass): the query costs about
+  // what the packets' walk of a point's 16 rays saved, soft_shadows.json 1.13x (measured in
+  // docs/benchmark.md, "Round two, a ninth session").
+  // Not asked at a point without kd, which traces few rays, if any (below).
+  BvhLeafSet among;
+  const BvhLeafSet* reach = nullptr;
+  if (!scene.all_opaque && count >= kMinShadowVolume && s.diffuse != Vec3(0.0f)) {
+    if (!rays_from) rays_from.emplace(s);
+    if (rays_from->leaves_towards(*rect, scene.bvh, among)) reach = &among;
+  }
+  const bool packets = scene.all_opaque && count >= kMinShadowPacket;
+  // The numbers of samples [base - k, base - k + kMaxSobolPairs), k = base % kMaxSobolPairs.
+  static_assert(kMaxSobolPairs % kPacketSize == 0);
+  float jx[kMaxSobolPairs] = {}, jy[kMaxSobolPairs] = {};         // all read, eight at a time
+  const float sample_share = weight / static_cast<float>(count);  // one sample's part, for faint()
+  for (int base = 0; base < count; base += kPacketSize) {
+    const int batch = std::min(kPacketSize, count - base);
+    float u[2][kPacketSize] = {};
+    if (count == 1 && centred) {
+      u[0][0] = u[1][0] = 0.5f;
+    } else {
+      const int k = base % kMaxSobolPairs;
+      if (k == 0)
+        ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)),
+                               std::min(kMaxSobolPairs, count - base), jx, jy);
+      stratified_points_batch(grid, base, jx + k, jy + k, u);
+    }
+    RectLightBatch drawn;
+    rect_light_batch(*rect, frame, s.position, u, drawn);
+    // lit(...)'s Phong factor, for the samples that reach the light (a shadowed one's powers
+    // are not worked out).
+    PhongBatch reflectance;
+    const auto reflectance_of = [&](unsigned lanes) {
+      phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, lanes, reflectance);
+    };
+    // Without kd, every sample's factor first, as for a point light above: a faint one gets no ray.
+    const bool specular_only = s.diffuse == Vec3(0.0f);
+    if (specular_only) reflectance_of((1u << batch) - 1u);
+    // ShadowRays::make's tests for all the batch's samples at once.
+    const SampleSides sides = sample_sides(drawn, rect->color, s.n, s.ng, s.shadow_lift != Vec3(0.0f));
+    Ray shadows[kPacketSize];
+    int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
+    int rays = 0;
+    for (int j = 0; j < batch; ++j) {
+      ray_of[j] = -1;
+      if (!(sides.light >> j & 1u) ||
+          (specular_only && faint(reflectance[j], rect->color * drawn.scale[j], sample_share)))
+        continue;
+      if (!rays_from) rays_from.emplace(s);
+      rays_from->ray(drawn.direction(j), drawn.distance[j], sides.behind >> j & 1u, shadows[rays]);
+      ray_of[j] = rays++;
+    }
+    ctx.counters[RayKind::kShadow] += static_cast<uint64_t>(rays);
+    unsigned reaching = 0;  // the samples that reach the light
+    Vec3 visible[kPacketSize];
+    if (packets) {
+      const unsigned blocked = scene.occluded_packet(shadows, rays);
+      for (int j = 0; j < batch; ++j)
+        if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) reaching |= 1u << j;
+      if (!specular_only) reflectance_of(reaching);
+      add_lit(reflectance, rect->color, drawn.scale, reaching, light_sum);
+      continue;
+    }
+    for (int j = 0; j < batch; ++j) {
+      if (ray_of[j] < 0) continue;
+      visible[j] = shadow_transmittance(scene, shadows[ray_of[j]], reach);
+      if (max_component(visible[j]) > 0.0f) reaching |= 1u << j;
+    }
+    if (!specular_only) reflectance_of(reaching);
+    for (int j = 0; j < batch; ++j)
+      if (reaching >> j & 1u) light_sum += visible[j] * (rect->color * drawn.scale[j]) * reflectance[j];
+  }
+  return light_sum;
+}
+
 }  // namespace
 
 Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction) {
@@ -168,94 +267,7 @@ Vec3 direct_lighting(const EvaluatedSurface& s, uint64_t path, float weight, Tra
           light_sum += specular_only ? visible * ls.radiance * reflectance : lit(ls.direction, ls.radiance, visible);
       }
     } else {
-      // Whitted's rule for a rect light (core/lights/rect_light.h): each sample lights as a point
-      // light of its colour would, times the light's attenuation and its cosine towards the
-      // point. The samples are worked out a batch at a time in vector registers
-      // (core/lights/rect_light_batch.h), their numbers sixteen at a time (SampleStream::get2_batch). With
-      // opaque blockers only, enough shadow rays go in packets (Bvh::occluded_packet), each
-      // sample that reaches the light then adding its share in sample order: the same sum. (With
-      // glass, asking the packet first and walking the rays it finds crossing something for
-      // their transmittance gave panorama 0.90x but csg 1.18x, whose CSG spans were then found
-      // twice: measured, and left out.)
-      // One sample sits at the light's centre when the scene asks for one (a hard shadow, as
-      // before); one left by scaling is jittered over the light, so reflections keep soft shadows.
-      const bool centred = samples == 1 && ctx.settings.shadow_samples == 1;
-      const RectFrame frame = scene.rect_frame(l);  // the scene's, not per sample
-      const StratifiedGrid grid(count);
-      // Which leaves of the BVH the samples' shadow rays can meet, asked once for all of them: on
-      // a floor away from everything, none (the same answers). Asked only where the rays are
-      // walked one by one for their transmittance (a scene with glass): the query costs about
-      // what the packets' walk of a point's 16 rays saved, soft_shadows.json 1.13x (measured in
-      // docs/benchmark.md, "Round two, a ninth session").
-      // Not asked at a point without kd, which traces few rays, if any (below).
-      BvhLeafSet among;
-      const BvhLeafSet* reach = nullptr;
-      if (!scene.all_opaque && count >= kMinShadowVolume && s.diffuse != Vec3(0.0f)) {
-        if (!rays_from) rays_from.emplace(s);
-        if (rays_from->leaves_towards(*rect, scene.bvh, among)) reach = &among;
-      }
-      const bool packets = scene.all_opaque && count >= kMinShadowPacket;
-      // The numbers of samples [base - k, base - k + kMaxSobolPairs), k = base % kMaxSobolPairs.
-      static_assert(kMaxSobolPairs % kPacketSize == 0);
-      float jx[kMaxSobolPairs] = {}, jy[kMaxSobolPairs] = {};         // all read, eight at a time
-      const float sample_share = weight / static_cast<float>(count);  // one sample's part, for faint()
-      for (int base = 0; base < count; base += kPacketSize) {
-        const int batch = std::min(kPacketSize, count - base);
-        float u[2][kPacketSize] = {};
-        if (count == 1 && centred) {
-          u[0][0] = u[1][0] = 0.5f;
-        } else {
-          const int k = base % kMaxSobolPairs;
-          if (k == 0)
-            ctx.samples.get2_batch(SamplePurpose::kLight, path, light_dimension(l, static_cast<uint32_t>(base)),
-                                   std::min(kMaxSobolPairs, count - base), jx, jy);
-          stratified_points_batch(grid, base, jx + k, jy + k, u);
-        }
-        RectLightBatch drawn;
-        rect_light_batch(*rect, frame, s.position, u, drawn);
-        // lit(...)'s Phong factor, for the samples that reach the light (a shadowed one's powers
-        // are not worked out).
-        PhongBatch reflectance;
-        const auto reflectance_of = [&](unsigned lanes) {
-          phong_batch(s.diffuse, s.specular, s.shininess, s.n, s.wo, drawn.dx, drawn.dy, drawn.dz, lanes, reflectance);
-        };
-        // Without kd, every sample's factor first, as for a point light above: a faint one gets no ray.
-        const bool specular_only = s.diffuse == Vec3(0.0f);
-        if (specular_only) reflectance_of((1u << batch) - 1u);
-        // ShadowRays::make's tests for all the batch's samples at once.
-        const SampleSides sides = sample_sides(drawn, rect->color, s.n, s.ng, s.shadow_lift != Vec3(0.0f));
-        Ray shadows[kPacketSize];
-        int ray_of[kPacketSize];  // which shadow ray a sample has; -1: none
-        int rays = 0;
-        for (int j = 0; j < batch; ++j) {
-          ray_of[j] = -1;
-          if (!(sides.light >> j & 1u) ||
-              (specular_only && faint(reflectance[j], rect->color * drawn.scale[j], sample_share)))
-            continue;
-          if (!rays_from) rays_from.emplace(s);
-          rays_from->ray(drawn.direction(j), drawn.distance[j], sides.behind >> j & 1u, shadows[rays]);
-          ray_of[j] = rays++;
-        }
-        ctx.counters[RayKind::kShadow] += static_cast<uint64_t>(rays);
-        unsigned reaching = 0;  // the samples that reach the light
-        Vec3 visible[kPacketSize];
-        if (packets) {
-          const unsigned blocked = scene.occluded_packet(shadows, rays);
-          for (int j = 0; j < batch; ++j)
-            if (ray_of[j] >= 0 && !(blocked >> ray_of[j] & 1u)) reaching |= 1u << j;
-          if (!specular_only) reflectance_of(reaching);
-          add_lit(reflectance, rect->color, drawn.scale, reaching, light_sum);
-          continue;
-        }
-        for (int j = 0; j < batch; ++j) {
-          if (ray_of[j] < 0) continue;
-          visible[j] = shadow_transmittance(scene, shadows[ray_of[j]], reach);
-          if (max_component(visible[j]) > 0.0f) reaching |= 1u << j;
-        }
-        if (!specular_only) reflectance_of(reaching);
-        for (int j = 0; j < batch; ++j)
-          if (reaching >> j & 1u) light_sum += visible[j] * (rect->color * drawn.scale[j]) * reflectance[j];
-      }
+      light_sum = rect_light_sum(s, l, rect, samples, count, weight, path, rays_from, ctx);
     }
     sum += count == 1 ? light_sum : light_sum / static_cast<float>(count);  // x / 1 is x: not divided
   }
