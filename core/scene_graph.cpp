@@ -121,7 +121,10 @@ Scene SceneGraph::at(const Pose& pose, PrimitiveSet placed, const BvhBuildOption
   scene.bvh = Bvh(placed, options);
   scene.all_opaque = std::none_of(assets->materials.begin(), assets->materials.end(),
                                   [](const Material& m) { return m.transmissive(); });
-  for (const Material& m : assets->materials) scene.texcoords_read.push_back(m.reads_texcoords() ? 1 : 0);
+  for (const Material& m : assets->materials) {
+    scene.texcoords_read.push_back(m.reads_texcoords() ? 1 : 0);
+    scene.uniform_phong.push_back(m.uniform_phong() ? 1 : 0);
+  }
   for (const Light& l : scene.lights) {
     const RectLight* rect = std::get_if<RectLight>(&l);
     scene.rect_frames.push_back(RectFrame(rect ? *rect : RectLight{}));

@@ -26,8 +26,12 @@ namespace rt {
   // One square root for the cone and the unit direction (glm::normalize's bits: d x (1 / |d|)).
   const float length = glm::length(ray.direction);
   cone_width = state.cone_width + state.cone_spread * hit.t * length;
-  EvaluatedSurface s = evaluate_surface_unit(scene.materials()[si.material], si, ray.direction * (1.0f / length),
-                                             scene.textures(), cone_width, ctx.settings.detail);
+  const Material& m = scene.materials()[si.material];
+  const Vec3 unit_direction = ray.direction * (1.0f / length);
+  EvaluatedSurface s =
+      scene.is_uniform_phong(si.material)
+          ? uniform_phong_surface(m, si, unit_direction)
+          : evaluate_surface_unit(m, si, unit_direction, scene.textures(), cone_width, ctx.settings.detail);
   s.prim = hit.prim;
   if (ctx.aovs) [[unlikely]]
     record_first_hit(ctx, s.diffuse, s.n, hit.t * length, s.emission);

@@ -1,10 +1,12 @@
-// The shading record of a hit: a uniform Phong material's, made inline (evaluate_surface_unit), is
-// field for field the one the full evaluation makes (evaluate_mapped_surface), and which materials
+// The shading record of a hit: a uniform Phong material's, made inline (uniform_phong_surface), is
+// field for field the one the full evaluation makes (evaluate_surface_unit), and which materials
 // count as uniform.
 #include <catch2/catch.hpp>
 
 #include "core/shapes/analytic_shape.h"
 #include "materials/evaluated_surface.h"
+#include "tests/support/loading.h"
+#include "tests/support/test_paths.h"
 
 using namespace rt;
 
@@ -84,8 +86,8 @@ TEST_CASE("evaluate_surface: a uniform Phong material's inline record is the ful
       SurfaceInteraction si = sphere_hit(inside);
       si.color = Vec4(0.5f, 0.25f, 1.0f, 1.0f);  // a mesh's COLOR_0 tints kd
       const Vec3 d = glm::normalize(Vec3(0.1f, -0.2f, -1.0f));
-      const EvaluatedSurface fast = evaluate_surface_unit(m, si, d, textures, 0.01f);
-      check_same(fast, evaluate_mapped_surface(m, si, d, textures, 0.01f, {}));
+      const EvaluatedSurface fast = uniform_phong_surface(m, si, d);
+      check_same(fast, evaluate_surface_unit(m, si, d, textures, 0.01f));
       // Sanity on real numbers: the side the ray sees, kd less what passes through.
       CHECK(fast.n == (inside ? -si.shading_normal : si.shading_normal));
       CHECK(fast.diffuse == m.kd * Vec3(0.5f, 0.25f, 1.0f) * (Vec3(1.0f) - m.transmission));
@@ -120,4 +122,20 @@ TEST_CASE("evaluate_surface: what makes a material not uniform", "[materials][ev
   Material unlit;
   unlit.unlit = true;
   CHECK_FALSE(unlit.uniform_phong());
+}
+
+TEST_CASE("evaluate_surface: the scene marks its uniform Phong materials", "[materials][evaluate]") {
+  // textures.json: every material has a texture; refraction.json: glass and plain colours only.
+  for (const auto& [file, uniform] : {std::pair{"scenes/textures.json", false}, {"scenes/refraction.json", true}}) {
+    const LoadedScene s = rt::test::load_scene_file(rt::test::source_path(file));
+    const std::vector<Material>& materials = s.scene.materials();
+    REQUIRE(materials.size() >= 8);
+    for (uint32_t i = 0; i < materials.size(); ++i) {
+      CHECK(materials[i].uniform_phong() == uniform);
+      CHECK(s.scene.is_uniform_phong(i) == uniform);
+    }
+    CHECK_FALSE(s.scene.is_uniform_phong(static_cast<uint32_t>(materials.size())));
+  }
+  // A scene built by hand, without the table, takes the general evaluation for every material.
+  CHECK_FALSE(Scene{}.is_uniform_phong(0));
 }
