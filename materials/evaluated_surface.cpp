@@ -62,9 +62,9 @@ Vec3 emitted_radiance(const Material& m, const SurfaceInteraction& si, Vec3 ray_
   return e;
 }
 
-EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
-                                       const std::vector<Texture>& textures, float cone_width,
-                                       SurfaceDetailSwitches detail) {
+EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                         const std::vector<Texture>& textures, float cone_width,
+                                         SurfaceDetailSwitches detail) {
   // Worked out in locals and written once, at the end (evaluated_surface): a surface made first
   // and filled in was zeroed whole before the calls below, which kept the compiler from seeing
   // that the stores after them make the zeros dead.

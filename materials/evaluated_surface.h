@@ -100,17 +100,16 @@ struct MaterialTerms {
                           .prim = kNoPrimitive};
 }
 
-// `unit_direction` is the direction of the ray that hit, of length 1 (glm::normalize's bits); `cone_width` the
-// world-space width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks the mip
-// level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
-EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
-                                       const std::vector<Texture>& textures, float cone_width = 0.0f,
-                                       SurfaceDetailSwitches detail = {});
+// evaluate_surface_unit for any material: textures, bump and normal maps, glTF's model, unlit.
+EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                         const std::vector<Texture>& textures, float cone_width,
+                                         SurfaceDetailSwitches detail);
 
 // evaluate_surface_unit's record for a material whose uniform_phong() holds, made inline: its terms
-// are the material's own numbers (the same floats). The Whitted integrator's common case: a call
-// less a hit, and no texture, map or glTF test (refraction.json 4.5% fewer instructions, 0.95x the
-// time; Scene::uniform_phong says which materials).
+// are the material's own numbers, evaluate_mapped_surface's floats. The common case: a call less
+// a hit, and no texture, map or glTF test (refraction.json 4.5% fewer instructions, 0.95x the
+// time; the path-traced Cornell box 3.2% fewer). The Whitted integrator asks the scene which
+// materials are uniform (Scene::is_uniform_phong), a byte, not eight of the material's fields.
 inline EvaluatedSurface uniform_phong_surface(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction) {
   // Shade the side the ray sees: both sides of an opaque surface are lit like its front.
   const float side = si.front_face ? 1.0f : -1.0f;
@@ -131,6 +130,16 @@ inline EvaluatedSurface uniform_phong_surface(const Material& m, const SurfaceIn
                                          .metallic = 0.0f,
                                          .roughness = 1.0f,
                                          .layers = {}});
+}
+
+// `unit_direction` is the direction of the ray that hit, of length 1 (glm::normalize's bits); `cone_width` the
+// world-space width of its ray cone at the hit (one pixel's footprint; 0 = the finest mip level), which picks the mip
+// level of trilinear textures; `detail` can switch textures or bumps off. Never allocates.
+inline EvaluatedSurface evaluate_surface_unit(const Material& m, const SurfaceInteraction& si, Vec3 unit_direction,
+                                              const std::vector<Texture>& textures, float cone_width = 0.0f,
+                                              SurfaceDetailSwitches detail = {}) {
+  return m.uniform_phong() ? uniform_phong_surface(m, si, unit_direction)
+                           : evaluate_mapped_surface(m, si, unit_direction, textures, cone_width, detail);
 }
 
 // The same for a ray of any length. (evaluate_surface_unit is for a caller that has the length

@@ -31,7 +31,7 @@ namespace rt {
   EvaluatedSurface s =
       scene.is_uniform_phong(si.material)
           ? uniform_phong_surface(m, si, unit_direction)
-          : evaluate_surface_unit(m, si, unit_direction, scene.textures(), cone_width, ctx.settings.detail);
+          : evaluate_mapped_surface(m, si, unit_direction, scene.textures(), cone_width, ctx.settings.detail);
   s.prim = hit.prim;
   if (ctx.aovs) [[unlikely]]
     record_first_hit(ctx, s.diffuse, s.n, hit.t * length, s.emission);

@@ -1,5 +1,5 @@
 // The shading record of a hit: a uniform Phong material's, made inline (uniform_phong_surface), is
-// field for field the one the full evaluation makes (evaluate_surface_unit), and which materials
+// field for field the one the full evaluation makes (evaluate_mapped_surface), and which materials
 // count as uniform.
 #include <catch2/catch.hpp>
 
@@ -87,7 +87,8 @@ TEST_CASE("evaluate_surface: a uniform Phong material's inline record is the ful
       si.color = Vec4(0.5f, 0.25f, 1.0f, 1.0f);  // a mesh's COLOR_0 tints kd
       const Vec3 d = glm::normalize(Vec3(0.1f, -0.2f, -1.0f));
       const EvaluatedSurface fast = uniform_phong_surface(m, si, d);
-      check_same(fast, evaluate_surface_unit(m, si, d, textures, 0.01f));
+      check_same(fast, evaluate_mapped_surface(m, si, d, textures, 0.01f, {}));
+      check_same(fast, evaluate_surface_unit(m, si, d, textures, 0.01f));  // which takes it for these
       // Sanity on real numbers: the side the ray sees, kd less what passes through.
       CHECK(fast.n == (inside ? -si.shading_normal : si.shading_normal));
       CHECK(fast.diffuse == m.kd * Vec3(0.5f, 0.25f, 1.0f) * (Vec3(1.0f) - m.transmission));
