@@ -70,8 +70,8 @@ struct MaterialTerms {
 // The record of a hit: its geometry, `terms` and the material's own numbers. The one place an
 // EvaluatedSurface is written whole, every field named: a record made and then filled in was
 // zeroed first (288 bytes; refraction.json 0.989x the time without).
-[[gnu::always_inline]] inline EvaluatedSurface evaluated_surface(const Material& m, const SurfaceInteraction& si,
-                                                                 Vec3 wo, float side, const MaterialTerms& terms) {
+inline EvaluatedSurface evaluated_surface(const Material& m, const SurfaceInteraction& si, Vec3 wo, float side,
+                                          const MaterialTerms& terms) {
   return EvaluatedSurface{.position = si.position,
                           .position_error = si.position_error,
                           .shadow_lift = si.shadow_lift,
