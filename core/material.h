@@ -89,7 +89,7 @@ struct Material {
   }
   bool absorbing() const { return max_component(absorption) > 0.0f; }
   // A Phong material the same all over: no texture or map that varies it, not glTF's model, lit.
-  // Its shading terms are its own numbers (evaluate_surface_unit's inline case).
+  // Its shading terms are its own numbers (uniform_phong_surface, materials/evaluated_surface.h).
   bool uniform_phong() const {
     return !pbr.enabled && !unlit && !texture.present() && !specular_texture.present() &&
            !transmission_texture.present() && !emission_texture.present() && !bump.height.present() &&
