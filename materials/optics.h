@@ -18,7 +18,10 @@ inline bool refract(Vec3 d, Vec3 n, float eta, Vec3& t) {
   const float sin2_t = eta * eta * std::max(0.0f, 1.0f - cos_i * cos_i);
   if (sin2_t > 1.0f) return false;
   const float cos_t = std::sqrt(1.0f - sin2_t);
-  t = glm::normalize(eta * d + (eta * cos_i - cos_t) * n);
+  // Of unit length already, for unit d and n (|t|^2 = eta^2 sin^2_i + cos^2_t = 1): normalised
+  // again, a square root and a division sat on the path from one hit to the next
+  // (refraction.json 0.97x the time without them).
+  t = eta * d + (eta * cos_i - cos_t) * n;
   return true;
 }
 
