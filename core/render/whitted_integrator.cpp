@@ -23,11 +23,12 @@ namespace rt {
                                                                              float& cone_width) const {
   const Scene& scene = ctx.scene;
   const SurfaceInteraction si = scene.surface(ray, hit);
-  // One square root for the cone and the unit direction (glm::normalize's bits: d x (1 / |d|)).
-  const float length = glm::length(ray.direction);
+  // One square root for the cone and the unit direction (glm::normalize's bits: d x (1 / |d|)),
+  // none for a ray made unit.
+  const float length = state.unit_direction ? 1.0f : glm::length(ray.direction);
   cone_width = state.cone_width + state.cone_spread * hit.t * length;
   const Material& m = scene.materials()[si.material];
-  const Vec3 unit_direction = ray.direction * (1.0f / length);
+  const Vec3 unit_direction = state.unit_direction ? ray.direction : ray.direction * (1.0f / length);
   EvaluatedSurface s =
       scene.is_uniform_phong(si.material)
           ? uniform_phong_surface(m, si, unit_direction)
@@ -170,6 +171,7 @@ Vec3 WhittedIntegrator::secondary(const EvaluatedSurface& s, const PathState& st
   Vec3 sum(0.0f);
   PathState next = state;
   ++next.depth;
+  next.unit_direction = true;
   next.cone_width = cone_width;
   if (max_component(state.weight * reflect_weight) >= kMinWeight) {
     next.weight = state.weight * reflect_weight;

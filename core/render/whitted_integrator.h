@@ -25,6 +25,10 @@ class WhittedIntegrator final : public Integrator {
     Vec3 weight{1.0f};   // this ray's weight in the pixel: branches below kMinWeight are not traced
     MediumStack media;   // what the ray travels through
     bool split = false;  // a glossy reflection above already split the path into glossy_samples rays
+    // The ray's direction is of unit length, as secondary() and spread() make every ray below a
+    // hit (reflect, refract, glossy_direction): its length is then 1, not worked out (a square
+    // root and a division between one hit and the next). A camera's rays need not be.
+    bool unit_direction = false;
     float share = 1.0f;  // 1 / the rays a glossy split above made: with weight, the hit's part of the pixel
     uint64_t path = 0;   // where in the ray tree: keys its random numbers (core/sampling.h)
     // The ray cone (Akenine-Moller et al. 2019): width at the ray's origin and spread angle. A
