@@ -59,7 +59,7 @@ tsan() {
   echo "== ThreadSanitizer: rendering, BVH build and threads (build-tsan/)" >&2
   "$root/tools/build.sh" --dir build-tsan "${sanitizer_build[@]}" -DRTCLI_SANITIZE=thread
   ctest --test-dir "$root/build-tsan" --output-on-failure --parallel "$jobs" \
-    --tests-regex "render|determinism|BVH|thread|Ctrl-C|bench|glTF materials|glTF samples"
+    --tests-regex "render|determinism|BVH|thread|Ctrl-C|bench|glTF materials|glTF samples|test binaries"
 }
 
 case "$mode" in
