@@ -76,6 +76,37 @@ TEST_CASE("sphere under non-uniform scale: world normal is the inverse transpose
   CHECK(si.front_face);
 }
 
+TEST_CASE("sphere: the world normal, made from the point as the ray found it, is the exact normal's direction",
+          "[shapes][sphere][transform]") {
+  // shape_surface takes the object normal's direction from the hit point before it is put back
+  // on the sphere (the same direction) and normalises it once, in world space: within a few
+  // float roundings of the exact normal along the point's direction, worked out here in double.
+  AnalyticShape s;
+  s.kind = ShapeKind::kSphere;
+  s.transform = *make_transform(compose_trs({3.0f, -2.0f, 1.0f}, {30.0f, -45.0f, 20.0f}, {2.0f, 0.75f, 1.25f}));
+  Rng rng(7);
+  const auto next = [&] { return 2.0f * rng.next_float() - 1.0f; };
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float reach = i % 2 == 0 ? 3.0f : 300.0f;
+    const Vec3 origin = s.transform.point_to_world(Vec3(next(), next(), next()) * reach);
+    const Vec3 target = s.transform.point_to_world(Vec3(next(), next(), next()) * 0.9f);
+    Ray r = make_ray(origin, target - origin);
+    Hit h;
+    if (!intersect_shape(s, r, h)) continue;
+    ++hits;
+    const SurfaceInteraction si = shape_surface(s, r, h, i % 3 == 0);
+    const glm::dvec3 found(to_object_ray(s, r).at(h.t));  // as shape_surface finds it
+    const glm::dvec3 exact = glm::normalize(glm::dmat3(s.transform.normal_to_world) * glm::normalize(found));
+    CHECK(glm::length(glm::dvec3(si.geometric_normal) - exact) < 5e-7);
+    // And the point put back on the surface lies along the same direction.
+    const glm::dvec3 back(s.transform.point_to_object(si.position));
+    CHECK(glm::length(glm::normalize(back) - glm::normalize(found)) < 2e-6);
+    CHECK(std::abs(glm::length(glm::dvec3(si.geometric_normal)) - 1.0) < 3e-7);
+  }
+  CHECK(hits > 10000);
+}
+
 TEST_CASE("sphere: both crossings from one quadratic are the two intersect_sphere calls, to the bit",
           "[shapes][sphere][csg]") {
   // Lines through, grazing, missing and starting inside, from near and far, as CSG asks them

@@ -1,5 +1,6 @@
 // The optics of secondary rays with real numbers: reflect, refract (Snell), Schlick's Fresnel
 // term, total internal reflection, and the proposal's glossy sampling square.
+#include <array>
 #include <cmath>
 
 #include <catch2/catch.hpp>
@@ -40,6 +41,35 @@ TEST_CASE("refract: Snell's law into and out of glass", "[optics]") {
   // Equal indices: straight on.
   REQUIRE(refract(d, n, 1.0f, t));
   check_vec(t, d, 1e-6);
+}
+
+TEST_CASE("refract: unit without normalising, by Snell's law, at any angle and index", "[optics]") {
+  // refract() leaves its vector as Snell's formula makes it: |t|^2 = eta^2 sin^2_i + cos^2_t = 1
+  // for unit d and n. The Whitted integrator takes every ray below a hit to be unit (its length 1).
+  Rng rng(2026);
+  const auto unit = [&] {
+    return glm::normalize(
+        Vec3(2.0f * rng.next_float() - 1.0f, 2.0f * rng.next_float() - 1.0f, 2.0f * rng.next_float() - 1.0f));
+  };
+  int refracted = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float eta = std::array{1.0f / 1.5f, 1.5f, 1.0f / 2.4f, 2.4f, 1.0f / 1.33f, 1.33f}[i % 6];
+    const Vec3 n = unit();
+    Vec3 d = unit();
+    if (glm::dot(d, n) > 0.0f) d = -d;  // arriving on n's side
+    Vec3 t;
+    if (!refract(d, n, eta, t)) continue;
+    ++refracted;
+    const glm::dvec3 td(t);
+    // Within 16 units in the last place of 1: eta x d rounds at up to 2.4 (1.0e-6 seen).
+    CHECK(std::abs(glm::length(td) - 1.0) < 2e-6);
+    // Snell: sin_t = eta sin_i, and t stays in the plane of d and n, on the far side.
+    CHECK(glm::length(glm::cross(td, glm::dvec3(n))) ==
+          Approx(eta * glm::length(glm::cross(glm::dvec3(d), glm::dvec3(n)))).margin(2e-6));
+    CHECK(std::abs(glm::dot(td, glm::cross(glm::dvec3(d), glm::dvec3(n)))) < 2e-6);
+    CHECK(glm::dot(t, n) < 0.0f);
+  }
+  CHECK(refracted > 10000);  // the rest reflect totally (eta > 1)
 }
 
 TEST_CASE("total internal reflection exactly beyond the critical angle asin(1/n)", "[optics]") {
