@@ -37,7 +37,7 @@ export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 sanitizer_build=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
                  -DRTCLI_BUILD_TESTS=ON)
 
-# Under the sanitizers, every test but those that time whole programs for minutes and check
+# Under both sanitizers, every test but those that time whole programs for minutes and check
 # no code path of their own: the gallery's two (dozens of renders and headless Chromium), the
 # benchmark's (its loops are the kernels the BVH tests run), the Slurm farm's (158 s under
 # ASan, against 34 s in Release: path-traced tiles on a cluster of this machine; the merge,
@@ -46,19 +46,19 @@ sanitizer_build=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEB
 # tested under the sanitizers in tests/cli/test_cli_progress.cpp and test_gltf_world.cpp).
 # They are most of the sanitized suite's time, which CI's 15-minute aim cannot spare, and they
 # load both cores, so that time-bounded tests beside them fail; the Release suite runs them.
-asan_skip="^gallery: |^cli: bench runs on a small model|^farm: |^blender add-on: "
+sanitizer_skip="^gallery: |^cli: bench runs on a small model|^farm: |^blender add-on: "
 
 asan() {
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer suite (build-asan/)" >&2
   "$root/tools/build.sh" --dir build-asan "${sanitizer_build[@]}" \
     -DRTCLI_SANITIZE="address,undefined,float-cast-overflow"
-  ctest --test-dir "$root/build-asan" --output-on-failure --parallel "$jobs" --exclude-regex "$asan_skip"
+  ctest --test-dir "$root/build-asan" --output-on-failure --parallel "$jobs" --exclude-regex "$sanitizer_skip"
 }
 
 tsan() {
   echo "== ThreadSanitizer: rendering, BVH build and threads (build-tsan/)" >&2
   "$root/tools/build.sh" --dir build-tsan "${sanitizer_build[@]}" -DRTCLI_SANITIZE=thread
-  ctest --test-dir "$root/build-tsan" --output-on-failure --parallel "$jobs" \
+  ctest --test-dir "$root/build-tsan" --output-on-failure --parallel "$jobs" --exclude-regex "$sanitizer_skip" \
     --tests-regex "render|determinism|BVH|thread|Ctrl-C|bench|glTF materials|glTF samples|test binaries"
 }
 
