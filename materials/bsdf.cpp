@@ -30,7 +30,8 @@ Vec3 mirror_local(Vec3 wo) { return Vec3(-wo.x, -wo.y, wo.z); }
 
 // The frame of the lobes: about the shading normal, its x axis along an anisotropic lobe's direction.
 ShadingFrame lobe_frame(const EvaluatedSurface& s) {
-  return s.pbr && s.layers.anisotropy > 0.0f ? ShadingFrame(s.n, s.layers.anisotropy_direction) : ShadingFrame(s.n);
+  return s.pbr && s.pbr->layers.anisotropy > 0.0f ? ShadingFrame(s.n, s.pbr->layers.anisotropy_direction)
+                                                  : ShadingFrame(s.n);
 }
 
 }  // namespace

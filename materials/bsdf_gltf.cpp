@@ -16,15 +16,16 @@ float coat_fresnel(float cos_theta) { return dielectric_schlick(cos_theta); }  /
 
 void Bsdf::init_gltf(const EvaluatedSurface& s, float cos_o, float* weight) {
   pbr_ = true;
-  const EvaluatedLayers& l = s.layers;
+  const PbrSurfaceTerms& p = *s.pbr;
+  const EvaluatedLayers& l = p.layers;
   // s.transmission is already tinted by the base colour and none through metal; the opaque
   // layer keeps what the dielectric does not take.
   layer_ = 1.0f - std::clamp(s.transmission_factor, 0.0f, 1.0f);
-  base_color_ = s.base_color;
-  metallic_ = s.metallic;
-  base_diffuse_ = (1.0f - s.metallic) * layer_ * s.base_color;
-  f0_ = glm::mix(Vec3(0.04f), s.base_color, s.metallic);
-  const float alpha = s.roughness * s.roughness;
+  base_color_ = p.base_color;
+  metallic_ = p.metallic;
+  base_diffuse_ = (1.0f - p.metallic) * layer_ * p.base_color;
+  f0_ = glm::mix(Vec3(0.04f), p.base_color, p.metallic);
+  const float alpha = p.roughness * p.roughness;
   // KHR_materials_anisotropy: rougher along the direction (the frame's x), alpha across it.
   const float along = alpha + (1.0f - alpha) * l.anisotropy * l.anisotropy;
   ggx_ = Ggx(l.anisotropy > 0.0f ? along : alpha, alpha);

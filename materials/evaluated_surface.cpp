@@ -133,11 +133,12 @@ EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInterac
                                          .transmission_factor = transmission_factor,
                                          .refraction_glossy = refraction_glossy,
                                          .emission = emission,
-                                         .pbr = m.pbr.enabled && !m.unlit,
-                                         .base_color = m.pbr.enabled ? kd : Vec3(0.0f),
-                                         .metallic = metallic,
-                                         .roughness = roughness,
-                                         .layers = layers});
+                                         .pbr = m.pbr.enabled && !m.unlit
+                                                    ? std::optional(PbrSurfaceTerms{.base_color = kd,
+                                                                                    .metallic = metallic,
+                                                                                    .roughness = roughness,
+                                                                                    .layers = layers})
+                                                    : std::nullopt});
 }
 
 }  // namespace rt

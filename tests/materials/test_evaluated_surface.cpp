@@ -49,17 +49,20 @@ void check_same(const EvaluatedSurface& a, const EvaluatedSurface& b) {
   CHECK(a.absorption == b.absorption);
   CHECK(a.glossy == b.glossy);
   CHECK(a.emission == b.emission);
-  CHECK(a.pbr == b.pbr);
-  CHECK(a.base_color == b.base_color);
-  CHECK(a.metallic == b.metallic);
-  CHECK(a.roughness == b.roughness);
-  CHECK(a.layers.dielectric_f0 == b.layers.dielectric_f0);
-  CHECK(a.layers.dielectric_f90 == b.layers.dielectric_f90);
-  CHECK(a.layers.clearcoat == b.layers.clearcoat);
-  CHECK(a.layers.clearcoat_n == b.layers.clearcoat_n);
-  CHECK(a.layers.sheen_color == b.layers.sheen_color);
-  CHECK(a.layers.anisotropy_direction == b.layers.anisotropy_direction);
-  CHECK(a.layers.iridescence_thickness == b.layers.iridescence_thickness);
+  REQUIRE(a.pbr.has_value() == b.pbr.has_value());
+  if (a.pbr) {
+    CHECK(a.pbr->base_color == b.pbr->base_color);
+    CHECK(a.pbr->metallic == b.pbr->metallic);
+    CHECK(a.pbr->roughness == b.pbr->roughness);
+    const EvaluatedLayers &la = a.pbr->layers, &lb = b.pbr->layers;
+    CHECK(la.dielectric_f0 == lb.dielectric_f0);
+    CHECK(la.dielectric_f90 == lb.dielectric_f90);
+    CHECK(la.clearcoat == lb.clearcoat);
+    CHECK(la.clearcoat_n == lb.clearcoat_n);
+    CHECK(la.sheen_color == lb.sheen_color);
+    CHECK(la.anisotropy_direction == lb.anisotropy_direction);
+    CHECK(la.iridescence_thickness == lb.iridescence_thickness);
+  }
   CHECK(a.prim == b.prim);
 }
 

@@ -362,7 +362,8 @@ TEST_CASE("glTF materials: shadows through glass follow the textured metallic, a
   const LoadedScene loaded = quad_scene("glass-shadow.json", quad_file("glass-shadow.gltf", material));
   const Scene& scene = loaded.scene;
   const EvaluatedSurface s = quad_surface(scene, 0.25f, 0.5f);
-  CHECK(s.metallic == 0.0f);
+  REQUIRE(s.pbr);
+  CHECK(s.pbr->metallic == 0.0f);
   CHECK(s.transmission.y == Approx(0.5f));
   Ray shadow = down_z(0.25f, 0.5f);
   shadow.tmax = 5.5f;  // from z = 5 to -0.5: through the quad, short of the wall
