@@ -26,7 +26,9 @@ inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 inline float max_component(Vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
 // |v| per component. Not glm::abs: glm applies it through a function pointer, which makes the
 // compiler emit an out-of-line copy in whichever file uses it, the BVH kernels' included
-// (tests/tools/check_kernel_symbols.cmake).
+// (tests/tools/check_kernel_symbols.cmake); and its x >= 0 ? x : -x, which must keep the sign of
+// -0 and NaN, became a compare and a branch per component (three on a sphere's hit point, whose
+// signs no predictor knows), where std::fabs is one AND.
 inline Vec3 abs3(Vec3 v) { return Vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)); }
 inline float max_abs_component(Vec3 v) { return max_component(abs3(v)); }
 

@@ -82,7 +82,7 @@ SurfaceInteraction mesh_surface(const TriangleMesh& mesh, uint32_t triangle, con
 
   // Then the rest out to the world.
   // pbrt-v4's bound for a point from barycentrics (section 6.8.5).
-  const Vec3 error = float_gamma(7) * (glm::abs(b0 * p0) + glm::abs(hit.b1 * p1) + glm::abs(hit.b2 * p2));
+  const Vec3 error = float_gamma(7) * (abs3(b0 * p0) + abs3(hit.b1 * p1) + abs3(hit.b2 * p2));
   si.position = placement.point_to_world(position, error, si.position_error);
   si.geometric_normal = placement.normal_to_world_unit(geometric);
   si.shading_normal = placement.normal_to_world_unit(shading);

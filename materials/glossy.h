@@ -14,7 +14,7 @@ namespace rt {
 // component of r smallest in magnitude, swap the other two and negate one; that is perpendicular
 // to r and never short, since the two kept components hold most of r's length.
 inline void hughes_moller_basis(Vec3 r, Vec3& u, Vec3& v) {
-  const Vec3 a = glm::abs(r);
+  const Vec3 a = abs3(r);
   if (a.x <= a.y && a.x <= a.z) u = Vec3(0.0f, -r.z, r.y);
   else if (a.y <= a.z) u = Vec3(-r.z, 0.0f, r.x);
   else u = Vec3(-r.y, r.x, 0.0f);

@@ -239,7 +239,7 @@ void CsgObject::leaf_spans(const CsgNode& leaf, const Ray& line, CsgSpanList& ou
 
 float CsgObject::rounding_bound(const Ray& ray) const {
   // |o| and |d| in the norms that bound the Euclidean from the safe side: |o|_2 <= |o|_1, |d|_2 >= |d|_inf.
-  const Vec3 o = glm::abs(ray.origin), d = glm::abs(ray.direction);
+  const Vec3 o = abs3(ray.origin), d = abs3(ray.direction);
   const float direction = std::max(d.x, std::max(d.y, d.z));
   const float bound =
       2.0f * float_gamma(3) * (rounding_linear_ * (o.x + o.y + o.z) + rounding_translation_) / direction;

@@ -216,7 +216,7 @@ Vec3 emitted_light(const EvaluatedSurface& s, uint64_t path, int count, const Sh
 Vec3 shadow_ray_origin(const EvaluatedSurface& s, Vec3 direction) {
   if (s.shadow_lift == Vec3(0.0f)) return offset_ray_origin(s.position, s.position_error, s.ng, direction);
   // The lifted point's bound: the sum's own rounding on top of the point's.
-  const Vec3 lifted_error = s.position_error + float_gamma(1) * glm::abs(s.position + s.shadow_lift);
+  const Vec3 lifted_error = s.position_error + float_gamma(1) * abs3(s.position + s.shadow_lift);
   return offset_ray_origin(s.position + s.shadow_lift, lifted_error, s.ng, direction);
 }
 

@@ -82,7 +82,7 @@ namespace {
     case ShapeKind::kSphere: {
       const float length = glm::length(p);
       if (length > 0.0f) p /= length;
-      return float_gamma(5) * glm::abs(p);
+      return float_gamma(5) * abs3(p);
     }
     case ShapeKind::kCube: return faces_at(static_cast<int>(part < 6 ? part / 2 : 0), part % 2 == 0 ? 1.0f : -1.0f);
     case ShapeKind::kPlane: return faces_at(1, 0.0f);
@@ -100,7 +100,7 @@ namespace {
       return float_gamma(6) * Vec3(std::fabs(p.x), std::fabs(p.y), kind == ShapeKind::kCone ? std::fabs(p.z) : 0.0f);
     }
   }
-  return float_gamma(7) * glm::abs(p);
+  return float_gamma(7) * abs3(p);
 }
 
 }  // namespace
