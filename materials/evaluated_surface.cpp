@@ -126,19 +126,18 @@ EvaluatedSurface evaluate_mapped_surface(const Material& m, const SurfaceInterac
     phong.kd = phong.ks = phong.reflectivity = transmission = Vec3(0.0f);
     transmission_factor = 0.0f;
   }
-  return evaluated_surface(m, si, wo, side,
-                           MaterialTerms{.n = n,
-                                         .phong = phong,
-                                         .transmission = transmission,
-                                         .transmission_factor = transmission_factor,
-                                         .refraction_glossy = refraction_glossy,
-                                         .emission = emission,
-                                         .pbr = m.pbr.enabled && !m.unlit
-                                                    ? std::optional(PbrSurfaceTerms{.base_color = kd,
-                                                                                    .metallic = metallic,
-                                                                                    .roughness = roughness,
-                                                                                    .layers = layers})
-                                                    : std::nullopt});
+  return evaluated_surface(
+      m, si, wo, side,
+      MaterialTerms{.n = n,
+                    .phong = phong,
+                    .transmission = transmission,
+                    .transmission_factor = transmission_factor,
+                    .refraction_glossy = refraction_glossy,
+                    .emission = emission,
+                    .pbr = m.pbr.enabled && !m.unlit
+                               ? std::optional(PbrSurfaceTerms{
+                                     .base_color = kd, .metallic = metallic, .roughness = roughness, .layers = layers})
+                               : std::nullopt});
 }
 
 }  // namespace rt
