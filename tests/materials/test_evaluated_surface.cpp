@@ -100,6 +100,33 @@ TEST_CASE("evaluate_surface: a uniform Phong material's inline record is the ful
   }
 }
 
+TEST_CASE("evaluate_surface: glTF's terms only on a glTF material's hit, an unlit one's neither",
+          "[materials][evaluate]") {
+  const std::vector<Texture> textures;
+  const SurfaceInteraction si = sphere_hit(false);
+  const Vec3 d = glm::normalize(Vec3(0.1f, -0.2f, -1.0f));
+  Material phong;
+  phong.kd = Vec3(0.6f, 0.5f, 0.1f);
+  CHECK_FALSE(evaluate_mapped_surface(phong, si, d, textures, 0.0f, {}).pbr);
+  CHECK_FALSE(uniform_phong_surface(phong, si, d).pbr);
+  Material gltf;
+  gltf.pbr.enabled = true;
+  gltf.kd = Vec3(0.8f, 0.4f, 0.2f);  // the base colour
+  gltf.pbr.metallic = 1.5f;          // clamped to 1
+  gltf.pbr.roughness = 0.25f;
+  const EvaluatedSurface s = evaluate_mapped_surface(gltf, si, d, textures, 0.0f, {});
+  REQUIRE(s.pbr);
+  CHECK(s.pbr->base_color == gltf.kd);
+  CHECK(s.pbr->metallic == 1.0f);
+  CHECK(s.pbr->roughness == 0.25f);
+  CHECK(s.pbr->layers.dielectric_f90 == 1.0f);  // no extension: the core model's Fresnel
+  Material unlit = gltf;
+  unlit.unlit = true;  // shown as its colour: no model to sample
+  const EvaluatedSurface shown = evaluate_mapped_surface(unlit, si, d, textures, 0.0f, {});
+  CHECK_FALSE(shown.pbr);
+  CHECK(shown.emission == gltf.kd);
+}
+
 TEST_CASE("evaluate_surface: what makes a material not uniform", "[materials][evaluate]") {
   CHECK(Material{}.uniform_phong());
   Material textured;
